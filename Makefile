@@ -1,0 +1,41 @@
+# edgeflag - one non-recursive Makefile; each folder adds its fragment (module.mk).
+# Objects go under $(BUILD).  Override on the command line: make CC=clang OPT=-O0 BUILD=build-clang
+CC       ?= cc
+OPT      ?= -O2
+BUILD    ?= build
+EXTRA_CFLAGS ?=
+EXTRA_LDFLAGS ?=
+PKG_CONFIG ?= pkg-config
+PREFIX   ?= /usr/local
+
+WARN     := -std=c11 -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wvla
+CPPFLAGS := -D_POSIX_C_SOURCE=200809L -Ifixed -Imodel
+CFLAGS_ALL = $(WARN) $(OPT) -g -fPIC -MMD -MP $(EXTRA_CFLAGS)
+LDFLAGS_ALL = $(EXTRA_LDFLAGS)
+
+EXPAT_CFLAGS := $(shell $(PKG_CONFIG) --cflags expat 2>/dev/null)
+EXPAT_LIBS   := $(shell $(PKG_CONFIG) --libs expat 2>/dev/null || echo -lexpat)
+PNG_CFLAGS   := $(shell $(PKG_CONFIG) --cflags libpng 2>/dev/null)
+PNG_LIBS     := $(shell $(PKG_CONFIG) --libs libpng 2>/dev/null || echo -lpng)
+CMOCKA_LIBS  := $(shell $(PKG_CONFIG) --libs cmocka 2>/dev/null || echo -lcmocka)
+
+.PHONY: all lib cli clean deps demo test check
+all: lib cli
+
+# Compile rule shared by every fragment.
+$(BUILD)/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(CFLAGS_ALL) $(EXPAT_CFLAGS) $(PNG_CFLAGS) -c $< -o $@
+
+include fixed/module.mk
+include model/module.mk
+include cli/module.mk
+include tests/module.mk
+
+deps:
+	@bash tools/install-deps.sh
+
+clean:
+	rm -rf build build-* out
+
+-include $(shell find $(BUILD) -name '*.d' 2>/dev/null)

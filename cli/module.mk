@@ -1,0 +1,7 @@
+CLI_SRC := $(wildcard cli/*.c)
+CLI_OBJ := $(CLI_SRC:%.c=$(BUILD)/%.o)
+EDGEFLAG := $(BUILD)/edgeflag
+
+cli: $(EDGEFLAG)
+$(EDGEFLAG): $(CLI_OBJ) $(LIB_A)
+	$(CC) $(LDFLAGS_ALL) -o $@ $(CLI_OBJ) $(LIB_A) $(PNG_LIBS) $(EXPAT_LIBS)

@@ -1,0 +1,33 @@
+/*
+ * fill_evenodd.c - the even-odd filler (docs/spec.md section 7.2).
+ *
+ * XOR-accumulates the flag cells left to right: the running value is the
+ * coverage mask, one bit per sample.  Mask tracking: a zero cell leaves the
+ * mask unchanged, so runs between non-zero cells become one span each (a
+ * solid span when the mask is full); every cell is cleared as it is read.
+ */
+#include "internal.h"
+
+void ef_fill_evenodd(ef_ctx *ctx, int32_t y, int32_t xmin, int32_t xmax, ef_span_fn span, void *user)
+{
+    uint32_t *cells = ctx->eo_cells;
+    const int32_t W = ctx->width;
+    uint32_t acc = 0;
+    int32_t start = xmin;
+    for (int32_t p = xmin; p <= xmax; p++) {
+        uint32_t v = cells[p];
+        if (v == 0)
+            continue;                      /* mask unchanged: the span goes on */
+        cells[p] = 0;                      /* clear-on-read */
+        if (acc && p > start)
+            span(user, y, start, (p < W ? p : W) - start, acc);
+        acc ^= v;
+        start = p;
+    }
+    /* After xmax the accumulator is zero for closed polygons (spec 7.2), so the
+     * last span ended at the last non-zero cell; report nothing more. */
+    if (acc && start < W) {
+        int32_t end = xmax + 1 < W ? xmax + 1 : W;
+        span(user, y, start, end - start, acc);
+    }
+}

@@ -1,0 +1,61 @@
+/*
+ * fill_nonzero.c - the non-zero winding filler (docs/spec.md section 7.2).
+ *
+ * Accumulates the packed 7-bit winding counters left to right, eight lanes to
+ * a 64-bit word, masking the pad bits after every add; a lane's pad bit after
+ * adding 0x7F is set exactly when the counter is non-zero, and those pad bits,
+ * gathered in sample order, are the coverage mask.  The heavy part runs only
+ * at non-zero cells (mask tracking); cells are cleared as they are read.
+ */
+#include "internal.h"
+
+/* Pad bits (bit 8L+7) of a word -> bits 0..7 in lane order: the multiply moves
+ * bit 8L to bit 56+L with no carries into the top byte (checked exhaustively
+ * in tests/unit/test_model.c). */
+static inline uint32_t gather_pads(uint64_t pads)
+{
+    return (uint32_t)(((pads >> 7) * UINT64_C(0x0102040810204080)) >> 56);
+}
+
+static inline uint32_t lanes_nonzero(uint64_t acc)
+{
+    return gather_pads(((acc & EF_LANES7) + EF_LANES7) & EF_PADS);
+}
+
+void ef_fill_nonzero(ef_ctx *ctx, int32_t y, int32_t xmin, int32_t xmax, ef_span_fn span, void *user)
+{
+    const int words = ctx->samples / 8;
+    const int32_t W = ctx->width;
+    uint64_t acc[4] = { 0, 0, 0, 0 };
+    uint32_t mask = 0;
+    uint64_t overflows = 0;
+    int32_t start = xmin;
+    for (int32_t p = xmin; p <= xmax; p++) {
+        uint64_t *cell = &ctx->nz_cells[(size_t)p * (size_t)words];
+        uint64_t any = 0;
+        for (int w = 0; w < words; w++)
+            any |= cell[w];
+        if (any == 0)
+            continue;
+        if (mask && p > start)
+            span(user, y, start, (p < W ? p : W) - start, mask);
+        mask = 0;
+        for (int w = 0; w < words; w++) {
+            uint64_t a = acc[w], b = cell[w];
+            uint64_t sum = (a + b) & EF_LANES7;
+            /* Signed 7-bit overflow per lane: operands agree in sign, result not. */
+            uint64_t ov = ~(a ^ b) & (a ^ sum) & EF_SIGN7;
+            if (ov)
+                overflows += ef_popcount32(gather_pads(ov << 1));  /* bit 8L+6 -> 8L+7 */
+            acc[w] = sum;
+            cell[w] = 0;
+            mask |= lanes_nonzero(sum) << (8 * w);
+        }
+        start = p;
+    }
+    ctx->diag.winding_overflows += overflows;
+    if (mask && start < W) {
+        int32_t end = xmax + 1 < W ? xmax + 1 : W;
+        span(user, y, start, end - start, mask);
+    }
+}

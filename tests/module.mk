@@ -1,0 +1,3 @@
+# placeholder: filled in as tests land
+test:
+	@echo "no tests yet"
