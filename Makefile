@@ -39,3 +39,14 @@ clean:
 	rm -rf build build-* out
 
 -include $(shell find $(BUILD) -name '*.d' 2>/dev/null)
+
+# The main job on the bundled default: the tiger at 640x480, 8/16/32 samples.
+DEMO_OUT ?= out/demo
+demo:
+	@bash tools/install-deps.sh
+	@$(MAKE) --no-print-directory -s all
+	@mkdir -p $(DEMO_OUT)
+	@for n in 8 16 32; do \
+	    $(EDGEFLAG) render tests/data/tiger.svg -o $(DEMO_OUT)/tiger_$$n.png --samples $$n --size 640x480 || exit 1; \
+	    echo "edgeflag demo: wrote $(DEMO_OUT)/tiger_$$n.png ($$n samples per pixel, 640x480)"; \
+	done

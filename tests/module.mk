@@ -1,3 +1,55 @@
-# placeholder: filled in as tests land
-test:
-	@echo "no tests yet"
+# Tests.  `make test` runs every stage through tests/run.sh, which prints a
+# final "N passed, M failed" line; the stages are also targets of their own.
+UNIT_SRC  := $(wildcard tests/unit/test_*.c)
+UNIT_BIN  := $(UNIT_SRC:tests/unit/%.c=$(BUILD)/tests/%)
+ORACLE_SRC := $(filter-out tests/oracle/oracle_selftest.c,$(wildcard tests/oracle/*.c))
+ORACLE_OBJ := $(ORACLE_SRC:%.c=$(BUILD)/%.o)
+ORACLE_CHECK := $(BUILD)/tests/oracle_check
+ORACLE_SELFTEST := $(BUILD)/tests/oracle_selftest
+TEST_LIBS = $(LIB_A) $(PNG_LIBS) $(EXPAT_LIBS) $(CMOCKA_LIBS)
+
+.PHONY: test test-build test-unit test-oracle test-mutants test-cli test-bitexact test-sanitize deps-test
+
+deps-test:
+	@bash tools/install-deps.sh test
+
+$(BUILD)/tests/test_%: tests/unit/test_%.c $(LIB_A)
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) -Itests $(CFLAGS_ALL) $< -o $@ $(LDFLAGS_ALL) $(TEST_LIBS) -lm
+
+$(ORACLE_SELFTEST): tests/oracle/oracle_selftest.c $(ORACLE_OBJ)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_ALL) -Itests/oracle $^ -o $@ $(LDFLAGS_ALL)
+
+$(ORACLE_CHECK): tests/oracle_check.c $(ORACLE_OBJ) $(LIB_A)
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) -Itests/oracle $(CFLAGS_ALL) $< $(ORACLE_OBJ) -o $@ $(LDFLAGS_ALL) $(TEST_LIBS)
+
+test-build: lib cli $(UNIT_BIN) $(ORACLE_CHECK) $(ORACLE_SELFTEST)
+
+test-unit: $(UNIT_BIN)
+	@set -e; for t in $(UNIT_BIN); do echo "== $$t"; EF_SHARED=$(EF_SHARED) $$t; done
+
+EF_SHARED ?= $(abspath ../shared)
+ORACLE_SCENES ?= 10000
+ORACLE_SEED ?= 20070101
+test-oracle: $(ORACLE_CHECK) $(ORACLE_SELFTEST)
+	$(ORACLE_SELFTEST)
+	$(ORACLE_CHECK) --shared $(EF_SHARED)/data/svg --random $(ORACLE_SCENES) --seed $(ORACLE_SEED)
+
+test-mutants:
+	@bash tests/mutants.sh
+
+test-cli: cli
+	@bash tests/cli/run.sh $(BUILD)
+
+test-bitexact:
+	@bash tests/bitexact.sh $(EF_SHARED)/data/svg
+
+test-sanitize:
+	@$(MAKE) --no-print-directory BUILD=build-san OPT=-O1 \
+	    EXTRA_CFLAGS="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
+	    EXTRA_LDFLAGS="-fsanitize=address,undefined" ORACLE_SCENES=2000 test-unit test-oracle test-cli
+
+test: deps-test
+	@bash tests/run.sh

@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Proves the oracle test can fail: builds the model with each injected bug
+# (plotter.c EF_MUTATION: 1 = one wrong n-rooks offset, 2 = off-by-one x
+# rounding) and demands that tests/oracle_check reports mismatches.
+set -u
+cd "$(dirname "$0")/.."
+shared=${EF_SHARED:-$(cd .. && pwd)/shared}
+pass=0 fail=0
+for m in 1 2; do
+    b=build-mutant$m
+    if ! make --no-print-directory -s BUILD=$b EXTRA_CFLAGS=-DEF_MUTATION=$m $b/tests/oracle_check >/dev/null 2>&1; then
+        echo "mutant $m: build failed"; fail=$((fail + 1)); continue
+    fi
+    out=$($b/tests/oracle_check --random 2000 --seed 7 --max-report 0 2>&1)
+    rc=$?
+    n=$(printf '%s\n' "$out" | grep -c '^MISMATCH')
+    if [ $rc -eq 1 ] && [ "$n" -gt 0 ]; then
+        echo "mutant $m: caught ($n mismatching cases of 2000 random scenes)"; pass=$((pass + 1))
+    else
+        echo "mutant $m: NOT caught (exit $rc)"; fail=$((fail + 1))
+    fi
+    out=$($b/tests/oracle_check --shared "$shared/data/svg" --max-report 0 2>&1 | grep -c '^MISMATCH')
+    if [ "$out" -gt 0 ]; then
+        echo "mutant $m: caught on the shared SVGs too ($out mismatching cases)"
+    else
+        echo "mutant $m: NOT caught on the shared SVGs"; fail=$((fail + 1))
+    fi
+done
+echo "mutant: $pass passed, $fail failed"
+[ $fail -eq 0 ]

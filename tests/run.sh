@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Runs every test stage of `make test`, each in its own log, and ends with the
+# line "N passed, M failed" (stages).  Exit status: 0 only if all passed.
+set -u
+cd "$(dirname "$0")/.."
+MAKE=${MAKE:-make}
+logs=build/test-logs
+mkdir -p "$logs"
+stages=(test-build test-unit test-oracle test-mutants test-cli test-bitexact test-sanitize)
+[ -n "${EF_TEST_STAGES:-}" ] && read -r -a stages <<<"$EF_TEST_STAGES"
+pass=0 fail=0
+for s in "${stages[@]}"; do
+    t0=$(date +%s)
+    if $MAKE --no-print-directory "$s" >"$logs/$s.log" 2>&1; then
+        pass=$((pass + 1)); verdict=PASS
+    else
+        fail=$((fail + 1)); verdict=FAIL
+    fi
+    printf '%-14s %s  (%ss, log %s)\n' "$s" "$verdict" "$(( $(date +%s) - t0 ))" "$logs/$s.log"
+    # Show what a reader needs: the stage's own summary lines, or the tail on failure.
+    if [ $verdict = FAIL ]; then
+        tail -n 40 "$logs/$s.log" | sed 's/^/    /'
+    else
+        grep -E '^(oracle|mutant|bitexact|cli|\[  PASSED  \]|[0-9]+ passed)' "$logs/$s.log" | sed 's/^/    /' | tail -n 12
+    fi
+done
+echo "stages: $pass passed, $fail failed"
+[ "$fail" -eq 0 ]
