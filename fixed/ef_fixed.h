@@ -59,7 +59,7 @@ typedef uint32_t ef_angle;
 
 static inline ef_q32 ef_q32_raw(int64_t v) { ef_q32 r = { v }; return r; }
 /* Exact: n * 2^32.  Range: |n| < 2^31 (caller's duty; debug-asserted in tests). */
-static inline ef_q32 ef_q32_from_int(int32_t n) { return ef_q32_raw((int64_t)((uint64_t)(int64_t)n << 32)); }
+static inline ef_q32 ef_q32_from_int(int32_t n) { return ef_q32_raw((int64_t)n * EF_Q32_ONE); }
 
 /* ---------------------------------------------------------------------------
  * Shifts as named operations
@@ -79,8 +79,17 @@ static inline int64_t ef_asr_i64(int64_t v, unsigned n)
 
 /* Shift left = v * 2^n computed modulo 2^64 (wraps; never UB).  The caller
  * guarantees |v| * 2^n < 2^63 where the exact value matters. */
-static inline int64_t ef_shl_i64(int64_t v, unsigned n) { return (int64_t)((uint64_t)v << n); }
-static inline int32_t ef_shl_i32(int32_t v, unsigned n) { return (int32_t)((uint32_t)v << n); }
+static inline int64_t ef_wrap_i64(uint64_t u)
+{
+    /* Modular unsigned -> signed without the implementation-defined cast. */
+    return u <= (uint64_t)INT64_MAX ? (int64_t)u : (int64_t)(u - (uint64_t)INT64_MAX - 1u) + INT64_MIN;
+}
+static inline int64_t ef_shl_i64(int64_t v, unsigned n) { return ef_wrap_i64((uint64_t)v << n); }
+static inline int32_t ef_shl_i32(int32_t v, unsigned n)
+{
+    uint32_t u = (uint32_t)v << n;
+    return u <= (uint32_t)INT32_MAX ? (int32_t)u : (int32_t)(u - (uint32_t)INT32_MAX - 1u) + INT32_MIN;
+}
 
 /* Round-to-nearest shift right: floor(v / 2^n + 1/2), i.e. ties toward +inf.
  * 1 <= n <= 62; exact for every int64 v (the bias is added in 128 bits worth of
@@ -114,7 +123,7 @@ static inline void ef_divmod_floor_i64(int64_t a, int64_t d, int64_t *q, int64_t
     *q = qq;
     *r = rr;
 }
-/* ceil(a / d). */
+/* ceil(a / d).  a != INT64_MIN. */
 static inline int64_t ef_ceildiv_i64(int64_t a, int64_t d) { return -ef_floordiv_i64(-a, d); }
 
 /* Round to nearest, ties away from zero: sign(a) * floor(|a| / d + 1/2).
@@ -166,11 +175,11 @@ bool ef_muldiv_i64(int64_t a, int64_t b, int64_t c, int64_t *out);
 
 /* floor(sqrt(v)) for every uint64_t v. */
 uint32_t ef_isqrt_u64(uint64_t v);
-/* Q32 square root: round_nearest(sqrt(a) * 2^16 ... ) = sqrt of the value a/2^32,
- * result in Q32, truncated (floor) to the 2^-32 grid.  a >= 0. */
+/* Q32 square root: floor(sqrt(a / 2^32) * 2^32), i.e. the exact root truncated
+ * to the 2^-32 grid.  a >= 0 (a negative argument gives 0). */
 ef_q32 ef_q32_sqrt(ef_q32 a);
-/* sin and cos of a binary angle in Q1.30, |error| <= 4 * 2^-30 (CORDIC with a
- * fixed, documented iteration count: docs/spec.md section 2.4). */
+/* sin and cos of a binary angle in Q1.30, |error| < 1 * 2^-30 (CORDIC with a
+ * fixed, documented iteration count: docs/fixed.md section 4). */
 void ef_sincos(ef_angle a, int32_t *sin_q30, int32_t *cos_q30);
 /* atan2(y, x) as a binary angle in [0, 2^32); atan2(0, 0) = 0.  Same CORDIC. */
 ef_angle ef_atan2(int64_t y, int64_t x);
