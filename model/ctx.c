@@ -44,7 +44,8 @@ ef_status ef_ctx_create(ef_ctx **out, int32_t width, int32_t height, int samples
     ctx->slot = malloc((size_t)height * sizeof *ctx->slot);
     ctx->eo_cells = calloc(cells, sizeof *ctx->eo_cells);
     ctx->nz_cells = calloc(cells * (size_t)(samples / 8), sizeof *ctx->nz_cells);
-    if (!ctx->slot || !ctx->eo_cells || !ctx->nz_cells) {
+    ctx->occ = calloc((cells + 63) / 64, sizeof *ctx->occ);
+    if (!ctx->slot || !ctx->eo_cells || !ctx->nz_cells || !ctx->occ) {
         ef_ctx_destroy(ctx);
         return EF_ERR_NOMEM;
     }
@@ -63,6 +64,7 @@ void ef_ctx_destroy(ef_ctx *ctx)
     free(ctx->slot);
     free(ctx->eo_cells);
     free(ctx->nz_cells);
+    free(ctx->occ);
     free(ctx);
 }
 

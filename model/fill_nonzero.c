@@ -5,7 +5,8 @@
  * a 64-bit word, masking the pad bits after every add; a lane's pad bit after
  * adding 0x7F is set exactly when the counter is non-zero, and those pad bits,
  * gathered in sample order, are the coverage mask.  The heavy part runs only
- * at non-zero cells (mask tracking); cells are cleared as they are read.
+ * at marked, non-zero cells (mask tracking, through the occupancy map as in
+ * fill_evenodd.c); cells are cleared as they are read.
  */
 #include "internal.h"
 
@@ -22,40 +23,62 @@ static inline uint32_t lanes_nonzero(uint64_t acc)
     return gather_pads(((acc & EF_LANES7) + EF_LANES7) & EF_PADS);
 }
 
-void ef_fill_nonzero(ef_ctx *ctx, int32_t y, int32_t xmin, int32_t xmax, ef_span_fn span, void *user)
+static inline void fill_nonzero(ef_ctx *ctx, int32_t y, int32_t xmin, int32_t xmax, ef_span_fn span, void *user,
+                                const int words, const int check_overflow)
 {
-    const int words = ctx->samples / 8;
+    uint64_t *occ = ctx->occ;
     const int32_t W = ctx->width;
     uint64_t acc[4] = { 0, 0, 0, 0 };
     uint32_t mask = 0;
     uint64_t overflows = 0;
     int32_t start = xmin;
-    for (int32_t p = xmin; p <= xmax; p++) {
-        uint64_t *cell = &ctx->nz_cells[(size_t)p * (size_t)words];
-        uint64_t any = 0;
-        for (int w = 0; w < words; w++)
-            any |= cell[w];
-        if (any == 0)
+    for (int32_t wi = xmin >> 6; wi <= xmax >> 6; wi++) {
+        uint64_t bits = occ[wi];
+        if (!bits)
             continue;
-        if (mask && p > start)
-            span(user, y, start, (p < W ? p : W) - start, mask);
-        mask = 0;
-        for (int w = 0; w < words; w++) {
-            uint64_t a = acc[w], b = cell[w];
-            uint64_t sum = (a + b) & EF_LANES7;
-            /* Signed 7-bit overflow per lane: operands agree in sign, result not. */
-            uint64_t ov = ~(a ^ b) & (a ^ sum) & EF_SIGN7;
-            if (ov)
-                overflows += ef_popcount32(gather_pads(ov << 1));  /* bit 8L+6 -> 8L+7 */
-            acc[w] = sum;
-            cell[w] = 0;
-            mask |= lanes_nonzero(sum) << (8 * w);
-        }
-        start = p;
+        occ[wi] = 0;
+        do {
+            int32_t p = wi * 64 + (int32_t)ef_ctz64(bits);
+            bits &= bits - 1;
+            uint64_t *cell = &ctx->nz_cells[(size_t)p * (size_t)words];
+            uint64_t any = 0;
+            for (int w = 0; w < words; w++)
+                any |= cell[w];
+            if (any == 0)
+                continue;                  /* contributions that cancelled: mask unchanged */
+            if (mask && p > start)
+                span(user, y, start, (p < W ? p : W) - start, mask);
+            mask = 0;
+            for (int w = 0; w < words; w++) {
+                uint64_t a = acc[w], b = cell[w];
+                uint64_t sum = (a + b) & EF_LANES7;
+                if (check_overflow) {
+                    /* Signed 7-bit overflow per lane: operands agree in sign, result not. */
+                    uint64_t ov = ~(a ^ b) & (a ^ sum) & EF_SIGN7;
+                    overflows += ef_popcount32(gather_pads(ov << 1));  /* bit 8L+6 -> 8L+7 */
+                }
+                acc[w] = sum;
+                cell[w] = 0;                   /* clear-on-read */
+                mask |= lanes_nonzero(sum) << (8 * w);
+            }
+            start = p;
+        } while (bits);
     }
     ctx->diag.winding_overflows += overflows;
     if (mask && start < W) {
         int32_t end = xmax + 1 < W ? xmax + 1 : W;
         span(user, y, start, end - start, mask);
+    }
+}
+
+void ef_fill_nonzero(ef_ctx *ctx, int32_t y, int32_t xmin, int32_t xmax, ef_span_fn span, void *user)
+{
+    /* Same reasoning as the plotter: with at most 63 active edges no running
+     * counter can leave [-64, 63], so the check is skipped there. */
+    const int check = ctx->naet_row >= 64;
+    switch (ctx->samples) {
+    case 8: fill_nonzero(ctx, y, xmin, xmax, span, user, 1, check); break;
+    case 16: fill_nonzero(ctx, y, xmin, xmax, span, user, 2, check); break;
+    default: fill_nonzero(ctx, y, xmin, xmax, span, user, 4, check); break;
     }
 }

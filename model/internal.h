@@ -49,10 +49,12 @@ struct ef_ctx {
     int32_t *slot;          /* height entries: first edge of the pixel row, -1 = none */
     int32_t *aet;           /* active edge indices, unsorted */
     uint32_t naet;
+    uint32_t naet_row;      /* active edges while the current row was plotted */
 
     /* the one-scanline buffer: W+1 cells (cell W is the right-clamp sink) */
     uint32_t *eo_cells;     /* even-odd: N bits per cell */
     uint64_t *nz_cells;     /* non-zero: N/8 words per cell */
+    uint64_t *occ;          /* one bit per cell: marked since the last fill (mask tracking) */
 
     ef_diag diag;
 };
@@ -79,6 +81,21 @@ void ef_plot_nonzero(ef_ctx *ctx, int32_t row, int32_t *xmin, int32_t *xmax);
 /* fill_*.c: scans cells xmin..xmax, clears them, reports spans of row y. */
 void ef_fill_evenodd(ef_ctx *ctx, int32_t y, int32_t xmin, int32_t xmax, ef_span_fn span, void *user);
 void ef_fill_nonzero(ef_ctx *ctx, int32_t y, int32_t xmin, int32_t xmax, ef_span_fn span, void *user);
+
+/* Index of the lowest set bit of v != 0. */
+static inline unsigned ef_ctz64(uint64_t v)
+{
+#if defined(__GNUC__)
+    return (unsigned)__builtin_ctzll(v);
+#else
+    unsigned n = 0;
+    while (!(v & 1u)) {
+        v >>= 1;
+        n++;
+    }
+    return n;
+#endif
+}
 
 /* Population count, the coverage block's core (portable; compilers fold it). */
 static inline unsigned ef_popcount32(uint32_t v)

@@ -5,7 +5,16 @@
  * one exact DDA step.  This is the hardware's one-edge-row-per-cycle loop.
  *
  * The even-odd buffer takes an XOR of the sample's bit; the non-zero buffer
- * adds the edge direction to the sample's 7-bit lane of a packed word.
+ * adds the edge direction to the sample's 7-bit lane of a packed word.  Each
+ * marked cell also sets its bit in the occupancy map, so the filler visits
+ * only marked cells (mask tracking, word at a time), and the least and
+ * greatest marked cell bound the row (edge tracking).
+ *
+ * Speed: the loops are specialised per sample count (N a compile-time
+ * constant, so a full scanline of sample rows is a fixed-count loop the
+ * compiler unrolls - the paper's 3.8 D), and the winding-overflow diagnostic
+ * (spec 6.4) is only evaluated on rows with 64 or more active edges: with at
+ * most 63 edges no counter can leave [-64, 63], so the count is the same.
  *
  * EF_MUTATION (test builds only) injects known bugs so the oracle test can
  * prove that it catches them: 1 = one wrong n-rooks offset, 2 = an off-by-one
@@ -17,7 +26,13 @@
 #define EF_MUTATION 0
 #endif
 
-static inline int32_t plot_cell(const ef_ctx *ctx, int32_t x, int s)
+#if defined(__GNUC__)
+#define EF_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define EF_ALWAYS_INLINE inline
+#endif
+
+static EF_ALWAYS_INLINE int32_t plot_cell(const ef_ctx *ctx, int32_t x, int s)
 {
     int32_t off = ctx->off[s];
 #if EF_MUTATION == 1
@@ -31,7 +46,7 @@ static inline int32_t plot_cell(const ef_ctx *ctx, int32_t x, int s)
 }
 
 /* One exact DDA step (spec 5 step 5 / 6.1). */
-static inline void dda_step(int32_t *x, int32_t *e, const ef_edge *E)
+static EF_ALWAYS_INLINE void dda_step(int32_t *x, int32_t *e, const ef_edge *E)
 {
     *x += E->qs;
     *e += E->rs;
@@ -41,67 +56,96 @@ static inline void dda_step(int32_t *x, int32_t *e, const ef_edge *E)
     }
 }
 
-void ef_plot_evenodd(ef_ctx *ctx, int32_t row, int32_t *xmin, int32_t *xmax)
+static EF_ALWAYS_INLINE void mark_occ(uint64_t *occ, int32_t q)
 {
-    const int32_t base = row * ctx->samples;
-    const int32_t end = base + ctx->samples - 1;
+    occ[q >> 6] |= UINT64_C(1) << (q & 63);
+}
+
+static EF_ALWAYS_INLINE void plot_evenodd(ef_ctx *ctx, int32_t row, int32_t *xmin, int32_t *xmax, const int NS)
+{
+    const int32_t base = row * NS;
+    const int32_t end = base + NS - 1;
     uint32_t *cells = ctx->eo_cells;
+    uint64_t *occ = ctx->occ;
     int32_t lo = *xmin, hi = *xmax;
     for (uint32_t k = 0; k < ctx->naet; k++) {
         ef_edge *E = &ctx->edges[ctx->aet[k]];
-        int32_t x = E->x, e = E->e, r = E->r;
-        int32_t last = E->r1 < end ? E->r1 : end;
-        for (; r <= last; r++) {
-            int s = r - base;
+        int32_t x = E->x, e = E->e;
+        int s0 = E->r - base;
+        int s1 = (E->r1 < end ? E->r1 : end) - base;
+        for (int s = s0; s <= s1; s++) {
             int32_t q = plot_cell(ctx, x, s);
             cells[q] ^= UINT32_C(1) << s;
-            if (q < lo)
-                lo = q;
-            if (q > hi)
-                hi = q;
+            mark_occ(occ, q);
+            lo = q < lo ? q : lo;
+            hi = q > hi ? q : hi;
             dda_step(&x, &e, E);
         }
         E->x = x;
         E->e = e;
-        E->r = r;
+        E->r = base + s1 + 1;
     }
     *xmin = lo;
     *xmax = hi;
 }
 
-void ef_plot_nonzero(ef_ctx *ctx, int32_t row, int32_t *xmin, int32_t *xmax)
+static EF_ALWAYS_INLINE void plot_nonzero(ef_ctx *ctx, int32_t row, int32_t *xmin, int32_t *xmax, const int NS,
+                                          const int check_overflow)
 {
-    const int32_t base = row * ctx->samples;
-    const int32_t end = base + ctx->samples - 1;
-    const int words = ctx->samples / 8;
+    const int32_t base = row * NS;
+    const int32_t end = base + NS - 1;
+    const int words = NS / 8;
     uint64_t *cells = ctx->nz_cells;
+    uint64_t *occ = ctx->occ;
     int32_t lo = *xmin, hi = *xmax;
     uint64_t overflows = 0;
     for (uint32_t k = 0; k < ctx->naet; k++) {
         ef_edge *E = &ctx->edges[ctx->aet[k]];
-        int32_t x = E->x, e = E->e, r = E->r;
-        int32_t last = E->r1 < end ? E->r1 : end;
+        int32_t x = E->x, e = E->e;
+        int s0 = E->r - base;
+        int s1 = (E->r1 < end ? E->r1 : end) - base;
         /* +1 or -1 modulo 128 in one lane (spec 6.3). */
         const uint64_t d = E->dir > 0 ? 0x01u : 0x7Fu;
-        const uint64_t edge_limit = E->dir > 0 ? 0x3Fu : 0x40u;  /* 63 + 1 or -64 - 1 overflows */
-        for (; r <= last; r++) {
-            int s = r - base;
+        const uint64_t limit = E->dir > 0 ? 0x3Fu : 0x40u;   /* 63 + 1 or -64 - 1 overflows */
+        for (int s = s0; s <= s1; s++) {
             int32_t q = plot_cell(ctx, x, s);
             uint64_t *w = &cells[(size_t)q * (size_t)words + (size_t)(s >> 3)];
             unsigned sh = 8u * (unsigned)(s & 7);
-            overflows += ((*w >> sh) & 0x7Fu) == edge_limit;
+            if (check_overflow)
+                overflows += ((*w >> sh) & 0x7Fu) == limit;
             *w = (*w + (d << sh)) & EF_LANES7;
-            if (q < lo)
-                lo = q;
-            if (q > hi)
-                hi = q;
+            mark_occ(occ, q);
+            lo = q < lo ? q : lo;
+            hi = q > hi ? q : hi;
             dda_step(&x, &e, E);
         }
         E->x = x;
         E->e = e;
-        E->r = r;
+        E->r = base + s1 + 1;
     }
     ctx->diag.winding_overflows += overflows;
     *xmin = lo;
     *xmax = hi;
+}
+
+void ef_plot_evenodd(ef_ctx *ctx, int32_t row, int32_t *xmin, int32_t *xmax)
+{
+    switch (ctx->samples) {
+    case 8: plot_evenodd(ctx, row, xmin, xmax, 8); break;
+    case 16: plot_evenodd(ctx, row, xmin, xmax, 16); break;
+    default: plot_evenodd(ctx, row, xmin, xmax, 32); break;
+    }
+}
+
+void ef_plot_nonzero(ef_ctx *ctx, int32_t row, int32_t *xmin, int32_t *xmax)
+{
+    const int check = ctx->naet >= 64;
+    switch (ctx->samples * 2 + check) {
+    case 16: plot_nonzero(ctx, row, xmin, xmax, 8, 0); break;
+    case 17: plot_nonzero(ctx, row, xmin, xmax, 8, 1); break;
+    case 32: plot_nonzero(ctx, row, xmin, xmax, 16, 0); break;
+    case 33: plot_nonzero(ctx, row, xmin, xmax, 16, 1); break;
+    case 64: plot_nonzero(ctx, row, xmin, xmax, 32, 0); break;
+    default: plot_nonzero(ctx, row, xmin, xmax, 32, 1); break;
+    }
 }

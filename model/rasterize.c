@@ -22,6 +22,7 @@ ef_status ef_rasterize(ef_ctx *ctx, const ef_polygon *poly, ef_rule rule, ef_spa
         if (ctx->naet == 0)
             continue;
         int32_t xmin = INT32_MAX, xmax = -1;
+        ctx->naet_row = ctx->naet;
         if (evenodd)
             ef_plot_evenodd(ctx, row, &xmin, &xmax);
         else
