@@ -7,8 +7,8 @@
  * The even-odd buffer takes an XOR of the sample's bit; the non-zero buffer
  * adds the edge direction to the sample's 7-bit lane of a packed word.  Each
  * marked cell also sets its bit in the occupancy map, so the filler visits
- * only marked cells (mask tracking, word at a time), and the least and
- * greatest marked cell bound the row (edge tracking).
+ * only marked cells (mask tracking, word at a time); a range of cells that
+ * contains every marked one bounds the row (edge tracking, see track()).
  *
  * Speed: the loops are specialised per sample count (N a compile-time
  * constant, so a full scanline of sample rows is a fixed-count loop the
@@ -48,12 +48,25 @@ static EF_ALWAYS_INLINE int32_t plot_cell(const ef_ctx *ctx, int32_t x, int s)
 /* One exact DDA step (spec 5 step 5 / 6.1). */
 static EF_ALWAYS_INLINE void dda_step(int32_t *x, int32_t *e, const ef_edge *E)
 {
-    *x += E->qs;
-    *e += E->rs;
-    if (*e >= E->dy) {
-        *e -= E->dy;
-        *x += 1;
-    }
+    /* Branch-free carry: the error term's overflow is data-dependent and would
+     * mispredict about half the time. */
+    int32_t ee = *e + E->rs;
+    int32_t carry = ee >= E->dy;
+    *e = ee - (E->dy & -carry);
+    *x += E->qs + carry;
+}
+
+/* Edge tracking per edge and row rather than per sample: the DDA's x moves
+ * monotonically from xa to xb over the row's samples and every offset lies in
+ * [1, 255], so every plotted cell lies in [floor(min/256), floor(max/256) + 1]
+ * (clamped).  The filler only needs a range that contains every marked cell. */
+static EF_ALWAYS_INLINE void track(const ef_ctx *ctx, int32_t xa, int32_t xb, int32_t *lo, int32_t *hi)
+{
+    int32_t a = xa < xb ? xa : xb, b = xa < xb ? xb : xa;
+    int32_t qa = ef_clamp_i32(ef_asr_i32(a, EF_DEV_FRAC_BITS), 0, ctx->width);
+    int32_t qb = ef_clamp_i32(ef_asr_i32(b, EF_DEV_FRAC_BITS) + 1, 0, ctx->width);
+    *lo = qa < *lo ? qa : *lo;
+    *hi = qb > *hi ? qb : *hi;
 }
 
 static EF_ALWAYS_INLINE void mark_occ(uint64_t *occ, int32_t q)
@@ -70,17 +83,17 @@ static EF_ALWAYS_INLINE void plot_evenodd(ef_ctx *ctx, int32_t row, int32_t *xmi
     int32_t lo = *xmin, hi = *xmax;
     for (uint32_t k = 0; k < ctx->naet; k++) {
         ef_edge *E = &ctx->edges[ctx->aet[k]];
-        int32_t x = E->x, e = E->e;
+        int32_t x = E->x, e = E->e, xl = x;
         int s0 = E->r - base;
         int s1 = (E->r1 < end ? E->r1 : end) - base;
         for (int s = s0; s <= s1; s++) {
             int32_t q = plot_cell(ctx, x, s);
             cells[q] ^= UINT32_C(1) << s;
             mark_occ(occ, q);
-            lo = q < lo ? q : lo;
-            hi = q > hi ? q : hi;
+            xl = x;
             dda_step(&x, &e, E);
         }
+        track(ctx, E->x, xl, &lo, &hi);
         E->x = x;
         E->e = e;
         E->r = base + s1 + 1;
@@ -101,7 +114,7 @@ static EF_ALWAYS_INLINE void plot_nonzero(ef_ctx *ctx, int32_t row, int32_t *xmi
     uint64_t overflows = 0;
     for (uint32_t k = 0; k < ctx->naet; k++) {
         ef_edge *E = &ctx->edges[ctx->aet[k]];
-        int32_t x = E->x, e = E->e;
+        int32_t x = E->x, e = E->e, xl = x;
         int s0 = E->r - base;
         int s1 = (E->r1 < end ? E->r1 : end) - base;
         /* +1 or -1 modulo 128 in one lane (spec 6.3). */
@@ -115,10 +128,10 @@ static EF_ALWAYS_INLINE void plot_nonzero(ef_ctx *ctx, int32_t row, int32_t *xmi
                 overflows += ((*w >> sh) & 0x7Fu) == limit;
             *w = (*w + (d << sh)) & EF_LANES7;
             mark_occ(occ, q);
-            lo = q < lo ? q : lo;
-            hi = q > hi ? q : hi;
+            xl = x;
             dda_step(&x, &e, E);
         }
+        track(ctx, E->x, xl, &lo, &hi);
         E->x = x;
         E->e = e;
         E->r = base + s1 + 1;
