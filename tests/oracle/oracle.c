@@ -33,9 +33,9 @@
  * published in docs/patterns.md / model/pattern_tables.c), copied by hand.
  * The harness checks that they still equal ef_pattern(). */
 static const uint8_t eo_k8[8] = { 2, 7, 4, 1, 6, 3, 0, 5 };
-static const uint8_t eo_k16[16] = { 14, 7, 11, 0, 4, 13, 9, 1, 5, 12, 8, 3, 15, 6, 10, 2 };
-static const uint8_t eo_k32[32] = { 3,  18, 25, 8,  31, 14, 21, 4,  27, 10, 17, 0,  23, 6,  13, 28,
-                                    19, 2,  9,  24, 15, 30, 5,  20, 11, 26, 1,  16, 7,  22, 29, 12 };
+static const uint8_t eo_k16[16] = { 3, 11, 7, 15, 1, 9, 5, 13, 2, 10, 6, 14, 0, 8, 4, 12 };
+static const uint8_t eo_k32[32] = { 6, 27, 17, 11, 22, 3, 31, 15, 8, 25, 0, 20, 13, 29, 5, 18,
+                                    10, 23, 1, 28, 16, 7, 24, 12, 19, 2, 30, 9, 21, 14, 26, 4 };
 
 const uint8_t *eo_pattern(int samples)
 {

@@ -1,0 +1,237 @@
+/*
+ * atomic_file.c - temporary file + fsync + rename, with cleanup on
+ * SIGINT/SIGTERM (see atomic_file.h for the why).
+ */
+#include "atomic_file.h"
+
+#include <errno.h>
+#include <signal.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <fcntl.h>
+#include <unistd.h>
+
+/* State shared with the signal handler: only a static buffer and a
+ * sig_atomic_t flag, which is all an async-signal-safe handler may touch. */
+static char tmp_path[4352];
+static volatile sig_atomic_t tmp_active;
+
+static struct sigaction old_int, old_term;
+static int handlers_installed;
+
+static void on_signal(int sig)
+{
+    struct sigaction dfl;
+
+    if (tmp_active)
+        unlink(tmp_path); /* async-signal-safe */
+    /* Die of the same signal with the default action, so the parent sees
+     * the usual "killed by SIGINT" status (a shell prints nothing, make
+     * stops).  The signal stays blocked until we return, then fires. */
+    memset(&dfl, 0, sizeof dfl);
+    dfl.sa_handler = SIG_DFL;
+    sigemptyset(&dfl.sa_mask);
+    sigaction(sig, &dfl, NULL);
+    raise(sig);
+}
+
+static void block_signals(sigset_t *old)
+{
+    sigset_t set;
+    sigemptyset(&set);
+    sigaddset(&set, SIGINT);
+    sigaddset(&set, SIGTERM);
+    sigprocmask(SIG_BLOCK, &set, old);
+}
+
+static void restore_signals(const sigset_t *old)
+{
+    sigprocmask(SIG_SETMASK, old, NULL);
+}
+
+/* A signal the user asked to ignore (nohup, `trap '' INT`) stays ignored. */
+static void install_one(int sig, struct sigaction *old)
+{
+    struct sigaction sa;
+    sigaction(sig, NULL, old);
+    if (old->sa_handler == SIG_IGN)
+        return;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_signal;
+    sigemptyset(&sa.sa_mask);
+    sigaddset(&sa.sa_mask, SIGINT);
+    sigaddset(&sa.sa_mask, SIGTERM);
+    sigaction(sig, &sa, NULL);
+}
+
+static void install_handlers(void)
+{
+    if (handlers_installed)
+        return;
+    install_one(SIGINT, &old_int);
+    install_one(SIGTERM, &old_term);
+    handlers_installed = 1;
+}
+
+static void uninstall_handlers(void)
+{
+    if (!handlers_installed)
+        return;
+    sigaction(SIGINT, &old_int, NULL);
+    sigaction(SIGTERM, &old_term, NULL);
+    handlers_installed = 0;
+}
+
+/* Unlinks the temporary if there is one; errno is preserved for callers
+ * that are about to report the original failure. */
+static void remove_temp(void)
+{
+    sigset_t old;
+    int saved = errno;
+
+    block_signals(&old);
+    if (tmp_active) {
+        unlink(tmp_path);
+        tmp_active = 0;
+    }
+    uninstall_handlers();
+    restore_signals(&old);
+    errno = saved;
+}
+
+/* "dir/name" -> "dir/.name.XXXXXX" (mkstemp's template). */
+static int make_template(const char *path, char *out, size_t size)
+{
+    const char *slash = strrchr(path, '/');
+    size_t dirlen = slash ? (size_t)(slash - path) + 1 : 0;
+    const char *base = path + dirlen;
+    size_t baselen = strlen(base);
+
+    if (baselen == 0) {
+        errno = EISDIR; /* "dir/" names no file */
+        return -1;
+    }
+    if (dirlen + 1 + baselen + 7 + 1 > size) {
+        errno = ENAMETOOLONG;
+        return -1;
+    }
+    memcpy(out, path, dirlen);
+    out[dirlen] = '.';
+    memcpy(out + dirlen + 1, base, baselen);
+    memcpy(out + dirlen + 1 + baselen, ".XXXXXX", 8);
+    return 0;
+}
+
+int ef_cli_atomic_open(ef_cli_atomic *af, const char *path)
+{
+    sigset_t old;
+    int fd, saved;
+    mode_t mask;
+
+    af->fp = NULL;
+    af->path = path;
+    if (tmp_active) {
+        errno = EBUSY; /* one at a time: the handler knows one path */
+        return -1;
+    }
+    block_signals(&old);
+    if (make_template(path, tmp_path, sizeof tmp_path) != 0) {
+        saved = errno;
+        restore_signals(&old);
+        errno = saved;
+        return -1;
+    }
+    install_handlers();
+    fd = mkstemp(tmp_path);
+    if (fd < 0) {
+        saved = errno;
+        uninstall_handlers();
+        restore_signals(&old);
+        errno = saved;
+        return -1;
+    }
+    tmp_active = 1;
+    restore_signals(&old);
+
+    /* mkstemp creates 0600; a finished image gets the permissions any new
+     * file would (0666 minus the umask), as if written in place. */
+    mask = umask(0);
+    umask(mask);
+    if (fchmod(fd, (mode_t)(0666 & ~mask)) != 0 || (af->fp = fdopen(fd, "wb")) == NULL) {
+        saved = errno;
+        close(fd);
+        remove_temp();
+        errno = saved;
+        return -1;
+    }
+    return 0;
+}
+
+int ef_cli_atomic_commit(ef_cli_atomic *af)
+{
+    sigset_t old;
+    int err = 0;
+
+    if (!af->fp) {
+        errno = EBADF;
+        return -1;
+    }
+    if (fflush(af->fp) != 0)
+        err = errno;
+    if (!err && ferror(af->fp))
+        err = EIO;
+    /* Durable before visible: after a crash the destination holds either
+     * the old file or the whole new one, never a hole. */
+    if (!err && fsync(fileno(af->fp)) != 0)
+        err = errno;
+    if (fclose(af->fp) != 0 && !err)
+        err = errno;
+    af->fp = NULL;
+    if (!err) {
+        block_signals(&old);
+        if (rename(tmp_path, af->path) != 0)
+            err = errno;
+        else
+            tmp_active = 0;
+        restore_signals(&old);
+    }
+    if (err) {
+        remove_temp();
+        errno = err;
+        return -1;
+    }
+    remove_temp(); /* only uninstalls the handlers now */
+
+    /* Make the rename itself durable; best effort, the data already is. */
+    {
+        char dir[sizeof tmp_path];
+        const char *slash = strrchr(af->path, '/');
+        size_t len = slash ? (size_t)(slash - af->path) : 0;
+        int dfd;
+        if (len == 0 && slash)
+            len = 1; /* "/name": the root directory */
+        if (len < sizeof dir) {
+            if (len)
+                memcpy(dir, af->path, len);
+            else
+                dir[len++] = '.';
+            dir[len] = '\0';
+            dfd = open(dir, O_RDONLY);
+            if (dfd >= 0) {
+                fsync(dfd);
+                close(dfd);
+            }
+        }
+    }
+    return 0;
+}
+
+void ef_cli_atomic_abort(ef_cli_atomic *af)
+{
+    if (af->fp) {
+        fclose(af->fp);
+        af->fp = NULL;
+    }
+    remove_temp();
+}

@@ -1,0 +1,35 @@
+/*
+ * atomic_file.h - write a file so that it appears whole or not at all.
+ *
+ * The data goes to a temporary ".NAME.XXXXXX" in the destination's own
+ * directory (rename is only atomic within one file system), is fsync'ed and
+ * then renamed onto the destination.  On any error, and on SIGINT/SIGTERM
+ * while it is open, the temporary is unlinked: a failed or interrupted run
+ * never leaves a truncated image where a previous good one was, nor a stray
+ * temporary.
+ *
+ * One atomic file at a time per process: the signal handler can only use
+ * async-signal-safe state, so the temporary's path lives in a static buffer.
+ */
+#ifndef EF_CLI_ATOMIC_FILE_H
+#define EF_CLI_ATOMIC_FILE_H
+
+#include <stdio.h>
+
+typedef struct ef_cli_atomic {
+    FILE *fp;             /* write here between open and commit/abort */
+    const char *path;     /* the destination */
+} ef_cli_atomic;
+
+/* Creates the temporary next to `path`.  0 on success; -1 with errno set
+ * (nothing is left on disk). */
+int ef_cli_atomic_open(ef_cli_atomic *af, const char *path);
+
+/* Flushes, fsyncs, closes and renames onto the destination.  0 on success;
+ * -1 with errno set, and the temporary removed.  Either way af->fp is gone. */
+int ef_cli_atomic_commit(ef_cli_atomic *af);
+
+/* Closes and removes the temporary.  Safe after a failed open. */
+void ef_cli_atomic_abort(ef_cli_atomic *af);
+
+#endif /* EF_CLI_ATOMIC_FILE_H */

@@ -1,0 +1,56 @@
+/*
+ * cli.h - shared pieces of the `edgeflag` command-line tool: exit codes,
+ * strict argument parsing and diagnostics.  Only the CLI prints; the
+ * library reports status codes (docs/cli.md lists what each exit code means).
+ */
+#ifndef EF_CLI_H
+#define EF_CLI_H
+
+#include <stdint.h>
+
+/* Exit codes, documented in docs/cli.md.  Scripts depend on them: do not
+ * renumber.  70 is EX_SOFTWARE from BSD sysexits.h. */
+enum {
+    EF_CLI_EXIT_OK = 0,
+    EF_CLI_EXIT_USAGE = 2,     /* bad command line */
+    EF_CLI_EXIT_INPUT = 3,     /* input unreadable, malformed or over a limit */
+    EF_CLI_EXIT_OUTPUT = 4,    /* output could not be written */
+    EF_CLI_EXIT_INTERNAL = 70  /* a bug, or out of memory */
+};
+
+/* Subcommands: argv[0] is the command name; return an exit code. */
+int ef_cli_render(int argc, char **argv);
+int ef_cli_patterns(int argc, char **argv);
+
+/* Exact decimal integer: one or more ASCII digits and nothing else (no sign,
+ * no spaces, no base prefix), value in [min, max].  Returns 1 and stores it,
+ * or 0.  Overflow is impossible: digits stop counting once past max. */
+int ef_cli_parse_int(const char *s, int32_t min, int32_t max, int32_t *out);
+
+/* "WxH" (lower-case x), each in [1, max].  Returns 1 or 0. */
+int ef_cli_parse_size(const char *s, int32_t max, int32_t *w, int32_t *h);
+
+/* Option matching for hand-written parsers.  `arg` is argv[*i].  If it is
+ * `name` (then the value is argv[*i + 1]) or `name=value`, sets *value and
+ * advances *i past what was consumed, returning 1.  Returns 0 if arg is a
+ * different option, -1 if it is this option but the value is missing (a
+ * usage error already reported under `cmd`). */
+int ef_cli_option_value(const char *cmd, int argc, char **argv, int *i, const char *name,
+                        const char **value);
+
+/* "edgeflag: <cmd>: <message>" + a hint line on stderr; returns
+ * EF_CLI_EXIT_USAGE so callers can `return ef_cli_usage_error(...)`. */
+int ef_cli_usage_error(const char *cmd, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
+/* "edgeflag: <message>" on stderr. */
+void ef_cli_error(const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 1, 2)))
+#endif
+    ;
+
+#endif /* EF_CLI_H */

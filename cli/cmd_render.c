@@ -1,0 +1,253 @@
+/*
+ * cmd_render.c - `edgeflag render`: scene file -> model -> image file.
+ *
+ * Every check that needs no file happens first, so a usage error touches
+ * nothing; the input is loaded and rendered completely before the output is
+ * created, and the output appears atomically (atomic_file.h).  So on any
+ * failure OUTPUT is left exactly as it was.
+ */
+#include "cli.h"
+
+#include "atomic_file.h"
+#include "ef_scene.h"
+#include "image_write.h"
+
+#include <errno.h>
+#include <inttypes.h>
+#include <stdio.h>
+#include <string.h>
+
+static const char *const CMD = "render";
+
+static void usage(FILE *f)
+{
+    fputs("usage: edgeflag render INPUT -o OUTPUT [--samples 8|16|32] [--rule evenodd|nonzero]\n"
+          "                       [--size WxH]\n"
+          "\n"
+          "Rasterizes INPUT (.svg, or .scene/.txt in the peerbench scene format) with the\n"
+          "bit-exact model and writes OUTPUT; its extension picks the format:\n"
+          "  .png   straight-alpha RGBA (un-premultiplied as documented in docs/cli.md)\n"
+          "  .pam   the model's premultiplied RGBA bytes exactly (P7, RGB_ALPHA)\n"
+          "  .pgm   the alpha (coverage) channel only (P5)\n"
+          "\n"
+          "options:\n"
+          "  -o, --output FILE  file to write (required); replaced atomically, never left\n"
+          "                     half-written\n"
+          "  --samples N        samples per pixel: 8, 16 (default) or 32\n"
+          "  --rule RULE        fill every shape with RULE (evenodd or nonzero) instead of\n"
+          "                     its own\n"
+          "  --size WxH         fit the drawing into a W x H pixel canvas (1..16384 each)\n"
+          "  -h, --help         show this text\n"
+          "  --                 end of options (for an INPUT starting with '-')\n"
+          "\n"
+          "exit codes: 0 ok, 2 usage, 3 bad input or over a limit, 4 output not written,\n"
+          "            70 internal error\n",
+          f);
+}
+
+typedef struct render_args {
+    const char *input, *output;
+    int32_t samples;
+    int rule; /* -1: each shape's own */
+    int32_t fit_w, fit_h;
+    ef_cli_format fmt;
+} render_args;
+
+/* Returns -1 when parsing succeeded, else the exit code to return. */
+static int parse(int argc, char **argv, render_args *a)
+{
+    int i, only_positional = 0;
+    int seen_samples = 0, seen_rule = 0, seen_size = 0;
+
+    memset(a, 0, sizeof *a);
+    a->samples = 16;
+    a->rule = -1;
+
+    /* --help wins over anything else on the line, even earlier junk. */
+    for (i = 1; i < argc && strcmp(argv[i], "--") != 0; i++) {
+        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+            usage(stdout);
+            return EF_CLI_EXIT_OK;
+        }
+    }
+
+    for (i = 1; i < argc;) {
+        const char *arg = argv[i], *v = NULL;
+        int r;
+
+        if (only_positional || arg[0] != '-' || arg[1] == '\0') {
+            if (a->input)
+                return ef_cli_usage_error(CMD, "more than one input ('%s' and '%s')", a->input, arg);
+            a->input = arg;
+            i++;
+            continue;
+        }
+        if (strcmp(arg, "--") == 0) {
+            only_positional = 1;
+            i++;
+            continue;
+        }
+        if ((r = ef_cli_option_value(CMD, argc, argv, &i, "-o", &v)) != 0 ||
+            (r = ef_cli_option_value(CMD, argc, argv, &i, "--output", &v)) != 0) {
+            if (r < 0)
+                return EF_CLI_EXIT_USAGE;
+            if (a->output)
+                return ef_cli_usage_error(CMD, "output given twice");
+            if (!*v)
+                return ef_cli_usage_error(CMD, "empty output file name");
+            a->output = v;
+        } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "--samples", &v)) != 0) {
+            if (r < 0)
+                return EF_CLI_EXIT_USAGE;
+            if (seen_samples++)
+                return ef_cli_usage_error(CMD, "--samples given twice");
+            if (!ef_cli_parse_int(v, 1, 32, &a->samples) || !ef_samples_valid(a->samples))
+                return ef_cli_usage_error(CMD, "--samples must be 8, 16 or 32, not '%s'", v);
+        } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "--rule", &v)) != 0) {
+            if (r < 0)
+                return EF_CLI_EXIT_USAGE;
+            if (seen_rule++)
+                return ef_cli_usage_error(CMD, "--rule given twice");
+            if (strcmp(v, "evenodd") == 0)
+                a->rule = EF_RULE_EVENODD;
+            else if (strcmp(v, "nonzero") == 0)
+                a->rule = EF_RULE_NONZERO;
+            else
+                return ef_cli_usage_error(CMD, "--rule must be evenodd or nonzero, not '%s'", v);
+        } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "--size", &v)) != 0) {
+            if (r < 0)
+                return EF_CLI_EXIT_USAGE;
+            if (seen_size++)
+                return ef_cli_usage_error(CMD, "--size given twice");
+            if (!ef_cli_parse_size(v, EF_MAX_CANVAS, &a->fit_w, &a->fit_h))
+                return ef_cli_usage_error(CMD, "--size must be WxH with 1 <= W, H <= %d, not '%s'",
+                                          EF_MAX_CANVAS, v);
+        } else {
+            return ef_cli_usage_error(CMD, "unknown option '%s'", arg);
+        }
+    }
+    if (!a->input)
+        return ef_cli_usage_error(CMD, "no input file");
+    if (!a->output)
+        return ef_cli_usage_error(CMD, "no output file (-o OUTPUT)");
+    a->fmt = ef_cli_format_from_path(a->output);
+    if (a->fmt == EF_CLI_FMT_UNKNOWN)
+        return ef_cli_usage_error(CMD, "cannot tell the format of '%s': use .png, .pam or .pgm",
+                                  a->output);
+    if (!ef_cli_format_available(a->fmt))
+        return ef_cli_usage_error(CMD, "'%s': this edgeflag was built without PNG support "
+                                  "(WITH_PNG=0); use .pam or .pgm", a->output);
+    return -1;
+}
+
+/* Failures the input can cause map to 3; running out of memory is not the
+ * input's fault as far as a script can tell, so it is grouped with 70. */
+static int exit_for(ef_status st)
+{
+    return st == EF_ERR_NOMEM ? EF_CLI_EXIT_INTERNAL : EF_CLI_EXIT_INPUT;
+}
+
+static void on_note(void *user, const char *file, uint32_t line, uint32_t col, const char *msg)
+{
+    (void)user;
+    fprintf(stderr, "%s:%" PRIu32 ":%" PRIu32 ": note: %s\n", file, line, col, msg);
+}
+
+static int write_output(const render_args *a, const ef_image *img)
+{
+    ef_cli_atomic af;
+    char err[256];
+
+    if (ef_cli_atomic_open(&af, a->output) != 0) {
+        ef_cli_error("cannot write '%s': %s", a->output, strerror(errno));
+        return EF_CLI_EXIT_OUTPUT;
+    }
+    if (ef_cli_write_image(af.fp, a->fmt, img, err, sizeof err) != 0) {
+        int nomem = errno == ENOMEM;
+        ef_cli_atomic_abort(&af);
+        ef_cli_error("cannot write '%s': %s", a->output, err);
+        return nomem ? EF_CLI_EXIT_INTERNAL : EF_CLI_EXIT_OUTPUT;
+    }
+    if (ef_cli_atomic_commit(&af) != 0) {
+        ef_cli_error("cannot write '%s': %s", a->output, strerror(errno));
+        return EF_CLI_EXIT_OUTPUT;
+    }
+    return EF_CLI_EXIT_OK;
+}
+
+int ef_cli_render(int argc, char **argv)
+{
+    render_args a;
+    ef_load_opts opts;
+    ef_scene scene;
+    ef_error err;
+    ef_ctx *ctx = NULL;
+    ef_image img;
+    ef_diag diag;
+    ef_status st;
+    int rc;
+
+    rc = parse(argc, argv, &a);
+    if (rc >= 0)
+        return rc;
+
+    memset(&opts, 0, sizeof opts);
+    opts.fit_width = a.fit_w;
+    opts.fit_height = a.fit_h;
+    opts.note = on_note;
+    memset(&scene, 0, sizeof scene);
+    memset(&err, 0, sizeof err);
+    memset(&img, 0, sizeof img);
+
+    st = ef_scene_load_file(a.input, &opts, &scene, &err);
+    if (st != EF_OK) {
+        char buf[sizeof err.file + sizeof err.msg + 64];
+        if (err.status == EF_OK)
+            err.status = st; /* be robust to a reader that forgot to fill err */
+        if (!err.file[0] && !err.msg[0]) {
+            snprintf(buf, sizeof buf, "%s: %s", a.input, ef_strerror(st));
+        } else {
+            ef_error_format(&err, buf, sizeof buf);
+        }
+        ef_cli_error("%s", buf);
+        ef_scene_free(&scene);
+        return exit_for(st);
+    }
+
+    st = ef_ctx_create(&ctx, scene.width, scene.height, (int)a.samples);
+    if (st != EF_OK) {
+        ef_cli_error("%s: canvas %" PRId32 "x%" PRId32 " at %d samples: %s", a.input, scene.width,
+                     scene.height, (int)a.samples, ef_strerror(st));
+        rc = exit_for(st);
+        goto out;
+    }
+    st = ef_image_alloc(&img, scene.width, scene.height);
+    if (st != EF_OK) {
+        ef_cli_error("%s: image %" PRId32 "x%" PRId32 ": %s", a.input, scene.width, scene.height,
+                     ef_strerror(st));
+        rc = exit_for(st);
+        goto out;
+    }
+    /* ef_scene_render composites onto what is there: start transparent. */
+    memset(img.px, 0, img.stride * (size_t)img.height);
+    st = ef_scene_render(ctx, &scene, a.rule, &img);
+    if (st != EF_OK) {
+        ef_cli_error("%s: %s", a.input, ef_strerror(st));
+        rc = exit_for(st);
+        goto out;
+    }
+    ef_ctx_diag(ctx, &diag);
+    if (diag.winding_overflows > 0)
+        fprintf(stderr,
+                "edgeflag: warning: %s: %" PRIu64 " winding counter overflow(s): the 7-bit "
+                "counters wrap modulo 128 (docs/spec.md 6.4), so non-zero coverage is wrong "
+                "wherever the winding number is a non-zero multiple of 128\n",
+                a.input, diag.winding_overflows);
+    rc = write_output(&a, &img);
+out:
+    ef_image_free(&img);
+    if (ctx)
+        ef_ctx_destroy(ctx);
+    ef_scene_free(&scene);
+    return rc;
+}
