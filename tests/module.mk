@@ -25,7 +25,13 @@ $(ORACLE_CHECK): tests/oracle_check.c $(ORACLE_OBJ) $(LIB_A)
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) -Itests/oracle $(CFLAGS_ALL) $< $(ORACLE_OBJ) -o $@ $(LDFLAGS_ALL) $(TEST_LIBS)
 
-test-build: lib cli $(UNIT_BIN) $(ORACLE_CHECK) $(ORACLE_SELFTEST)
+TOOL_SRC := $(wildcard tests/tools/*.c)
+TOOL_BIN := $(TOOL_SRC:tests/tools/%.c=$(BUILD)/tests/tools/%)
+$(BUILD)/tests/tools/%: tests/tools/%.c $(LIB_A)
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(CFLAGS_ALL) $< -o $@ $(LDFLAGS_ALL) $(LIB_A) $(EXPAT_LIBS)
+
+test-build: lib cli $(UNIT_BIN) $(ORACLE_CHECK) $(ORACLE_SELFTEST) $(TOOL_BIN)
 
 test-unit: $(UNIT_BIN)
 	@set -e; for t in $(UNIT_BIN); do echo "== $$t"; EF_SHARED=$(EF_SHARED) $$t; done

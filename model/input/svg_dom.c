@@ -23,12 +23,16 @@
  * ef_in_dom_locate rescans the raw start tag to find the column of a
  * character inside an attribute value.
  */
+#ifndef EF_NO_SVG
 #include <expat.h>
+#endif
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "input_internal.h"
+
+#ifndef EF_NO_SVG
 
 #define SVG_NS "http://www.w3.org/2000/svg"
 
@@ -242,6 +246,18 @@ ef_status ef_in_dom_parse(ef_in_dom *dom, const char *name, const char *data, si
     if (c.st != EF_OK) ef_in_dom_free(dom);
     return c.st;
 }
+
+#else /* EF_NO_SVG: a build without expat (WITH_SVG=0, e.g. the 32-bit bit-exact check) */
+
+ef_status ef_in_dom_parse(ef_in_dom *dom, const char *name, const char *data, size_t len, ef_error *err)
+{
+    (void)data;
+    (void)len;
+    memset(dom, 0, sizeof *dom);
+    return ef_error_set(err, EF_ERR_UNSUPPORTED, name, 0, 0, "this edgeflag was built without SVG support (WITH_SVG=0)");
+}
+
+#endif /* EF_NO_SVG */
 
 void ef_in_dom_free(ef_in_dom *dom)
 {
