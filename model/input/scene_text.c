@@ -136,7 +136,8 @@ ef_status ef_scene_load_text(const char *name, const char *data, size_t len, con
         const char *next = eol ? eol + 1 : end;
         if (!eol) eol = end;
         if (eol > p && eol[-1] == '\r') eol--;                 /* CRLF */
-        const char *hash = memchr(p, '#', (size_t)(eol - p));
+        /* eol >= p always; the explicit guard keeps gcc -O3's bounds analysis quiet. */
+        const char *hash = eol > p ? memchr(p, '#', (size_t)(eol - p)) : NULL;
         if (hash) eol = hash;
 
         const char *cur = p, *tok;

@@ -196,7 +196,7 @@ static ef_status group(path_state *ps, char c, bool relative, size_t at)
         return builder_status(ps, at, ef_in_build_quad(ps->b, p, ps->err));
     }
     case 'A': {
-        bool large, sweep;
+        bool large = false, sweep = false;
         if ((st = number(ps, &v[0])) || (st = sep_number(ps, &v[1])) || (st = sep_number(ps, &v[2])) ||
             (st = flag(ps, &large)) || (st = flag(ps, &sweep)) || (st = sep_number(ps, &v[3])) ||
             (st = sep_number(ps, &v[4])))
