@@ -18,3 +18,13 @@ $(LIB_SO): $(LIB_OBJ)
 $(LIB_PC): model/edgeflag.pc.in
 	@mkdir -p $(dir $@)
 	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|0.1.0|' $< > $@
+
+# make install [PREFIX=/usr/local] [DESTDIR=]: headers, both libraries, pkg-config file.
+.PHONY: install
+install: lib
+	install -d $(DESTDIR)$(PREFIX)/include/edgeflag $(DESTDIR)$(PREFIX)/lib/pkgconfig
+	install -m 644 model/edgeflag.h model/ef_scene.h $(DESTDIR)$(PREFIX)/include/edgeflag/
+	install -m 644 $(LIB_A) $(DESTDIR)$(PREFIX)/lib/
+	install -m 755 $(LIB_SO) $(DESTDIR)$(PREFIX)/lib/libedgeflag.so.0
+	ln -sf libedgeflag.so.0 $(DESTDIR)$(PREFIX)/lib/libedgeflag.so
+	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|0.1.0|' model/edgeflag.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/edgeflag.pc

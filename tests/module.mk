@@ -32,6 +32,7 @@ $(BUILD)/tests/tools/%: tests/tools/%.c $(LIB_A)
 	$(CC) $(CPPFLAGS) $(CFLAGS_ALL) $< -o $@ $(LDFLAGS_ALL) $(LIB_A) $(EXPAT_LIBS)
 
 test-build: lib cli $(UNIT_BIN) $(ORACLE_CHECK) $(ORACLE_SELFTEST) $(TOOL_BIN)
+	bash tests/install_check.sh $(BUILD)
 
 test-unit: $(UNIT_BIN)
 	@set -e; for t in $(UNIT_BIN); do echo "== $$t"; EF_SHARED=$(EF_SHARED) $$t; done
