@@ -21,7 +21,8 @@ for s in "${stages[@]}"; do
     if [ $verdict = FAIL ]; then
         tail -n 40 "$logs/$s.log" | sed 's/^/    /'
     else
-        grep -E '^(oracle|mutant|bitexact|cli|\[  PASSED  \]|[0-9]+ passed)' "$logs/$s.log" | sed 's/^/    /' | tail -n 12
+        grep -E '^(oracle|mutant|bitexact|cli|install|\[  PASSED  \]|[0-9]+ passed)' "$logs/$s.log" | grep -v ' agree$' |
+            sed 's/^/    /' | tail -n 12
     fi
 done
 echo "stages: $pass passed, $fail failed"
