@@ -36,6 +36,9 @@ ef_status ef_ctx_create(ef_ctx **out, int32_t width, int32_t height, int samples
     ctx->samples = samples;
     ctx->h = EF_DEV_ONE / samples;
     ctx->c = ctx->h / 2;
+#if defined(EF_MUTATION) && EF_MUTATION == 3
+    ctx->c = 0;   /* test builds only: samples shifted half a sub-pixel (tests/mutants.sh) */
+#endif
     const uint8_t *k = ef_pattern(samples);
     for (int s = 0; s < samples; s++)
         ctx->off[s] = EF_DEV_ONE - ctx->h * k[s] - ctx->c;   /* spec 6.1: 1 <= off <= 255 */

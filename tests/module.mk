@@ -31,7 +31,12 @@ $(BUILD)/tests/tools/%: tests/tools/%.c $(LIB_A)
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(CFLAGS_ALL) $< -o $@ $(LDFLAGS_ALL) $(LIB_A) $(EXPAT_LIBS)
 
-test-build: lib cli $(UNIT_BIN) $(ORACLE_CHECK) $(ORACLE_SELFTEST) $(TOOL_BIN)
+AREA_CHECK := $(BUILD)/tests/area_check
+$(AREA_CHECK): tests/area_check.c $(LIB_A)
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(CFLAGS_ALL) $< -o $@ $(LDFLAGS_ALL) $(LIB_A) $(EXPAT_LIBS) -lm
+
+test-build: lib cli $(UNIT_BIN) $(ORACLE_CHECK) $(ORACLE_SELFTEST) $(TOOL_BIN) $(AREA_CHECK)
 	bash tests/install_check.sh $(BUILD)
 
 test-unit: $(UNIT_BIN)
@@ -40,8 +45,9 @@ test-unit: $(UNIT_BIN)
 EF_SHARED ?= $(abspath ../shared)
 ORACLE_SCENES ?= 10000
 ORACLE_SEED ?= 20070101
-test-oracle: $(ORACLE_CHECK) $(ORACLE_SELFTEST)
+test-oracle: $(ORACLE_CHECK) $(ORACLE_SELFTEST) $(AREA_CHECK)
 	$(ORACLE_SELFTEST)
+	$(AREA_CHECK)
 	$(ORACLE_CHECK) --shared $(EF_SHARED)/data/svg --random $(ORACLE_SCENES) --seed $(ORACLE_SEED)
 
 test-mutants:
