@@ -2,7 +2,9 @@
  * composite.c - compositing block (docs/spec.md section 8): premultiplied
  * source-over of a solid colour onto RGBA8, driven by the filler's spans.
  * A solid span of an opaque colour is a plain store (the blend reduces to
- * d' = P exactly, since mul(d, 255) = d); everything else blends per pixel.
+ * d' = P exactly, since mul(d, 255) = d); everything else blends per pixel,
+ * four channels at once in 16-bit lanes (ef_blend_span, internal.h, which
+ * the fillers inline so that no span goes through a function pointer).
  */
 #include <stdlib.h>
 #include <string.h>
@@ -29,48 +31,25 @@ void ef_image_free(ef_image *img)
     memset(img, 0, sizeof *img);
 }
 
-typedef struct blend_job {
-    ef_image *img;
-    int samples;
-    uint8_t p[4];            /* premultiplied colour, alpha last */
-    uint32_t solid;          /* P packed in memory order, for opaque solid spans */
-    uint32_t full;           /* the full mask 2^N - 1 */
-} blend_job;
-
-static void blend_span(void *user, int32_t y, int32_t x, int32_t len, uint32_t mask)
-{
-    blend_job *j = user;
-    uint8_t *d = j->img->px + (size_t)y * j->img->stride + (size_t)x * 4;
-    if (mask == j->full && j->p[3] == 255) {
-        for (int32_t i = 0; i < len; i++, d += 4)
-            memcpy(d, &j->solid, 4);
-        return;
-    }
-    uint32_t cov = ef_coverage_alpha(mask, j->samples);
-    uint8_t s[4];
-    for (int ch = 0; ch < 4; ch++)
-        s[ch] = ef_mul255(j->p[ch], cov);
-    uint32_t sa = s[3];
-    for (int32_t i = 0; i < len; i++, d += 4) {
-        for (int ch = 0; ch < 4; ch++)
-            d[ch] = (uint8_t)(d[ch] + s[ch] - ef_mul255(d[ch], sa));
-    }
-}
-
 ef_status ef_fill(ef_ctx *ctx, ef_image *img, const ef_polygon *poly, ef_rule rule, ef_rgba8 color)
 {
     if (!ctx || !img || img->width != ctx->width || img->height != ctx->height)
         return EF_ERR_ARG;
-    blend_job j;
-    j.img = img;
-    j.samples = ctx->samples;
-    j.p[0] = ef_mul255(color.r, color.a);
-    j.p[1] = ef_mul255(color.g, color.a);
-    j.p[2] = ef_mul255(color.b, color.a);
-    j.p[3] = color.a;
-    memcpy(&j.solid, j.p, 4);
-    j.full = ctx->samples == 32 ? UINT32_MAX : (UINT32_C(1) << ctx->samples) - 1;
+    ef_blend b;
+    uint8_t p[4] = { ef_mul255(color.r, color.a), ef_mul255(color.g, color.a), ef_mul255(color.b, color.a), color.a };
+    memcpy(&b.solid, p, 4);
+    for (int i = 0; i < 8; i++)
+        b.solid8[i] = b.solid;
+    b.px = img->px;
+    b.stride = img->stride;
+    b.p4 = ef_spread4(b.solid);
+    b.a = color.a;
+    b.samples = ctx->samples;
+    b.full = ctx->samples == 32 ? UINT32_MAX : (UINT32_C(1) << ctx->samples) - 1;
+    b.alpha8 = ef_alpha_of_mask8();
+    b.alpha_n = ef_alpha_of_count(ctx->samples);
     /* A transparent colour changes no pixel, but it is still rasterized so that
-     * the diagnostics (and later the vectors) see every shape. */
-    return ef_rasterize(ctx, poly, rule, blend_span, &j);
+     * the diagnostics (and later the vectors) see every shape.  The fillers
+     * composite each span as they close it (ef_blend_span in internal.h). */
+    return ef_rasterize_to(ctx, poly, rule, NULL, NULL, &b);
 }

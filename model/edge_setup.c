@@ -32,63 +32,54 @@ static ef_status reserve_edges(ef_ctx *ctx, uint32_t need)
     return EF_OK;
 }
 
-static int coord_ok(ef_point p)
+/* |x|, |y| < 2^23, as unsigned compares (wrapping is defined). */
+static inline int coord_bad(ef_point p)
 {
-    return p.x > -EF_COORD_LIMIT && p.x < EF_COORD_LIMIT && p.y > -EF_COORD_LIMIT && p.y < EF_COORD_LIMIT;
+    const uint32_t lim = 2u * (EF_COORD_LIMIT - 1);
+    return ((uint32_t)p.x + (EF_COORD_LIMIT - 1) > lim) | ((uint32_t)p.y + (EF_COORD_LIMIT - 1) > lim);
 }
 
-/* Spec 5 steps 2-6 for one edge a -> b (not horizontal). */
-static void setup_edge(ef_ctx *ctx, ef_point a, ef_point b, int32_t *row_min, int32_t *row_max)
+/* floor(v / 2^sh) for |v| < 2^24, 0 <= sh <= 5, without `>>` on a negative
+ * value: biased by 2^25 (a multiple of 2^sh) into the unsigned range. */
+static inline int32_t floor_shr(int32_t v, unsigned sh)
 {
-    const int64_t h = ctx->h, c = ctx->c;
-    int32_t dir = a.y < b.y ? 1 : -1;
-    ef_point p0 = dir > 0 ? a : b, p1 = dir > 0 ? b : a;
+    return (int32_t)(((uint32_t)v + (UINT32_C(1) << 25)) >> sh) - (int32_t)((UINT32_C(1) << 25) >> sh);
+}
 
-    int64_t r0 = ef_ceildiv_i64((int64_t)p0.y - c, h);
-    int64_t r1 = ef_ceildiv_i64((int64_t)p1.y - c, h) - 1;
+/* Spec 5 steps 2-4 and 6 for one edge a -> b (not horizontal).  h = 256/N is
+ * a power of two (2^sh), so the ceilings of step 3 are shifts.  Step 5 (the
+ * DDA's divisions) is ef_dda_start, run by the plotter at the edge's first
+ * row. */
+static inline void setup_edge(ef_ctx *ctx, ef_point a, ef_point b, unsigned sh, int32_t last_row,
+                              int32_t *row_min, int32_t *row_max)
+{
+    const int32_t h = ctx->h, c = ctx->c;
+    const int down = a.y < b.y;
+    const ef_point p0 = down ? a : b, p1 = down ? b : a;
+    int32_t r0 = floor_shr(p0.y - c + h - 1, sh);         /* ceil((Y0 - c) / h) */
+    int32_t r1 = floor_shr(p1.y - c - 1, sh);             /* ceil((Y1 - c) / h) - 1 */
     if (r0 < 0)
-        r0 = 0;                                        /* top clip: start inside */
-    int64_t last_row = (int64_t)ctx->samples * ctx->height - 1;
+        r0 = 0;                                            /* top clip: start inside */
     if (r1 > last_row)
-        r1 = last_row;                                 /* bottom clip */
+        r1 = last_row;                                     /* bottom clip */
     if (r0 > r1) {
         ctx->diag.edges_dropped++;
         return;
     }
-
-    int64_t dy = (int64_t)p1.y - p0.y;                 /* 1 .. 2^24 - 1 */
-    int64_t dx = (int64_t)p1.x - p0.x;                 /* |dx| < 2^24 */
-    int64_t yr0 = h * r0 + c;
-    /* |A| < 2^23 * 2^24 + 2^24 * 2^24 < 2^49: exact in int64. */
-    int64_t A = (int64_t)p0.x * dy + (yr0 - p0.y) * dx - 1;
-    int64_t x, e, qs, rs;
-    ef_divmod_floor_i64(A, dy, &x, &e);
-    /* |h*dx| < 2^29 and dy < 2^24: the step fits 32-bit division, which is
-     * several times cheaper than 64-bit on most cores.  Same floor rule. */
-    int32_t step = (int32_t)(h * dx), dy32 = (int32_t)dy;
-    int32_t q32 = step / dy32, r32 = step % dy32;
-    if (r32 < 0) {
-        q32 -= 1;
-        r32 += dy32;
-    }
-    qs = q32;
-    rs = r32;
-
     uint32_t i = ctx->nedges++;
     ef_edge *E = &ctx->edges[i];
-    E->x = (int32_t)x;
-    E->e = (int32_t)e;
-    E->qs = (int32_t)qs;
-    E->rs = (int32_t)rs;
-    E->dy = (int32_t)dy;
-    E->r = (int32_t)r0;
-    E->r1 = (int32_t)r1;
-    E->dir = dir;
-    int32_t slot = (int32_t)(r0 / ctx->samples);       /* r0 >= 0 here */
+    E->x0 = p0.x;
+    E->y0 = p0.y;
+    E->dx = p1.x - p0.x;                                   /* |dx| < 2^24 */
+    E->dy = p1.y - p0.y;                                   /* 1 .. 2^24 - 1 */
+    E->r0 = r0;
+    E->r1 = r1;
+    E->dir = down ? 1 : -1;
+    /* Pixel rows of the first and last sample rows: N = 2^(8 - sh), r0 >= 0. */
+    int32_t slot = r0 >> (8 - sh), last = r1 >> (8 - sh);
     ef_et_insert(ctx, i, slot);
     if (slot < *row_min)
         *row_min = slot;
-    int32_t last = (int32_t)(r1 / ctx->samples);
     if (last > *row_max)
         *row_max = last;
 }
@@ -104,24 +95,46 @@ ef_status ef_edges_setup(ef_ctx *ctx, const ef_polygon *poly, int32_t *row_min, 
     ef_status st = reserve_edges(ctx, (uint32_t)total);
     if (st != EF_OK)
         return st;
-    /* Validate everything before touching the edge table, so an error leaves
-     * no half-built state behind. */
-    for (uint32_t k = poly->ncontours ? poly->start[0] : 0; k < (poly->ncontours ? poly->start[poly->ncontours] : 0); k++) {
-        if (!coord_ok(poly->pts[k]))
-            return EF_ERR_ARG;
-    }
-    for (uint32_t ci = 0; ci < poly->ncontours; ci++) {
+    /* Reverse input order: the edge table prepends, so its lists (and the
+     * AET) read in input order (edge_table.c).  Every point is checked once
+     * (as the start of its edge); a bad one undoes what was built, so an
+     * error leaves no state behind (and no diagnostic counted). */
+    const ef_diag diag0 = ctx->diag;
+    const unsigned sh = ctx->samples == 8 ? 5 : ctx->samples == 16 ? 4 : 3;   /* h = 2^sh */
+    const int32_t last_row = ctx->samples * ctx->height - 1;
+    int bad = 0;
+    for (uint32_t ci = poly->ncontours; ci-- > 0 && !bad;) {
         uint32_t b = poly->start[ci], n = poly->start[ci + 1] - b;
         const ef_point *pts = poly->pts + b;
-        for (uint32_t k = 0; k < n; k++) {
-            ef_point a = pts[k], bb = pts[k + 1 == n ? 0 : k + 1];
-            ctx->diag.edges_in++;
-            if (a.y == bb.y) {
-                ctx->diag.edges_dropped++;             /* horizontal: crosses no row */
-                continue;
-            }
-            setup_edge(ctx, a, bb, row_min, row_max);
+        ctx->diag.edges_in += n;
+        if (n == 0)
+            continue;
+        ef_point bb = pts[0];                      /* edge k runs pts[k] -> pts[k+1 mod n] */
+        if (coord_bad(bb)) {
+            bad = 1;
+            break;
         }
+        for (uint32_t k = n; k-- > 0;) {
+            ef_point a = pts[k];
+            if (coord_bad(a)) {
+                bad = 1;
+                break;
+            }
+            if (a.y == bb.y)
+                ctx->diag.edges_dropped++;             /* horizontal: crosses no row */
+            else
+                setup_edge(ctx, a, bb, sh, last_row, row_min, row_max);
+            bb = a;
+        }
+    }
+    if (bad) {
+        for (int32_t j = *row_min; j <= *row_max; j++)
+            ctx->slot[j] = -1;
+        ctx->nedges = 0;
+        ctx->diag = diag0;
+        *row_min = INT32_MAX;
+        *row_max = -1;
+        return EF_ERR_ARG;
     }
     return EF_OK;
 }

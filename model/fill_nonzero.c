@@ -6,9 +6,16 @@
  * adding 0x7F is set exactly when the counter is non-zero, and those pad bits,
  * gathered in sample order, are the coverage mask.  The heavy part runs only
  * at marked, non-zero cells (mask tracking, through the occupancy map as in
- * fill_evenodd.c); cells are cleared as they are read.
+ * fill_evenodd.c); cells are cleared as they are read.  Spans go to the
+ * caller's callback or straight to the compositor (ef_fill), as there.
  */
 #include "internal.h"
+
+#if defined(__GNUC__)
+#define EF_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define EF_ALWAYS_INLINE inline
+#endif
 
 /* Pad bits (bit 8L+7) of a word -> bits 0..7 in lane order: the multiply moves
  * bit 8L to bit 56+L with no carries into the top byte (checked exhaustively
@@ -23,8 +30,9 @@ static inline uint32_t lanes_nonzero(uint64_t acc)
     return gather_pads(((acc & EF_LANES7) + EF_LANES7) & EF_PADS);
 }
 
-static inline void fill_nonzero(ef_ctx *ctx, int32_t y, int32_t xmin, int32_t xmax, ef_span_fn span, void *user,
-                                const int words, const int check_overflow)
+static EF_ALWAYS_INLINE void fill_nonzero(ef_ctx *ctx, int32_t y, int32_t xmin, int32_t xmax, ef_span_fn span,
+                                          void *user, const ef_blend *blend, const int direct, const int words,
+                                          const int check_overflow)
 {
     uint64_t *occ = ctx->occ;
     const int32_t W = ctx->width;
@@ -46,8 +54,13 @@ static inline void fill_nonzero(ef_ctx *ctx, int32_t y, int32_t xmin, int32_t xm
                 any |= cell[w];
             if (any == 0)
                 continue;                  /* contributions that cancelled: mask unchanged */
-            if (mask && p > start)
-                span(user, y, start, (p < W ? p : W) - start, mask);
+            if (mask && p > start) {
+                int32_t len = (p < W ? p : W) - start;
+                if (direct)
+                    ef_blend_span(blend, y, start, len, mask);
+                else
+                    span(user, y, start, len, mask);
+            }
             mask = 0;
             for (int w = 0; w < words; w++) {
                 uint64_t a = acc[w], b = cell[w];
@@ -55,7 +68,8 @@ static inline void fill_nonzero(ef_ctx *ctx, int32_t y, int32_t xmin, int32_t xm
                 if (check_overflow) {
                     /* Signed 7-bit overflow per lane: operands agree in sign, result not. */
                     uint64_t ov = ~(a ^ b) & (a ^ sum) & EF_SIGN7;
-                    overflows += ef_popcount32(gather_pads(ov << 1));  /* bit 8L+6 -> 8L+7 */
+                    if (ov)
+                        overflows += ef_popcount32(gather_pads(ov << 1));  /* bit 8L+6 -> 8L+7 */
                 }
                 acc[w] = sum;
                 cell[w] = 0;                   /* clear-on-read */
@@ -67,18 +81,33 @@ static inline void fill_nonzero(ef_ctx *ctx, int32_t y, int32_t xmin, int32_t xm
     ctx->diag.winding_overflows += overflows;
     if (mask && start < W) {
         int32_t end = xmax + 1 < W ? xmax + 1 : W;
-        span(user, y, start, end - start, mask);
+        if (direct)
+            ef_blend_span(blend, y, start, end - start, mask);
+        else
+            span(user, y, start, end - start, mask);
     }
 }
 
-void ef_fill_nonzero(ef_ctx *ctx, int32_t y, int32_t xmin, int32_t xmax, ef_span_fn span, void *user)
+#define FILL_NZ(words, check)                                                  \
+    do {                                                                       \
+        if (blend)                                                             \
+            fill_nonzero(ctx, y, xmin, xmax, NULL, NULL, blend, 1, words, check); \
+        else                                                                   \
+            fill_nonzero(ctx, y, xmin, xmax, span, user, NULL, 0, words, check);  \
+    } while (0)
+
+void ef_fill_nonzero(ef_ctx *ctx, int32_t y, int32_t xmin, int32_t xmax, ef_span_fn span, void *user,
+                     const ef_blend *blend)
 {
     /* Same reasoning as the plotter: with at most 63 active edges no running
      * counter can leave [-64, 63], so the check is skipped there. */
     const int check = ctx->naet_row >= 64;
-    switch (ctx->samples) {
-    case 8: fill_nonzero(ctx, y, xmin, xmax, span, user, 1, check); break;
-    case 16: fill_nonzero(ctx, y, xmin, xmax, span, user, 2, check); break;
-    default: fill_nonzero(ctx, y, xmin, xmax, span, user, 4, check); break;
+    switch (ctx->samples * 2 + check) {
+    case 16: FILL_NZ(1, 0); break;
+    case 17: FILL_NZ(1, 1); break;
+    case 32: FILL_NZ(2, 0); break;
+    case 33: FILL_NZ(2, 1); break;
+    case 64: FILL_NZ(4, 0); break;
+    default: FILL_NZ(4, 1); break;
     }
 }

@@ -9,10 +9,14 @@
  *   fill_nonzero.c packed 7-bit winding accumulation with mask tracking (7.2)
  *   rasterize.c    the scanline loop that runs the blocks in order
  *   coverage.c     popcount -> alpha (7.3)
- *   composite.c    premultiplied source-over onto RGBA8 (8)
+ *   composite.c    premultiplied source-over onto RGBA8 (8); its per-span
+ *                  arithmetic is inline below so that the fillers can
+ *                  composite their spans directly (ef_fill's fast path)
  */
 #ifndef EF_INTERNAL_H
 #define EF_INTERNAL_H
+
+#include <string.h>
 
 #include "edgeflag.h"
 #include "ef_fixed.h"
@@ -22,19 +26,36 @@
 #define EF_PADS UINT64_C(0x8080808080808080)
 #define EF_SIGN7 UINT64_C(0x4040404040404040)
 
-/* One edge's DDA record (spec 5, step 5-6).  Bit budgets: |x| <= 2^23 + 2^29
- * after the final step, |qs| < 2^29, 0 <= e, rs < dy < 2^24: all fit int32. */
+/* One edge (spec 5).  Edge setup fills the first group and links the record
+ * into the edge table; the DDA group (step 5) is computed when the plotter
+ * reaches the edge's first pixel row (ef_dda_start), which needs the same
+ * inputs and gives the same values, but only for edges that are drawn and
+ * without storing and reloading them for the majority of edges, which lie
+ * within one pixel row.  Bit budgets: |x| <= 2^23 + 2^29 after the final step,
+ * |qs| < 2^29, 0 <= e, rs < dy < 2^24: all fit int32. */
 typedef struct ef_edge {
-    int32_t x;      /* Q16.8: ceil(exact crossing of row r) - 1 */
+    /* DDA state (spec 5 step 5), hot in the plotter */
+    int32_t x;      /* Q16.8: ceil(exact crossing of the next row) - 1 */
     int32_t e;      /* error term, 0 <= e < dy */
     int32_t qs;     /* floor(h*dX / dY) */
     int32_t rs;     /* (h*dX) mod dY */
     int32_t dy;     /* Y1 - Y0 > 0 */
-    int32_t r;      /* next sample row to plot */
     int32_t r1;     /* last sample row (inclusive, clipped) */
     int32_t dir;    /* +1 downward, -1 upward */
+    int32_t mode;   /* plotter path, EF_PLOT_* */
+    /* from edge setup (steps 2-4, 6) */
+    int32_t x0, y0; /* upper end point */
+    int32_t dx;     /* X1 - X0 */
+    int32_t r0;     /* first sample row (clipped) */
     int32_t next;   /* edge-table slot list link, -1 ends */
+    int32_t count;  /* edges in the slot list from this one on */
 } ef_edge;
+
+/* Plotter paths (plotter.c).  CLAMP: the general one.  The others need
+ * 1 <= X0, X1 <= 256*W: the DDA's x = ceil(x_r) - 1 then stays in
+ * [0, 256W - 1], so q = (x + off) >> 8 lies in [0, W] and the spec 6.1 clamp
+ * cannot act.  STEEP additionally moves less than 6 px over any pixel row. */
+enum { EF_PLOT_CLAMP = 0, EF_PLOT_INSIDE = 1, EF_PLOT_STEEP = 2 };
 _Static_assert((int64_t)32 * ((int64_t)1 << 24) < ((int64_t)1 << 30), "h*dX fits 30 bits: qs fits int32");
 
 struct ef_ctx {
@@ -59,28 +80,116 @@ struct ef_ctx {
     ef_diag diag;
 };
 
-/* edge_setup.c: appends the edges of poly to ctx->edges and links them into
- * the edge table.  Returns EF_ERR_ARG for out-of-range vertices, EF_ERR_LIMIT
- * past the edge budget. On return row_min, row_max bound the pixel rows
- * that hold edges (row_min > row_max when none). */
+/* edge_setup.c: appends the edges of poly to ctx->edges (steps 1-4) and
+ * links them into the edge table (step 6).  Returns EF_ERR_ARG for
+ * out-of-range vertices (leaving no state behind), EF_ERR_LIMIT past the edge
+ * budget.  On return row_min, row_max bound the pixel rows that hold edges
+ * (row_min > row_max when none). */
 ef_status ef_edges_setup(ef_ctx *ctx, const ef_polygon *poly, int32_t *row_min, int32_t *row_max);
+
+/* Spec 5 step 5, exact: the DDA of an edge set up by ef_edges_setup, at its
+ * first sample row r0, and its plotter path.  h = 256/N, c = h/2.
+ * x = floor(A / dY) = X0 + floor(B / dY) with B = (Y_r0 - Y0)*dX - 1, and
+ * Y_r0 - Y0 < h unless the top clip moved r0, so B fits 32 bits (|B| < 2^30)
+ * and the division is a 32-bit one except for edges clipped at the top. */
+static inline void ef_dda_start(ef_edge *E, int32_t h, int32_t c, int32_t w256, int last_s)
+{
+    const int32_t dy = E->dy, dx = E->dx;
+    const int32_t t = h * E->r0 + c - E->y0;          /* Y_r0 - Y0 >= 0 */
+    if (t <= 63) {
+        /* C division truncates; floor it without a branch (the sign of B is
+         * data and would mispredict): remainder r < 0 -> q - 1, r + dy. */
+        const int32_t B = t * dx - 1, q = B / dy, r = B % dy, neg = -(int32_t)(r < 0);
+        E->x = E->x0 + q + neg;
+        E->e = r + (dy & neg);
+    } else {
+        /* |A| < 2^23 * 2^24 + 2^24 * 2^24 < 2^49: exact in int64. */
+        int64_t A = (int64_t)E->x0 * dy + (int64_t)t * dx - 1, q, r;
+        ef_divmod_floor_i64(A, dy, &q, &r);
+        E->x = (int32_t)q;
+        E->e = (int32_t)r;
+    }
+    /* |h*dx| < 2^29 and dy < 2^24: 32-bit division, same floor rule.  (An
+     * edge crossing one sample row never steps; computing its step anyway
+     * costs less than the branch.) */
+    const int32_t step = h * dx, q2 = step / dy, r2 = step % dy, neg2 = -(int32_t)(r2 < 0);
+    const int32_t qs = q2 + neg2, rs = r2 + (dy & neg2);
+    E->qs = qs;
+    E->rs = rs;
+    /* Branch-free (edge orientation is data): end points' x range, then the
+     * path: 0 CLAMP, 1 INSIDE, 2 STEEP (|x step| <= |qs| + 1, over at most
+     * last_s steps within one row). */
+    const int32_t neg3 = -(int32_t)(dx < 0);
+    const int32_t xlo = E->x0 + (dx & neg3), xhi = E->x0 + (dx & ~neg3);
+    const int32_t inside = (xlo >= 1) & (xhi <= w256);
+    const uint32_t step_abs = qs >= 0 ? (uint32_t)qs + 1u : (uint32_t)-qs;
+    const int32_t steep = (uint64_t)step_abs * (uint32_t)last_s < 6u * EF_DEV_ONE;
+    E->mode = inside * (EF_PLOT_INSIDE + steep);
+}
+_Static_assert((int64_t)63 * ((int64_t)1 << 24) < ((int64_t)1 << 30), "t*dX fits 31 bits when t <= 63");
 
 /* edge_table.c */
 void ef_et_reset(ef_ctx *ctx);
-void ef_et_insert(ef_ctx *ctx, uint32_t edge_index, int32_t slot);
-/* Moves slot `row`'s edges to the active edge table. */
-void ef_et_activate(ef_ctx *ctx, int32_t row);
-/* Drops active edges that have plotted their last row. */
-void ef_aet_retire(ef_ctx *ctx);
+/* Prepends to the slot's list: edge setup inserts a polygon's edges in
+ * reverse input order, so every list reads in input order. */
+static inline void ef_et_insert(ef_ctx *ctx, uint32_t edge_index, int32_t slot)
+{
+    ef_edge *E = &ctx->edges[edge_index];
+    const int32_t head = ctx->slot[slot], empty = -(int32_t)(head < 0);
+    E->next = head;
+    /* count = 1 + the old head's count (0 for an empty slot), branch-free:
+     * an empty slot reads this record's own count, just set to 0. */
+    E->count = 0;
+    E->count = 1 + (ctx->edges[(head & ~empty) | ((int32_t)edge_index & empty)].count & ~empty);
+    ctx->slot[slot] = (int32_t)edge_index;
+}
+/* Takes slot `row`'s list (first edge, -1 if none; *n edges) out of the edge
+ * table: the plotter activates them, in input order, after the edges already
+ * active (the AET order of spec 6). */
+int32_t ef_et_take(ef_ctx *ctx, int32_t row, uint32_t *n);
 
-/* plotter.c: plots every active edge's sample rows of pixel row `row`.
- * Widens xmin, xmax to the cells it marked (edge tracking). */
-void ef_plot_evenodd(ef_ctx *ctx, int32_t row, int32_t *xmin, int32_t *xmax);
-void ef_plot_nonzero(ef_ctx *ctx, int32_t row, int32_t *xmin, int32_t *xmax);
+/* plotter.c: plots pixel row `row`: first the edges active from earlier rows
+ * (AET order), then the row's new edges (the list `head` taken from the edge
+ * table, in input order, each started with ef_dda_start), every sample row
+ * of each inside this pixel row.  Edges that continue below stay in (or join)
+ * the AET in that order; the others leave it (spec 6's activation and
+ * retirement, done in the same pass).  Widens xmin, xmax to the cells it
+ * marked (edge tracking).  ctx->naet_row must hold the number of edges plotted
+ * in this row (old + new). */
+void ef_plot_evenodd(ef_ctx *ctx, int32_t row, int32_t head, int32_t *xmin, int32_t *xmax);
+void ef_plot_nonzero(ef_ctx *ctx, int32_t row, int32_t head, int32_t *xmin, int32_t *xmax);
 
-/* fill_*.c: scans cells xmin..xmax, clears them, reports spans of row y. */
-void ef_fill_evenodd(ef_ctx *ctx, int32_t y, int32_t xmin, int32_t xmax, ef_span_fn span, void *user);
-void ef_fill_nonzero(ef_ctx *ctx, int32_t y, int32_t xmin, int32_t xmax, ef_span_fn span, void *user);
+/* composite.c: a shape's colour, premultiplied and prepared for the span
+ * compositor below (docs/spec.md section 8). */
+typedef struct ef_blend {
+    uint8_t *px;            /* the image */
+    size_t stride;
+    uint64_t p4;            /* premultiplied colour P, 4 lanes (ef_spread4) */
+    uint32_t solid;         /* P packed in memory order */
+    uint32_t solid8[8];     /* eight copies: solid fills store 32 bytes at a time */
+    uint32_t a;             /* colour alpha */
+    uint32_t full;          /* the full mask 2^N - 1 */
+    int samples;
+    const uint8_t *alpha8;  /* N = 8: coverage alpha of every mask */
+    const uint8_t *alpha_n; /* alpha by number of covered samples, 0..N */
+} ef_blend;
+
+/* coverage.c: spec 7.3 as tables: alpha of each 8-bit mask (N = 8), and
+ * alpha by number of covered samples (0..N) for N = 8, 16, 32. */
+const uint8_t *ef_alpha_of_mask8(void);
+const uint8_t *ef_alpha_of_count(int samples);
+
+/* rasterize.c: ef_rasterize with either a span callback or, when blend is not
+ * NULL, spans composited directly by the fillers (same spans, same pixels). */
+ef_status ef_rasterize_to(ef_ctx *ctx, const ef_polygon *poly, ef_rule rule, ef_span_fn span, void *user,
+                          const ef_blend *blend);
+
+/* fill_*.c: scans cells xmin..xmax, clears them, reports spans of row y to
+ * span(user, ...) or, when blend is not NULL, composites them. */
+void ef_fill_evenodd(ef_ctx *ctx, int32_t y, int32_t xmin, int32_t xmax, ef_span_fn span, void *user,
+                     const ef_blend *blend);
+void ef_fill_nonzero(ef_ctx *ctx, int32_t y, int32_t xmin, int32_t xmax, ef_span_fn span, void *user,
+                     const ef_blend *blend);
 
 /* Index of the lowest set bit of v != 0. */
 static inline unsigned ef_ctz64(uint64_t v)
@@ -104,6 +213,83 @@ static inline unsigned ef_popcount32(uint32_t v)
     v = (v & 0x33333333u) + ((v >> 2) & 0x33333333u);
     v = (v + (v >> 4)) & 0x0F0F0F0Fu;
     return (v * 0x01010101u) >> 24;
+}
+
+/* ---------------------------------------------------------------------------
+ * Compositing four channels at once (docs/spec.md section 8, bit for bit).
+ * A pixel's four bytes are spread into four 16-bit lanes of a uint64 (byte
+ * order is irrelevant: every channel gets the same arithmetic, and the colour
+ * is spread the same way).  In each lane:
+ *   mul(v, k) = t = v*k + 128; ((t >> 8) + t) >> 8, with v, k <= 255, so
+ *   t <= 65153 and (t >> 8) + t <= 65407: no lane carries into the next;
+ *   d' = (d + s - mul(d, sa)) mod 256, where mul(d, sa) <= d (sa <= 255):
+ *   no lane borrows, d + s <= 510 fits, and the final mask is the uint8 wrap.
+ * ------------------------------------------------------------------------ */
+#define EF_LANE8X4 UINT64_C(0x00FF00FF00FF00FF)
+
+/* bytes b0 b1 b2 b3 (memory order) -> lanes (b0, b2, b1, b3) */
+static inline uint64_t ef_spread4(uint32_t v)
+{
+    return (uint64_t)(v & 0x00FF00FFu) | (uint64_t)((v >> 8) & 0x00FF00FFu) << 32;
+}
+static inline uint32_t ef_pack4(uint64_t v)
+{
+    return (uint32_t)v | (uint32_t)(v >> 32) << 8;
+}
+/* mul(v, k) of docs/spec.md 8 in each lane; lanes of v and k <= 255. */
+static inline uint64_t ef_mul255x4(uint64_t v, uint32_t k)
+{
+    uint64_t t = v * k + UINT64_C(0x0080008000800080);
+    return ((t + ((t >> 8) & EF_LANE8X4)) >> 8) & EF_LANE8X4;
+}
+
+static inline uint32_t ef_load32(const uint8_t *p)
+{
+    uint32_t v;
+    memcpy(&v, p, 4);
+    return v;
+}
+
+/* Composites the span [x, x+len) of row y with coverage mask `mask` (spec
+ * 7.3 + 8): one call per filler span, inlined into the fillers. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void ef_blend_span(const ef_blend *b, int32_t y, int32_t x, int32_t len, uint32_t mask)
+{
+    uint8_t *d = b->px + (size_t)y * b->stride + (size_t)x * 4;
+    uint64_t s4;
+    uint32_t sa;
+    if (mask == b->full) {
+        if (b->a == 255) {
+            /* d' = d + P - mul(d, 255) = P: a plain fill, two pixels a store */
+            uint64_t two = (uint64_t)b->solid * UINT64_C(0x0000000100000001);
+            if (len >= 16) {
+                uint32_t pat[8];             /* a local copy: cannot alias d */
+                memcpy(pat, b->solid8, sizeof pat);
+                for (; len >= 16; len -= 16, d += 64) {
+                    memcpy(d, pat, 32);      /* compilers emit wide stores */
+                    memcpy(d + 32, pat, 32);
+                }
+            }
+            for (; len >= 2; len -= 2, d += 8)
+                memcpy(d, &two, 8);
+            if (len)
+                memcpy(d, &b->solid, 4);
+            return;
+        }
+        s4 = b->p4;         /* mul(P, 255) = P */
+        sa = b->a;
+    } else {
+        uint32_t cov = b->samples == 8 ? b->alpha8[mask] : b->alpha_n[ef_popcount32(mask)];
+        s4 = ef_mul255x4(b->p4, cov);
+        sa = (uint32_t)(s4 >> 48);   /* the alpha byte is lane 3: mul(a, cov) */
+    }
+    for (int32_t i = 0; i < len; i++, d += 4) {
+        uint64_t dd = ef_spread4(ef_load32(d));
+        uint32_t v = ef_pack4((dd + s4 - ef_mul255x4(dd, sa)) & EF_LANE8X4);
+        memcpy(d, &v, 4);
+    }
 }
 
 #endif /* EF_INTERNAL_H */
