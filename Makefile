@@ -43,8 +43,10 @@ $(BUILD)/%.o: %.c
 
 include fixed/module.mk
 include model/module.mk
+include rtl_vectors/module.mk
 include cli/module.mk
 include tests/module.mk
+include bench/module.mk
 
 deps:
 	@bash tools/install-deps.sh

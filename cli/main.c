@@ -18,6 +18,7 @@ typedef struct command {
 static const command commands[] = {
     { "render", ef_cli_render, "rasterize an SVG or .scene file to PNG, PAM or PGM" },
     { "patterns", ef_cli_patterns, "search and print the n-rooks sample patterns" },
+    { "gen", ef_cli_gen, "write seeded regression scenes (directed corner cases, random)" },
 };
 #define NCOMMANDS (sizeof commands / sizeof commands[0])
 

@@ -1,5 +1,5 @@
 CLI_SRC := $(wildcard cli/*.c)
-CLI_OBJ := $(CLI_SRC:%.c=$(BUILD)/%.o)
+CLI_OBJ := $(CLI_SRC:%.c=$(BUILD)/%.o) $(RTLV_OBJ)
 EDGEFLAG := $(BUILD)/edgeflag
 
 cli: $(EDGEFLAG)

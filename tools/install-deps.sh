@@ -1,31 +1,51 @@
 #!/usr/bin/env bash
 # Installs what edgeflag needs from Debian 12's packages, only when missing.
 #   tools/install-deps.sh          build + demo: compiler, expat, libpng
-#   tools/install-deps.sh test     + cmocka, clang, 32-bit multilib (the test suite)
+#   tools/install-deps.sh test     + cmocka, clang, 32-bit multilib (the test suite), and the
+#                                  aarch64/s390x cross C libraries and qemu-user (best effort)
+#   tools/install-deps.sh portability   the same (what `make portability` needs)
+#   tools/install-deps.sh bench    + the peers and plotting for `make bench` (bench/README.md)
 set -euo pipefail
 
 pkgs=(gcc make pkg-config libexpat1-dev libpng-dev)
-if [ "${1:-}" = test ]; then
+optional=()
+if [ "${1:-}" = test ] || [ "${1:-}" = portability ]; then
     pkgs+=(libcmocka-dev clang gcc-multilib libclang-rt-14-dev)
+    # `make portability` builds static aarch64 and s390x (big-endian) programs
+    # with clang --target and runs them under qemu-user.  gcc-aarch64-linux-gnu
+    # cannot be installed beside gcc-multilib in Debian 12; these can.  Best
+    # effort: without them that stage skips those targets and says why.
+    optional+=(qemu-user-static libc6-dev-arm64-cross libgcc-12-dev-arm64-cross binutils-aarch64-linux-gnu
+               libc6-dev-s390x-cross libgcc-12-dev-s390x-cross binutils-s390x-linux-gnu)
+fi
+if [ "${1:-}" = bench ]; then
+    pkgs+=(g++ libagg-dev libcairo2-dev libfreetype-dev libstb-dev fonts-dejavu-core gnuplot-nox python3)
 fi
 
-missing=()
-for p in "${pkgs[@]}"; do
-    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-[ ${#missing[@]} -eq 0 ] && exit 0
+installed() { dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q "install ok installed"; }
+missing=() opt_missing=()
+for p in "${pkgs[@]}"; do installed "$p" || missing+=("$p"); done
+for p in "${optional[@]}"; do installed "$p" || opt_missing+=("$p"); done
+[ ${#missing[@]} -eq 0 ] && [ ${#opt_missing[@]} -eq 0 ] && exit 0
 
-echo "edgeflag: installing from Debian's packages: ${missing[*]}" >&2
+echo "edgeflag: installing from Debian's packages: ${missing[*]} ${opt_missing[*]}" >&2
 SUDO=
 if [ "$(id -u)" -ne 0 ]; then
     if command -v sudo >/dev/null 2>&1; then
         SUDO=sudo
     else
-        echo "edgeflag: not root and no sudo; please install: ${missing[*]}" >&2
+        echo "edgeflag: not root and no sudo; please install: ${missing[*]} ${opt_missing[*]}" >&2
+        [ ${#missing[@]} -eq 0 ] && exit 0
         exit 1
     fi
 fi
 export DEBIAN_FRONTEND=noninteractive
 # A stale or empty package list makes apt-get install fail: refresh it once.
 $SUDO apt-get update -qq
-$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+if [ ${#missing[@]} -gt 0 ]; then
+    $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+if [ ${#opt_missing[@]} -gt 0 ] &&
+   ! $SUDO apt-get install -y -qq --no-install-recommends "${opt_missing[@]}" >/dev/null; then
+    echo "edgeflag: could not install ${opt_missing[*]}; make portability will skip the foreign targets" >&2
+fi

@@ -1,0 +1,388 @@
+/*
+ * cmd_gen.c - `edgeflag gen`: writes the seeded regression scenes of
+ * rtl_vectors/ (docs/gen.md) as DIR/case_NNNNNN.scene plus an index.
+ *
+ * Order of work, so that a failure leaves as little as possible behind:
+ * the whole command line is checked first (a usage error creates nothing,
+ * not even DIR); then DIR is created and every file this run would write is
+ * looked for (without --force an existing one stops the run before anything
+ * is written); then each case is built, formatted and written atomically
+ * (atomic_file.h: a file is whole or absent); the index is written last, so
+ * its presence marks a complete run or shard.
+ */
+#include "cli.h"
+
+#include "atomic_file.h"
+#include "ef_gen.h"
+
+#include <errno.h>
+#include <inttypes.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/types.h>
+
+static const char *const CMD = "gen";
+
+static void usage(FILE *f)
+{
+    fprintf(f,
+            "usage: edgeflag gen -o DIR [--seed N] [--level 1|2] [-n K] [--shard I/N]\n"
+            "                    [--samples 8|16|32] [--force]\n"
+            "       edgeflag gen --list [--seed N] [--level 1|2] [-n K] [--shard I/N] [--samples N]\n"
+            "\n"
+            "Writes seeded regression scenes for hardware implementations: first a table of\n"
+            "directed corner cases, then random cases, as DIR/case_NNNNNN.scene (the .scene\n"
+            "format `edgeflag render` reads, vertices as exact Q16.8 decimals) and an index,\n"
+            "DIR/index.tsv (DIR/index_I_of_N.tsv for a shard).  Same options, same bytes, on\n"
+            "every machine.  See docs/gen.md.\n"
+            "\n"
+            "options:\n"
+            "  -o, --output DIR  directory to write (created if missing); files are written\n"
+            "                    atomically; existing case or index files are refused\n"
+            "  --seed N          seed of the random cases, 0 .. 2^64-1 (default %" PRIu64 ")\n"
+            "  --level L         1: the directed table and %u random cases (default);\n"
+            "                    2: more directed variants and %u random cases\n"
+            "  -n K              random cases: at least the level's count (can raise it, never\n"
+            "                    lower it); at most %u cases in all\n"
+            "  --shard I/N       write only the cases k with k mod N = I-1 (1 <= I <= N); the\n"
+            "                    N shards together are exactly the unsharded run\n"
+            "  --samples N       grid of the grid-dependent directed cases: 8, 16 or 32\n"
+            "                    (default: 16 at level 1, all three at level 2)\n"
+            "  --force           replace existing files of the same names\n"
+            "  --list            print the index on standard output instead of writing files\n"
+            "  -h, --help        show this text\n"
+            "\n"
+            "Prints one summary line on standard output.\n"
+            "exit codes: 0 ok, 2 usage, 4 a file could not be written (or exists), 70 internal\n",
+            EF_GEN_DEFAULT_SEED, EF_GEN_LEVEL1_RANDOM, EF_GEN_LEVEL2_RANDOM, EF_GEN_MAX_CASES);
+}
+
+typedef struct gen_args {
+    const char *dir;
+    ef_gen_config cfg;
+    uint32_t shard_i, shard_n;
+    int force, list;
+} gen_args;
+
+/* Strict unsigned 64-bit decimal: digits only, value <= 2^64 - 1. */
+static int parse_u64(const char *s, uint64_t *out)
+{
+    uint64_t v = 0;
+    if (!s || !*s)
+        return 0;
+    for (; *s; s++) {
+        unsigned d;
+        if (*s < '0' || *s > '9')
+            return 0;
+        d = (unsigned)(*s - '0');
+        if (v > (UINT64_MAX - d) / 10)
+            return 0;
+        v = v * 10 + d;
+    }
+    *out = v;
+    return 1;
+}
+
+/* "I/N" with 1 <= I <= N <= EF_GEN_MAX_CASES. */
+static int parse_shard(const char *s, uint32_t *i, uint32_t *n)
+{
+    char buf[16];
+    const char *slash = strchr(s, '/');
+    size_t len;
+    int32_t a, b;
+    if (!slash)
+        return 0;
+    len = (size_t)(slash - s);
+    if (len == 0 || len >= sizeof buf)
+        return 0;
+    memcpy(buf, s, len);
+    buf[len] = '\0';
+    if (!ef_cli_parse_int(buf, 1, (int32_t)EF_GEN_MAX_CASES, &a) ||
+        !ef_cli_parse_int(slash + 1, 1, (int32_t)EF_GEN_MAX_CASES, &b) || a > b)
+        return 0;
+    *i = (uint32_t)a;
+    *n = (uint32_t)b;
+    return 1;
+}
+
+/* Returns -1 when the line parsed and the command should run, else the exit code. */
+static int parse(int argc, char **argv, gen_args *a)
+{
+    int seen_seed = 0, seen_level = 0, seen_n = 0, seen_shard = 0, seen_samples = 0;
+    int32_t level = 1, samples = 0, k = 0;
+    uint64_t seed = EF_GEN_DEFAULT_SEED;
+    int i;
+
+    memset(a, 0, sizeof *a);
+    a->shard_i = a->shard_n = 1;
+    for (i = 1; i < argc; i++) {
+        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+            usage(stdout);
+            return EF_CLI_EXIT_OK;
+        }
+    }
+    for (i = 1; i < argc;) {
+        const char *arg = argv[i], *v = NULL;
+        int r;
+        if (strcmp(arg, "--force") == 0) {
+            if (a->force++)
+                return ef_cli_usage_error(CMD, "--force given twice");
+            i++;
+        } else if (strcmp(arg, "--list") == 0) {
+            if (a->list++)
+                return ef_cli_usage_error(CMD, "--list given twice");
+            i++;
+        } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "-o", &v)) != 0 ||
+                   (r = ef_cli_option_value(CMD, argc, argv, &i, "--output", &v)) != 0) {
+            if (r < 0)
+                return EF_CLI_EXIT_USAGE;
+            if (a->dir)
+                return ef_cli_usage_error(CMD, "output directory given twice");
+            if (!*v)
+                return ef_cli_usage_error(CMD, "empty output directory name");
+            a->dir = v;
+        } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "--seed", &v)) != 0) {
+            if (r < 0)
+                return EF_CLI_EXIT_USAGE;
+            if (seen_seed++)
+                return ef_cli_usage_error(CMD, "--seed given twice");
+            if (!parse_u64(v, &seed))
+                return ef_cli_usage_error(CMD, "--seed must be a decimal number 0 .. 18446744073709551615, "
+                                          "not '%s'", v);
+        } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "--level", &v)) != 0) {
+            if (r < 0)
+                return EF_CLI_EXIT_USAGE;
+            if (seen_level++)
+                return ef_cli_usage_error(CMD, "--level given twice");
+            if (!ef_cli_parse_int(v, 1, 2, &level))
+                return ef_cli_usage_error(CMD, "--level must be 1 or 2, not '%s'", v);
+        } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "-n", &v)) != 0) {
+            if (r < 0)
+                return EF_CLI_EXIT_USAGE;
+            if (seen_n++)
+                return ef_cli_usage_error(CMD, "-n given twice");
+            if (!ef_cli_parse_int(v, 0, (int32_t)EF_GEN_MAX_CASES, &k))
+                return ef_cli_usage_error(CMD, "-n must be a number of random cases up to %u, not '%s'",
+                                          EF_GEN_MAX_CASES, v);
+        } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "--shard", &v)) != 0) {
+            if (r < 0)
+                return EF_CLI_EXIT_USAGE;
+            if (seen_shard++)
+                return ef_cli_usage_error(CMD, "--shard given twice");
+            if (!parse_shard(v, &a->shard_i, &a->shard_n))
+                return ef_cli_usage_error(CMD, "--shard must be I/N with 1 <= I <= N <= %u, not '%s'",
+                                          EF_GEN_MAX_CASES, v);
+        } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "--samples", &v)) != 0) {
+            if (r < 0)
+                return EF_CLI_EXIT_USAGE;
+            if (seen_samples++)
+                return ef_cli_usage_error(CMD, "--samples given twice");
+            if (!ef_cli_parse_int(v, 1, 32, &samples) || !ef_samples_valid(samples))
+                return ef_cli_usage_error(CMD, "--samples must be 8, 16 or 32, not '%s'", v);
+        } else if (arg[0] == '-') {
+            return ef_cli_usage_error(CMD, "unknown option '%s'", arg);
+        } else {
+            return ef_cli_usage_error(CMD, "unexpected argument '%s' (the directory is given with -o)", arg);
+        }
+    }
+    if (a->list && a->dir)
+        return ef_cli_usage_error(CMD, "--list writes no files: it takes no -o");
+    if (!a->list && !a->dir)
+        return ef_cli_usage_error(CMD, "no output directory (-o DIR)");
+    if (a->list && a->force)
+        return ef_cli_usage_error(CMD, "--list writes no files: --force makes no sense with it");
+
+    ef_gen_config_init(&a->cfg, level);
+    a->cfg.seed = seed;
+    a->cfg.grid = samples;
+    if (seen_n) {
+        if ((uint32_t)k < a->cfg.nrandom)
+            return ef_cli_usage_error(CMD, "-n %" PRId32 " is below level %" PRId32 "'s %" PRIu32
+                                      " random cases: -n can raise the count, never lower it",
+                                      k, level, a->cfg.nrandom);
+        a->cfg.nrandom = (uint32_t)k;
+    }
+    if (ef_gen_config_check(&a->cfg) != EF_OK)
+        return ef_cli_usage_error(CMD, "-n %" PRId32 " makes more than %u cases (%" PRIu32 " directed)", k,
+                                  EF_GEN_MAX_CASES, ef_gen_directed_count(&a->cfg));
+    return -1;
+}
+
+/* mkdir -p: creates DIR and missing parents; an existing directory is fine
+ * (another shard may have created it a moment ago). */
+static int make_dirs(const char *dir)
+{
+    char *p = strdup(dir);
+    struct stat st;
+    size_t n;
+    if (!p)
+        return -1;
+    n = strlen(p);
+    while (n > 1 && p[n - 1] == '/')
+        p[--n] = '\0';
+    for (char *q = p + 1; ; q++) {
+        int last = *q == '\0';
+        if (*q == '/' || last) {
+            char save = *q;
+            *q = '\0';
+            if (mkdir(p, 0777) != 0 && errno != EEXIST) {
+                free(p);
+                return -1;
+            }
+            *q = save;
+        }
+        if (last)
+            break;
+    }
+    if (stat(p, &st) != 0) {
+        free(p);
+        return -1;
+    }
+    free(p);
+    if (!S_ISDIR(st.st_mode)) {
+        errno = ENOTDIR;
+        return -1;
+    }
+    return 0;
+}
+
+static int join(char *out, size_t size, const char *dir, const char *name)
+{
+    size_t n = strlen(dir);
+    int w = snprintf(out, size, "%s%s%s", dir, (n && dir[n - 1] == '/') ? "" : "/", name);
+    return w >= 0 && (size_t)w < size;
+}
+
+static void index_name(const gen_args *a, char *buf, size_t size)
+{
+    if (a->shard_n == 1)
+        snprintf(buf, size, "index.tsv");
+    else
+        snprintf(buf, size, "index_%" PRIu32 "_of_%" PRIu32 ".tsv", a->shard_i, a->shard_n);
+}
+
+static int write_file(const char *path, const ef_gen_text *t)
+{
+    ef_cli_atomic af;
+    if (ef_cli_atomic_open(&af, path) != 0) {
+        ef_cli_error("cannot write '%s': %s", path, strerror(errno));
+        return EF_CLI_EXIT_OUTPUT;
+    }
+    if (t->len && fwrite(t->data, 1, t->len, af.fp) != t->len) {
+        int e = errno;
+        ef_cli_atomic_abort(&af);
+        ef_cli_error("cannot write '%s': %s", path, strerror(e ? e : EIO));
+        return EF_CLI_EXIT_OUTPUT;
+    }
+    if (ef_cli_atomic_commit(&af) != 0) {
+        ef_cli_error("cannot write '%s': %s", path, strerror(errno));
+        return EF_CLI_EXIT_OUTPUT;
+    }
+    return EF_CLI_EXIT_OK;
+}
+
+/* -1 if DIR/NAME does not exist; else reports and returns the exit code. */
+static int refuse_existing(const char *dir, const char *name)
+{
+    char path[4096];
+    struct stat sb;
+    if (!join(path, sizeof path, dir, name)) {
+        ef_cli_error("'%s': path too long", dir);
+        return EF_CLI_EXIT_OUTPUT;
+    }
+    if (lstat(path, &sb) == 0) {
+        ef_cli_error("'%s' exists: use --force to replace it, or a new directory", path);
+        return EF_CLI_EXIT_OUTPUT;
+    }
+    return -1;
+}
+
+int ef_cli_gen(int argc, char **argv)
+{
+    gen_args a;
+    ef_gen_text text = { NULL, 0, 0 }, index = { NULL, 0, 0 };
+    ef_gen_case gc;
+    char path[4096], name[64];
+    uint32_t total, written = 0;
+    ef_status st;
+    int rc = parse(argc, argv, &a);
+
+    if (rc >= 0)
+        return rc;
+    total = ef_gen_total(&a.cfg);
+
+    if (!a.list) {
+        if (make_dirs(a.dir) != 0) {
+            ef_cli_error("cannot create directory '%s': %s", a.dir, strerror(errno));
+            return EF_CLI_EXIT_OUTPUT;
+        }
+        /* Refuse before writing anything if a file of this run is there already. */
+        if (!a.force) {
+            for (uint32_t k = a.shard_i - 1; k < total; k += a.shard_n) {
+                ef_gen_file_name(k, name, sizeof name);
+                if ((rc = refuse_existing(a.dir, name)) >= 0)
+                    return rc;
+            }
+            index_name(&a, name, sizeof name);
+            if ((rc = refuse_existing(a.dir, name)) >= 0)
+                return rc;
+        }
+    }
+
+    if ((st = ef_gen_index_header(&a.cfg, a.shard_i, a.shard_n, &index)) != EF_OK) {
+        ef_cli_error("out of memory");
+        rc = EF_CLI_EXIT_INTERNAL;
+        goto out;
+    }
+    for (uint32_t k = a.shard_i - 1; k < total; k += a.shard_n) {
+        st = ef_gen_build(&a.cfg, k, &gc);
+        if (st == EF_OK)
+            st = ef_gen_index_row(&gc, &index);
+        if (st == EF_OK && !a.list)
+            st = ef_gen_format(&a.cfg, &gc, &text);
+        ef_gen_case_free(&gc);
+        if (st != EF_OK) {
+            ef_cli_error("case %" PRIu32 ": %s", k, ef_strerror(st));
+            rc = EF_CLI_EXIT_INTERNAL; /* out of memory, or a bug in a builder */
+            goto out;
+        }
+        if (!a.list) {
+            ef_gen_file_name(k, name, sizeof name);
+            if (!join(path, sizeof path, a.dir, name)) {
+                ef_cli_error("'%s': path too long", a.dir);
+                rc = EF_CLI_EXIT_OUTPUT;
+                goto out;
+            }
+            if ((rc = write_file(path, &text)) != EF_CLI_EXIT_OK)
+                goto out;
+        }
+        written++;
+    }
+    if (a.list) {
+        if (fwrite(index.data, 1, index.len, stdout) != index.len || fflush(stdout) != 0) {
+            ef_cli_error("cannot write to standard output: %s", strerror(errno));
+            rc = EF_CLI_EXIT_OUTPUT;
+            goto out;
+        }
+        rc = EF_CLI_EXIT_OK;
+        goto out;
+    }
+    index_name(&a, name, sizeof name);
+    if (!join(path, sizeof path, a.dir, name)) {
+        rc = EF_CLI_EXIT_OUTPUT;
+        goto out;
+    }
+    if ((rc = write_file(path, &index)) != EF_CLI_EXIT_OK)
+        goto out;
+    printf("edgeflag gen: wrote %" PRIu32 " of %" PRIu32 " cases (%" PRIu32 " directed, %" PRIu32
+           " random; seed %" PRIu64 ", level %d, shard %" PRIu32 "/%" PRIu32 ") to %s, index %s\n",
+           written, total, ef_gen_directed_count(&a.cfg), a.cfg.nrandom, a.cfg.seed, a.cfg.level, a.shard_i,
+           a.shard_n, a.dir, path);
+    rc = fflush(stdout) == 0 ? EF_CLI_EXIT_OK : EF_CLI_EXIT_OUTPUT;
+out:
+    ef_gen_text_free(&text);
+    ef_gen_text_free(&index);
+    return rc;
+}

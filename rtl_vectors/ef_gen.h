@@ -1,0 +1,166 @@
+/*
+ * ef_gen.h - seeded regression scenes for hardware implementations of the
+ * edge-flag rasterizer (`edgeflag gen`, docs/gen.md).
+ *
+ * Modelled on Berkeley TestFloat's testfloat_gen: a commented table of
+ * directed corner cases first (gen_cases.c), then seeded random cases
+ * (gen_random.c), numbered globally so a regression farm can split the run
+ * into exact shards.  Every case is a scene: a canvas and shapes of closed
+ * contours with Q16.8 vertices, written in the peerbench `.scene` text that
+ * `edgeflag render` reads, with every coordinate as the exact decimal of its
+ * Q16.8 value, so reading a file back gives the generator's vertices bit for
+ * bit.
+ *
+ * Determinism: integer arithmetic only, no clock, locale or path in any
+ * output.  The bytes of case k depend only on EF_GEN_VERSION, the model
+ * version string and the configuration below (seed, level, grid option,
+ * random count) -- never on the shard, the machine or the build.  The
+ * drawing (every non-comment line) of random case j depends only on
+ * (seed, j).
+ */
+#ifndef EF_GEN_H
+#define EF_GEN_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "ef_scene.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Bumped whenever the content of any case changes: a regression that pins
+ * (seed, level, count) reproduces the same files for one generator version. */
+#define EF_GEN_VERSION 1
+#define EF_GEN_DEFAULT_SEED UINT64_C(20070101)
+#define EF_GEN_LEVEL1_RANDOM 200u
+#define EF_GEN_LEVEL2_RANDOM 20000u
+/* Case numbers have six digits in file names (case_NNNNNN.scene). */
+#define EF_GEN_MAX_CASES 1000000u
+
+/* The corner-case categories of the directed table (docs/gen.md section 5). */
+typedef enum ef_gen_category {
+    EF_GEN_CAT_SAMPLE_GRID = 0, /* vertices exactly on sample rows and columns */
+    EF_GEN_CAT_HORIZONTAL,      /* horizontal edges */
+    EF_GEN_CAT_VERTICAL,        /* vertical edges */
+    EF_GEN_CAT_ZERO_LENGTH,     /* zero-length edges (repeated vertices) */
+    EF_GEN_CAT_SLOPE,           /* +-1 sample per row, near-horizontal, near-vertical, long */
+    EF_GEN_CAT_DEGENERATE,      /* degenerate and zero-area polygons, empty shapes */
+    EF_GEN_CAT_COINCIDENT,      /* coincident and overlapping edges */
+    EF_GEN_CAT_CANCEL,          /* windings that cancel */
+    EF_GEN_CAT_OVERFLOW,        /* winding counter past 127 (spec 6.4) */
+    EF_GEN_CAT_LIMITS,          /* coordinates at +-(2^23 - 1) Q16.8 */
+    EF_GEN_CAT_OUTSIDE,         /* far outside the clip rectangle */
+    EF_GEN_CAT_CLIP_BORDER,     /* edges on the clip borders */
+    EF_GEN_CAT_EDGES_PER_ROW,   /* many edges crossing one scanline */
+    EF_GEN_CAT_CANVAS,          /* 1 x 1 and maximum canvas sizes */
+    EF_GEN_CAT_COMPOSITING,     /* alpha and colour extremes, many shapes */
+    EF_GEN_CAT_RANDOM,          /* the seeded random cases */
+    EF_GEN_NCATEGORIES
+} ef_gen_category;
+/* Short lower-case name ("sample-grid", ..., "random"); NULL if out of range. */
+const char *ef_gen_category_name(ef_gen_category c);
+
+/* What a directed case is known to produce, at every sample count; written
+ * in its header ("# expect: ...") and checked by tests/unit/test_gen.c. */
+typedef enum ef_gen_expect_kind {
+    EF_GEN_EXPECT_ANY = 0,  /* nothing simple to state */
+    EF_GEN_EXPECT_EMPTY,    /* every pixel stays (0, 0, 0, 0) */
+    EF_GEN_EXPECT_FULL,     /* every pixel has alpha 255 */
+    EF_GEN_EXPECT_PROBE     /* pixel (x, y) has the alpha given */
+} ef_gen_expect_kind;
+typedef struct ef_gen_expect {
+    ef_gen_expect_kind kind;
+    int32_t x, y;           /* EF_GEN_EXPECT_PROBE */
+    uint8_t alpha;          /* EF_GEN_EXPECT_PROBE */
+    int8_t overflow;        /* 1: winding overflows are counted; 0: none; -1: not stated */
+} ef_gen_expect;
+
+/* ---------------------------------------------------------- configuration */
+typedef struct ef_gen_config {
+    uint64_t seed;          /* random cases; printed in every header */
+    int level;              /* 1 or 2 */
+    int grid;               /* grid-dependent directed cases: 8, 16 or 32, or 0 for the
+                             * level's default (16 at level 1, all three at level 2) */
+    int rules_swapped;      /* level 2: each directed case again with evenodd <-> nonzero
+                             * (set by ef_gen_config_init; level 1 never) */
+    uint32_t nrandom;       /* random cases: at least the level's count */
+} ef_gen_config;
+
+/* Defaults for a level: seed EF_GEN_DEFAULT_SEED, grid 0, the level's
+ * random count.  EF_ERR_ARG for a level other than 1 or 2. */
+ef_status ef_gen_config_init(ef_gen_config *c, int level);
+/* The level's random count (EF_GEN_LEVEL1_RANDOM, EF_GEN_LEVEL2_RANDOM), 0 if invalid. */
+uint32_t ef_gen_level_random(int level);
+/* EF_OK, or EF_ERR_ARG (bad level or grid, nrandom below the level's count:
+ * "can raise, never lower"), or EF_ERR_LIMIT (more than EF_GEN_MAX_CASES). */
+ef_status ef_gen_config_check(const ef_gen_config *c);
+/* Directed cases of this configuration (case numbers 0 .. D-1). */
+uint32_t ef_gen_directed_count(const ef_gen_config *c);
+/* D + nrandom. */
+uint32_t ef_gen_total(const ef_gen_config *c);
+
+/* ------------------------------------------------------------- sharding */
+/* Shard `index` of `count` (1-based: 1 <= index <= count) holds the cases k
+ * with k mod count == index - 1.  Returns 1 if case k is in it. */
+int ef_gen_in_shard(uint32_t k, uint32_t index, uint32_t count);
+
+/* ------------------------------------------------------------ the PRNG */
+/* splitmix64 (Steele, Lea, Flood 2014), written out: state += 0x9E3779B97F4A7C15,
+ * then the output mix of the new state.  Seeded with 0 the first outputs are
+ * 0xE220A8397B1DCDAF, 0x6E789E6AA1B965F4, 0x06C45D188009454F. */
+uint64_t ef_gen_splitmix64(uint64_t *state);
+/* Seed of random case j (0-based among the random cases): output number j
+ * of the splitmix64 stream seeded with `seed`, i.e. mix(seed + (j+1) * gamma). */
+uint64_t ef_gen_case_seed(uint64_t seed, uint32_t j);
+
+/* -------------------------------------------------------------- a case */
+typedef struct ef_gen_case {
+    uint32_t number;        /* global case number k */
+    uint32_t total;         /* cases in the run */
+    int directed;           /* 1: from the table, 0: random */
+    uint32_t index;         /* directed: k; random: j = k - directed count */
+    ef_gen_category category;
+    const char *name;       /* directed: the table's name; random: "random" */
+    int grid;               /* directed: the sample grid it was built for, 0 if none */
+    int rules_swapped;      /* a level-2 rule-swapped variant */
+    uint64_t case_seed;     /* random cases */
+    ef_gen_expect expect;
+    char desc[768];         /* one line, no tabs */
+    ef_scene scene;         /* the drawing */
+} ef_gen_case;
+
+/* Builds case k (0 <= k < ef_gen_total(c)) into *out (initialised here; free
+ * it with ef_gen_case_free even on failure).  EF_ERR_ARG for a bad k or
+ * configuration, EF_ERR_NOMEM. */
+ef_status ef_gen_build(const ef_gen_config *c, uint32_t k, ef_gen_case *out);
+void ef_gen_case_free(ef_gen_case *gc);
+
+/* ------------------------------------------------------------- text out */
+typedef struct ef_gen_text {
+    char *data;             /* NUL-terminated */
+    size_t len, cap;
+} ef_gen_text;
+void ef_gen_text_free(ef_gen_text *t);
+
+/* The case's file: header comments, then `scene W H`, shapes and contours
+ * with exact Q16.8 decimals.  Replaces t's content.  EF_ERR_ARG if a contour
+ * has fewer than 3 points (the format needs 3), EF_ERR_NOMEM. */
+ef_status ef_gen_format(const ef_gen_config *c, const ef_gen_case *gc, ef_gen_text *t);
+/* "case_NNNNNN.scene" (buf of at least 32 bytes). */
+void ef_gen_file_name(uint32_t k, char *buf, size_t size);
+/* index.tsv: its two header lines (a comment naming the run and shard, then
+ * the column names), and one row per case, appended to t. */
+ef_status ef_gen_index_header(const ef_gen_config *c, uint32_t shard_index, uint32_t shard_count,
+                              ef_gen_text *t);
+ef_status ef_gen_index_row(const ef_gen_case *gc, ef_gen_text *t);
+/* Exact decimal of v / 256 (at most 8 fraction digits, no trailing zeros),
+ * appended to t. */
+ef_status ef_gen_append_q8(ef_gen_text *t, int32_t v);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* EF_GEN_H */
