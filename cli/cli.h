@@ -8,6 +8,8 @@
 
 #include <stdint.h>
 
+#include "image_write.h"
+
 /* Exit codes, documented in docs/cli.md.  Scripts depend on them: do not
  * renumber.  70 is EX_SOFTWARE from BSD sysexits.h. */
 enum {
@@ -21,6 +23,27 @@ enum {
 /* Subcommands: argv[0] is the command name; return an exit code. */
 int ef_cli_render(int argc, char **argv);
 int ef_cli_patterns(int argc, char **argv);
+int ef_cli_gen(int argc, char **argv);     /* cmd_gen.c, docs/gen.md */
+
+/* The subcommands' option parsers, separate from what the commands do so that
+ * tests/fuzz/fuzz_cli_args.c can drive them without touching any file.  Each
+ * returns -1 when the line parsed and the command should run, else the exit
+ * code to return (EF_CLI_EXIT_OK after --help, EF_CLI_EXIT_USAGE after a
+ * usage error, which has then been reported). */
+typedef struct ef_cli_render_args {
+    const char *input, *output;
+    int32_t samples;            /* 8, 16 (default) or 32 */
+    int rule;                   /* -1: each shape's own; else an ef_rule */
+    int32_t fit_w, fit_h;       /* 0, 0: the file's own size */
+    ef_cli_format fmt;
+} ef_cli_render_args;
+int ef_cli_render_parse(int argc, char **argv, ef_cli_render_args *a);
+
+typedef struct ef_cli_patterns_args {
+    int32_t samples;            /* 0: all three */
+    int emit_c;
+} ef_cli_patterns_args;
+int ef_cli_patterns_parse(int argc, char **argv, ef_cli_patterns_args *a);
 
 /* Exact decimal integer: one or more ASCII digits and nothing else (no sign,
  * no spaces, no base prefix), value in [min, max].  Returns 1 and stores it,
@@ -45,6 +68,10 @@ int ef_cli_usage_error(const char *cmd, const char *fmt, ...)
     __attribute__((format(printf, 2, 3)))
 #endif
     ;
+
+/* Silences ef_cli_usage_error and ef_cli_error (for the fuzz target, which
+ * calls the parsers millions of times); normal runs never call it. */
+void ef_cli_set_quiet(int quiet);
 
 /* "edgeflag: <message>" on stderr. */
 void ef_cli_error(const char *fmt, ...)
