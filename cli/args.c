@@ -12,15 +12,16 @@
 #include <stdio.h>
 #include <string.h>
 
-int ef_cli_parse_int(const char *s, int32_t min, int32_t max, int32_t *out)
+/* Digits s[0..n) only, value in [min, max]. */
+static int parse_digits(const char *s, size_t n, int32_t min, int32_t max, int32_t *out)
 {
     int64_t v = 0;
-    if (!s || !*s)
+    if (n == 0)
         return 0;
-    for (; *s; s++) {
-        if (*s < '0' || *s > '9')
+    for (size_t i = 0; i < n; i++) {
+        if (s[i] < '0' || s[i] > '9')
             return 0;
-        v = v * 10 + (*s - '0');
+        v = v * 10 + (s[i] - '0');
         if (v > max)
             return 0; /* also keeps v far from int64 overflow */
     }
@@ -30,23 +31,24 @@ int ef_cli_parse_int(const char *s, int32_t min, int32_t max, int32_t *out)
     return 1;
 }
 
+int ef_cli_parse_int(const char *s, int32_t min, int32_t max, int32_t *out)
+{
+    return s ? parse_digits(s, strlen(s), min, max, out) : 0;
+}
+
 int ef_cli_parse_size(const char *s, int32_t max, int32_t *w, int32_t *h)
 {
-    char buf[32];
     const char *x;
-    size_t len;
+    int32_t tw, th;
 
-    if (!s)
+    if (!s || (x = strchr(s, 'x')) == NULL)
         return 0;
-    x = strchr(s, 'x');
-    if (!x)
+    /* Both sides parsed alike (leading zeros included), stored only if both are good. */
+    if (!parse_digits(s, (size_t)(x - s), 1, max, &tw) || !parse_digits(x + 1, strlen(x + 1), 1, max, &th))
         return 0;
-    len = (size_t)(x - s);
-    if (len == 0 || len >= sizeof buf)
-        return 0;
-    memcpy(buf, s, len);
-    buf[len] = '\0';
-    return ef_cli_parse_int(buf, 1, max, w) && ef_cli_parse_int(x + 1, 1, max, h);
+    *w = tw;
+    *h = th;
+    return 1;
 }
 
 int ef_cli_option_value(const char *cmd, int argc, char **argv, int *i, const char *name,
@@ -73,9 +75,15 @@ int ef_cli_option_value(const char *cmd, int argc, char **argv, int *i, const ch
     return 1;
 }
 
+static int quiet;
+
+void ef_cli_set_quiet(int q) { quiet = q; }
+
 int ef_cli_usage_error(const char *cmd, const char *fmt, ...)
 {
     va_list ap;
+    if (quiet)
+        return EF_CLI_EXIT_USAGE;
     fprintf(stderr, "edgeflag: %s: ", cmd);
     va_start(ap, fmt);
     vfprintf(stderr, fmt, ap);
@@ -87,6 +95,8 @@ int ef_cli_usage_error(const char *cmd, const char *fmt, ...)
 void ef_cli_error(const char *fmt, ...)
 {
     va_list ap;
+    if (quiet)
+        return;
     fputs("edgeflag: ", stderr);
     va_start(ap, fmt);
     vfprintf(stderr, fmt, ap);

@@ -17,7 +17,7 @@
 static char tmp_path[4352];
 static volatile sig_atomic_t tmp_active;
 
-static struct sigaction old_int, old_term;
+static struct sigaction old_int, old_term, old_hup, old_xfsz;
 static int handlers_installed;
 
 static void on_signal(int sig)
@@ -42,6 +42,7 @@ static void block_signals(sigset_t *old)
     sigemptyset(&set);
     sigaddset(&set, SIGINT);
     sigaddset(&set, SIGTERM);
+    sigaddset(&set, SIGHUP);
     sigprocmask(SIG_BLOCK, &set, old);
 }
 
@@ -62,6 +63,7 @@ static void install_one(int sig, struct sigaction *old)
     sigemptyset(&sa.sa_mask);
     sigaddset(&sa.sa_mask, SIGINT);
     sigaddset(&sa.sa_mask, SIGTERM);
+    sigaddset(&sa.sa_mask, SIGHUP);
     sigaction(sig, &sa, NULL);
 }
 
@@ -69,8 +71,18 @@ static void install_handlers(void)
 {
     if (handlers_installed)
         return;
+    struct sigaction ign;
     install_one(SIGINT, &old_int);
     install_one(SIGTERM, &old_term);
+    install_one(SIGHUP, &old_hup);
+    /* Past the file size limit (ulimit -f) the kernel sends SIGXFSZ, whose
+     * default action kills the process with the temporary still on disk.
+     * Ignored, the write fails with EFBIG instead and the ordinary error
+     * path removes the temporary and exits 4. */
+    memset(&ign, 0, sizeof ign);
+    ign.sa_handler = SIG_IGN;
+    sigemptyset(&ign.sa_mask);
+    sigaction(SIGXFSZ, &ign, &old_xfsz);
     handlers_installed = 1;
 }
 
@@ -80,6 +92,8 @@ static void uninstall_handlers(void)
         return;
     sigaction(SIGINT, &old_int, NULL);
     sigaction(SIGTERM, &old_term, NULL);
+    sigaction(SIGHUP, &old_hup, NULL);
+    sigaction(SIGXFSZ, &old_xfsz, NULL);
     handlers_installed = 0;
 }
 

@@ -183,11 +183,13 @@ static int emit_c(void)
     return EF_CLI_EXIT_OK;
 }
 
-int ef_cli_patterns(int argc, char **argv)
+int ef_cli_patterns_parse(int argc, char **argv, ef_cli_patterns_args *a)
 {
     int32_t n = 0;
-    int emit = 0, rc = EF_CLI_EXIT_OK;
+    int emit = 0;
 
+    a->samples = 0;
+    a->emit_c = 0;
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
             usage(stdout);
@@ -217,6 +219,22 @@ int ef_cli_patterns(int argc, char **argv)
     }
     if (emit && n)
         return ef_cli_usage_error(CMD, "--emit-c writes all three tables: drop --samples");
+    a->samples = n;
+    a->emit_c = emit;
+    return -1;
+}
+
+int ef_cli_patterns(int argc, char **argv)
+{
+    ef_cli_patterns_args a;
+    int32_t n;
+    int emit, rc = ef_cli_patterns_parse(argc, argv, &a);
+
+    if (rc >= 0)
+        return rc;
+    n = a.samples;
+    emit = a.emit_c;
+    rc = EF_CLI_EXIT_OK;
     if (emit)
         rc = emit_c();
     else if (n)

@@ -10,7 +10,6 @@
 
 #include "atomic_file.h"
 #include "ef_scene.h"
-#include "image_write.h"
 
 #include <errno.h>
 #include <inttypes.h>
@@ -45,16 +44,10 @@ static void usage(FILE *f)
           f);
 }
 
-typedef struct render_args {
-    const char *input, *output;
-    int32_t samples;
-    int rule; /* -1: each shape's own */
-    int32_t fit_w, fit_h;
-    ef_cli_format fmt;
-} render_args;
+typedef ef_cli_render_args render_args;
 
 /* Returns -1 when parsing succeeded, else the exit code to return. */
-static int parse(int argc, char **argv, render_args *a)
+int ef_cli_render_parse(int argc, char **argv, render_args *a)
 {
     int i, only_positional = 0;
     int seen_samples = 0, seen_rule = 0, seen_size = 0;
@@ -187,7 +180,7 @@ int ef_cli_render(int argc, char **argv)
     ef_status st;
     int rc;
 
-    rc = parse(argc, argv, &a);
+    rc = ef_cli_render_parse(argc, argv, &a);
     if (rc >= 0)
         return rc;
 

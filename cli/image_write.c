@@ -163,7 +163,12 @@ static int write_png(FILE *fp, const ef_image *img, char *err, size_t errsize)
         int saved = errno ? errno : EIO;
         png_destroy_write_struct(&png, &info);
         free(row);
-        set_err(err, errsize, ectx.msg[0] ? ectx.msg : "libpng error");
+        /* A failed fwrite (disk full, file size limit) reaches us as libpng's
+         * "Write Error": report the system's reason, as PAM and PGM do. */
+        if (ferror(fp))
+            set_err(err, errsize, strerror(saved));
+        else
+            set_err(err, errsize, ectx.msg[0] ? ectx.msg : "libpng error");
         errno = saved;
         return -1;
     }

@@ -66,3 +66,9 @@ test-sanitize:
 
 test: deps-test
 	@bash tests/run.sh
+
+# Robustness (issue 3): fuzzing, the bad-input catalogue, integer sanitizer, portability.
+include tests/fuzz/module.mk
+include tests/bad/module.mk
+include tests/sanitize/module.mk
+include tests/portability.mk

@@ -192,6 +192,10 @@ ef_status ef_in_builder_commit(ef_in_builder *b, ef_scene *s, ef_rule rule, ef_r
     ef_status st;
     ef_in_build_close(b);
     if (b->ncont == 0) return EF_OK;
+    if (b->npts > EF_MAX_EDGES_PER_SHAPE)
+        return ef_error_set(err, EF_ERR_LIMIT, NULL, 0, 0,
+                            "too many edges in one shape: %u (the model takes at most 2^22 = 4194304)",
+                            (unsigned)b->npts);
     if ((st = ef_scene_begin_shape(s, rule, color)) != EF_OK)
         return ef_error_set(err, st, NULL, 0, 0, st == EF_ERR_NOMEM ? "out of memory" : "too many shapes");
     for (uint32_t c = 0; c < b->ncont; c++) {

@@ -30,6 +30,10 @@
 #define EF_IN_MAX_ELEMENTS (1u << 20)             /* XML elements per SVG file */
 #define EF_IN_MAX_VISITS (1u << 21)               /* element instances walked, <use> included */
 #define EF_IN_MAX_SHAPES (1u << 24)               /* shapes per scene */
+#ifndef EF_IN_MAX_WORK_LOG2                       /* SVG reading cost (svg.c, charge()); the fuzz */
+#define EF_IN_MAX_WORK_LOG2 28u                   /* build lowers it to keep every input fast */
+#endif
+#define EF_IN_MAX_WORK ((uint64_t)1 << EF_IN_MAX_WORK_LOG2)
 #define EF_IN_CURVE_MAX_SEGMENTS 256u             /* Bezier flattening cap */
 #define EF_IN_ARC_MAX_SEGMENTS 4096u              /* arc flattening cap */
 
@@ -217,6 +221,11 @@ ef_status ef_in_opacity_parse(const char *s, size_t len, ef_q32 *out, size_t *er
 uint8_t ef_in_alpha8(ef_q32 p);
 
 /* ------------------------------------------------------------ scene glue */
+/* Points (= edges) of the scene's last shape; 0 before the first shape. */
+static inline uint32_t ef_in_shape_points(const ef_scene *s)
+{
+    return s->nshapes ? s->npoints - s->start[s->shapes[s->nshapes - 1].first_contour] : 0;
+}
 /* Notes: one call per kind and file (ef_load_opts.note). */
 void ef_in_note(const ef_load_opts *opts, ef_scene *s, const char *file, uint32_t line, uint32_t col,
                 const char *msg);

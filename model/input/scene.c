@@ -22,6 +22,51 @@
 
 /* ---------------------------------------------------------------- errors */
 
+/* Messages quote the input ("not a number: '...'"), and a hostile file must
+ * not be able to write control sequences to the user's terminal or invalid
+ * UTF-8 to a log: control characters, bytes that are not part of a valid
+ * UTF-8 sequence and the invisible U+FEFF (a byte order mark where none
+ * belongs) are written as \xNN / \uFEFF.  Valid UTF-8 is copied. */
+static size_t utf8_len(const unsigned char *s)
+{
+    unsigned c = s[0];
+    size_t n = c < 0x80 ? 1 : (c & 0xE0) == 0xC0 ? 2 : (c & 0xF0) == 0xE0 ? 3 : (c & 0xF8) == 0xF0 ? 4 : 0;
+    if (n == 0 || (n == 2 && c < 0xC2) || (n == 4 && c > 0xF4)) return 0;
+    for (size_t i = 1; i < n; i++)
+        if ((s[i] & 0xC0) != 0x80) return 0;
+    uint32_t cp = n == 1 ? c : n == 2 ? c & 0x1F : n == 3 ? c & 0x0F : c & 0x07;
+    for (size_t i = 1; i < n; i++) cp = cp << 6 | (s[i] & 0x3Fu);
+    if ((n == 3 && cp < 0x800) || (n == 4 && (cp < 0x10000 || cp > 0x10FFFF)) || (cp >= 0xD800 && cp <= 0xDFFF))
+        return 0;
+    return n;
+}
+
+static void safe_text(char *out, size_t size, const char *in)
+{
+    size_t o = 0;
+    const unsigned char *p = (const unsigned char *)in;
+    while (*p) {
+        size_t n = utf8_len(p);
+        char esc[8];
+        const char *src = (const char *)p;
+        size_t len = n;
+        if (n == 0 || (n == 1 && (*p < 0x20 || *p == 0x7F))) {
+            snprintf(esc, sizeof esc, "\\x%02X", *p);
+            src = esc;
+            len = 4;
+            n = 1;
+        } else if (n == 3 && p[0] == 0xEF && p[1] == 0xBB && p[2] == 0xBF) {
+            src = "\\uFEFF";
+            len = 6;
+        }
+        if (o + len >= size) break;
+        memcpy(out + o, src, len);
+        o += len;
+        p += n;
+    }
+    out[o] = '\0';
+}
+
 ef_status ef_error_set(ef_error *e, ef_status status, const char *file, uint32_t line, uint32_t col,
                        const char *fmt, ...)
 {
@@ -37,10 +82,12 @@ ef_status ef_error_set(ef_error *e, ef_status status, const char *file, uint32_t
     }
     e->line = line;
     e->col = col;
+    char raw[sizeof e->msg];
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(e->msg, sizeof e->msg, fmt, ap);
+    vsnprintf(raw, sizeof raw, fmt, ap);
     va_end(ap);
+    safe_text(e->msg, sizeof e->msg, raw);
     return status;
 }
 
@@ -111,6 +158,9 @@ ef_status ef_scene_add_contour(ef_scene *s, const ef_point *pts, uint32_t n)
             pts[i].y >= EF_COORD_LIMIT)
             return EF_ERR_RANGE;
     if (n > EF_MAX_POINTS_PER_SCENE - s->npoints || s->ncontours >= EF_MAX_POINTS_PER_SCENE) return EF_ERR_LIMIT;
+    /* A shape of n points has n edges: the model takes EF_MAX_EDGES_PER_SHAPE
+     * (ef_rasterize), so a scene never holds a shape it cannot draw. */
+    if (n > EF_MAX_EDGES_PER_SHAPE - ef_in_shape_points(s)) return EF_ERR_LIMIT;
     if ((st = grow((void **)&s->points, &s->points_cap, s->npoints + n, sizeof *s->points, EF_MAX_POINTS_PER_SCENE)))
         return st;
     if ((st = grow((void **)&s->start, &s->start_cap, s->ncontours + 2, sizeof *s->start, EF_MAX_POINTS_PER_SCENE + 1)))

@@ -35,10 +35,27 @@ typedef struct text_reader {
     uint32_t npts, cap;
 } text_reader;
 
+/* The token is quoted with its control characters escaped, NUL included
+ * (printf's %.*s would stop there); ef_error_set escapes invalid UTF-8. */
 static ef_status fail_at(text_reader *r, const char *at, ef_status st, const char *fmt, const char *tok, size_t n)
 {
+    char q[4 * 48 + 1];
+    size_t k = 0;
+    for (size_t i = 0; i < n && i < 48; i++) {
+        unsigned char c = (unsigned char)tok[i];
+        if (c < 0x20 || c == 0x7F) {
+            static const char hex[] = "0123456789ABCDEF";
+            q[k++] = '\\';
+            q[k++] = 'x';
+            q[k++] = hex[c >> 4];
+            q[k++] = hex[c & 15];
+        } else {
+            q[k++] = (char)c;
+        }
+    }
+    q[k] = '\0';
     return ef_error_set(r->err, st, r->name, r->lineno, ef_in_utf8_col(r->line, (size_t)(at - r->line)), fmt,
-                        (int)(n > 48 ? 48 : n), tok);
+                        (int)k, q);
 }
 
 static bool is_sep(char c) { return c == ' ' || c == '\t'; }
@@ -235,7 +252,12 @@ ef_status ef_scene_load_text(const char *name, const char *data, size_t len, con
                     goto fail;
                 }
                 if (out->npoints + r.npts >= EF_MAX_POINTS_PER_SCENE) {
-                    st = fail_at(&r, tok, EF_ERR_LIMIT, "too many points in the scene%.*s", "", 0);
+                    st = fail_at(&r, tok, EF_ERR_LIMIT, "too many points in the scene (the limit is 2^24)%.*s", "", 0);
+                    goto fail;
+                }
+                if (ef_in_shape_points(out) + r.npts >= EF_MAX_EDGES_PER_SHAPE) {
+                    st = fail_at(&r, tok, EF_ERR_LIMIT,
+                                 "too many edges in one shape (the model takes at most 2^22 = 4194304)%.*s", "", 0);
                     goto fail;
                 }
                 if ((st = push_point(&r, d)) != EF_OK) goto fail;

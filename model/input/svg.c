@@ -103,8 +103,9 @@ typedef struct svg_ctx {
     uint32_t nids;
     uint32_t noted;
     uint64_t visits;
+    uint64_t work;             /* reading cost so far (charge()) */
     ef_in_decls decls;         /* scratch: a style attribute's declarations */
-    uint32_t *matched;         /* scratch: matching CSS rules */
+    uint64_t *matched;         /* scratch: matching CSS rules, specificity << 32 | index */
     uint32_t nmatched, matched_cap;
 } svg_ctx;
 
@@ -148,6 +149,31 @@ static ef_status fail(svg_ctx *c, uint32_t node, const char *attr, size_t off, e
 {
     ef_error_set(c->err, st, NULL, 0, 0, "%s", msg);
     return locate(c, node, attr, off);
+}
+
+/* Reading cost.  <use> re-reads its target for every instance and every
+ * element is tested against every style rule, so a small file can ask for
+ * an unbounded amount of work (a 100 KB path used 2^20 times through a tree
+ * of <use>, 2^17 rules times 2^17 elements).  Each element instance is
+ * charged for its attributes (count and bytes: the text it may parse), the
+ * style rules and declarations it is matched against, the points it makes
+ * and the children it scans; past EF_IN_MAX_WORK units the file is rejected
+ * (docs/limits.md), which bounds the run time to seconds. */
+static ef_status charge(svg_ctx *c, uint32_t node, uint64_t units)
+{
+    c->work += units;
+    if (c->work <= EF_IN_MAX_WORK) return EF_OK;
+    ef_error_set(c->err, EF_ERR_LIMIT, NULL, 0, 0,
+                 "document too costly to read: more than 2^%u work units (attributes and path data read again for every <use> "
+                 "instance, style rules times elements; docs/limits.md)",
+                 (unsigned)EF_IN_MAX_WORK_LOG2);
+    return locate(c, node, NULL, 0);
+}
+
+static int key_cmp(const void *a, const void *b)
+{
+    uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
+    return x < y ? -1 : x > y;
 }
 
 static int id_cmp(const void *a, const void *b)
@@ -391,6 +417,11 @@ static ef_status cascade(svg_ctx *c, uint32_t node, svg_style *st, const svg_sty
 {
     ef_status s;
     const ef_in_node *n = &c->dom.nodes[node];
+    /* Every attribute may be parsed (style, transform, d, ...) and every
+     * rule and declaration of the style sheets tested, at every visit. */
+    uint64_t cost = 1u + (uint64_t)n->nattr + c->css.nrules + c->css.decls.n;
+    for (uint32_t i = 0; i < n->nattr; i++) cost += c->dom.attrs[n->attr0 + i].value_len;
+    if ((s = charge(c, node, cost)) != EF_OK) return s;
     *st = *parent;
     loc->opacity = ef_q32_raw(EF_Q32_ONE);
     loc->display_none = loc->clip = loc->mask = loc->filter = false;
@@ -417,21 +448,19 @@ static ef_status cascade(svg_ctx *c, uint32_t node, svg_style *st, const svg_sty
             if (!ef_in_css_match(&c->css.rules[r], tag, cls, cl, id, il)) continue;
             if (c->nmatched == c->matched_cap) {
                 uint32_t nc = c->matched_cap ? c->matched_cap * 2 : 16;
-                uint32_t *nm = realloc(c->matched, (size_t)nc * sizeof *nm);
+                uint64_t *nm = realloc(c->matched, (size_t)nc * sizeof *nm);
                 if (!nm) return fail(c, node, NULL, 0, EF_ERR_NOMEM, "out of memory");
                 c->matched = nm;
                 c->matched_cap = nc;
             }
-            /* insertion by (specificity, order): stable, small lists */
-            uint32_t k = c->nmatched++;
-            while (k > 0 && c->css.rules[c->matched[k - 1]].specificity > c->css.rules[r].specificity) {
-                c->matched[k] = c->matched[k - 1];
-                k--;
-            }
-            c->matched[k] = r;
+            c->matched[c->nmatched++] = (uint64_t)c->css.rules[r].specificity << 32 | r;
         }
+        /* By specificity, then source order (the index): keys are distinct, so
+         * the order is total and qsort's instability does not matter; n log n,
+         * where inserting one by one was quadratic in the matching rules. */
+        if (c->nmatched > 1) qsort(c->matched, c->nmatched, sizeof *c->matched, key_cmp);
         for (uint32_t m = 0; m < c->nmatched; m++) {
-            const ef_in_css_rule *r = &c->css.rules[c->matched[m]];
+            const ef_in_css_rule *r = &c->css.rules[(uint32_t)c->matched[m]];
             for (uint32_t d = 0; d < r->ndecl; d++) {
                 const ef_in_decl *dc = &c->css.decls.d[r->decl0 + d];
                 src w = { r->node, NULL, 0 };
@@ -493,6 +522,8 @@ static ef_status gradient_color(svg_ctx *c, uint32_t g, uint8_t rgb[3], ef_q32 *
         int64_t so = 0;
         uint32_t n = 0;
         for (uint32_t k = c->dom.nodes[g].first_child; k != EF_IN_NONE; k = c->dom.nodes[k].next) {
+            ef_status cs = charge(c, k, 1);
+            if (cs != EF_OK) return cs;
             if (!c->dom.nodes[k].svg || !is(tag_of(c, k), "stop")) continue;
             svg_style st, base = initial_style();
             svg_local loc;
@@ -698,6 +729,7 @@ static ef_status draw_shape(svg_ctx *c, uint32_t node, const char *tag, const sv
     } else if ((s = ellipse_geometry(c, node, f, is(tag, "circle"))) != EF_OK) {
         return s;
     }
+    if ((s = charge(c, node, c->b.npts)) != EF_OK) return s;   /* the points it made */
     if ((s = ef_in_builder_commit(&c->b, c->scene, st->rule, col, c->err)) != EF_OK) return locate(c, node, NULL, 0);
     return EF_OK;
 }
@@ -959,6 +991,7 @@ static ef_status walk(svg_ctx *c, uint32_t node, const svg_frame *f, unsigned de
     } else if (is(tag, "switch")) {
         s = EF_OK;
         for (uint32_t k = n->first_child; k != EF_IN_NONE; k = c->dom.nodes[k].next) {
+            if ((s = charge(c, k, 1u + c->dom.nodes[k].nattr)) != EF_OK) break;
             if (!c->dom.nodes[k].svg || ef_in_dom_attr(&c->dom, k, "requiredExtensions", NULL) ||
                 ef_in_dom_attr(&c->dom, k, "systemLanguage", NULL))
                 continue;

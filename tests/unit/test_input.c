@@ -983,6 +983,52 @@ static const char *shared_dir(void)
     return d && *d ? d : "../shared";
 }
 
+/* Issue 3: limits the readers enforce with a position, and messages that
+ * quote hostile input safely. */
+static void test_robustness(void **state)
+{
+    (void)state;
+    ef_scene s;
+    ef_error e;
+    /* A shape takes at most EF_MAX_EDGES_PER_SHAPE points (= edges), the
+     * model's limit, whatever the contours: exactly the limit is fine. */
+    ef_point *pts = calloc(EF_MAX_EDGES_PER_SHAPE, sizeof *pts);
+    assert_non_null(pts);
+    ef_rgba8 c = { 1, 2, 3, 255 };
+    ef_scene_init(&s, 4, 4);
+    assert_int_equal(ef_scene_begin_shape(&s, EF_RULE_NONZERO, c), EF_OK);
+    assert_int_equal(ef_scene_add_contour(&s, pts, EF_MAX_EDGES_PER_SHAPE - 3), EF_OK);
+    assert_int_equal(ef_scene_add_contour(&s, pts, 3), EF_OK);
+    assert_int_equal(ef_scene_add_contour(&s, pts, 1), EF_ERR_LIMIT);
+    assert_int_equal(ef_scene_begin_shape(&s, EF_RULE_NONZERO, c), EF_OK);
+    assert_int_equal(ef_scene_add_contour(&s, pts, 3), EF_OK);        /* the next shape starts afresh */
+    ef_scene_free(&s);
+    free(pts);
+
+    /* Quoted input: control characters (NUL included), invalid UTF-8 and a
+     * stray byte order mark are escaped, with the position unchanged. */
+    static const char esc[] = "scene 10 10\nshape nonzero 1 2 3 255\n\x1b[31mcontour 1 1 5 1 5 5\n";
+    assert_int_equal(txt(esc, &s, &e), EF_ERR_SYNTAX);
+    assert_int_equal(e.line, 3);
+    assert_int_equal(e.col, 1);
+    assert_non_null(strstr(e.msg, "'\\x1B[31mcontour'"));
+    assert_null(strchr(e.msg, 0x1b));
+    static const char nul[] = "scene 10 10\nshape nonzero 1 2 3 255\ncontour 1 1 5\0001 5 5\n";
+    assert_int_equal(ef_scene_load_text("nul.scene", nul, sizeof nul - 1, NULL, &s, &e), EF_ERR_SYNTAX);
+    assert_int_equal(e.col, 13);
+    assert_non_null(strstr(e.msg, "'5\\x001'"));
+    assert_int_equal(txt("scene 10 10\n\xef\xbb\xbfshape nonzero 1 2 3 255\n", &s, &e), EF_ERR_SYNTAX);
+    assert_non_null(strstr(e.msg, "'\\uFEFFshape'"));
+    assert_int_equal(txt("scene 10 10\nshape nonzero 1 2 3 255\ncontour 1 1 \xff\xc0 5 5 1\n", &s, &e), EF_ERR_SYNTAX);
+    assert_non_null(strstr(e.msg, "'\\xFF\\xC0'"));
+    /* Valid UTF-8 is kept as it is. */
+    assert_int_equal(txt("scene 10 10\nshape nonzero 1 2 3 255\ncontour 1 1 \xc2\xbd 5 5 1\n", &s, &e), EF_ERR_SYNTAX);
+    assert_non_null(strstr(e.msg, "'\xc2\xbd'"));
+    /* A BOM at the very start of either format is accepted. */
+    must(txt("\xef\xbb\xbfscene 1 1\n", &s, &e), &e);
+    ef_scene_free(&s);
+}
+
 static void test_load_file(void **state)
 {
     (void)state;
@@ -1101,6 +1147,7 @@ int main(void)
         cmocka_unit_test(test_scene_errors),
         cmocka_unit_test(test_scene_fit),
         cmocka_unit_test(test_scene_builder),
+        cmocka_unit_test(test_robustness),
         cmocka_unit_test(test_load_file),
         cmocka_unit_test(test_shared_svgs),
     };

@@ -1,0 +1,99 @@
+#!/usr/bin/env bash
+# tests/bad/run.sh BUILD_DIR - runs the bad-input catalogue (CATALOGUE.tsv;
+# README.md explains it).  For every entry, `edgeflag render FILE -o OUT ARGS`
+# must:
+#   - exit with the documented code, never by a signal (no crash), within 60 s;
+#   - print "edgeflag: FILE:LINE:COL: MESSAGE" (or "edgeflag: FILE: MESSAGE"
+#     for a whole-file error, "edgeflag: render: MESSAGE" for a usage error)
+#     with the entry's position and MESSAGE matching the entry's regex;
+#   - leave no OUT and no temporary ".OUT.XXXXXX" behind on failure, and a
+#     complete OUT on success;
+# and the library (tests/tools/load_check) must report the entry's exact error
+# class and the same position.  Ends with "N passed, M failed".
+set -u
+build=${1:?usage: tests/bad/run.sh BUILD_DIR}
+here=$(cd "$(dirname "$0")" && pwd)
+case $build in /*) ;; *) build=$PWD/$build ;; esac
+EF=$build/edgeflag
+LC=$build/tests/tools/load_check
+ext=${EF_BAD_EXT:-png}      # .pam for a WITH_PNG=0 build
+for b in "$EF" "$LC"; do
+    [ -x "$b" ] || { echo "bad: $b not built"; echo "0 passed, 1 failed"; exit 1; }
+done
+
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/edgeflag-bad.XXXXXX") || exit 1
+trap 'rm -rf "$tmp"' EXIT
+cp -R "$here/files/." "$tmp/"
+bash "$here/gen.sh" "$tmp" || { echo "bad: gen.sh failed"; echo "0 passed, 1 failed"; exit 1; }
+cd "$tmp" || exit 1
+
+pass=0 fail=0
+bad() {
+    fail=$((fail + 1))
+    echo "FAIL - $1"
+    shift
+    for l in "$@"; do echo "       $l"; done
+    sed 's/^/       stderr: /' err | head -n 3
+}
+n=0
+while IFS=$'\t' read -r file want class regex where args; do
+    case $file in ''|'#'*|file) continue ;; esac
+    n=$((n + 1))
+    out=out$n.$ext
+    # shellcheck disable=SC2086
+    timeout 60 "$EF" render "$file" -o "$out" $args >stdout 2>err
+    rc=$?
+    what="$file${args:+ $args}"
+    msg=$(grep -v '^edgeflag: warning: ' err | grep -m1 '^edgeflag: ')
+    if [ $rc -ge 124 ]; then
+        bad "$what" "exit $rc: killed by a signal or timed out (want $want)"; continue
+    fi
+    if [ "$rc" != "$want" ]; then
+        bad "$what" "exit $rc, want $want"; continue
+    fi
+    temps=$(find . -maxdepth 1 -name ".$out.*" | head -n 3)
+    if [ -n "$temps" ]; then
+        bad "$what" "temporary left behind: $temps"; rm -f ./.out*; continue
+    fi
+    if [ "$want" = 0 ]; then
+        if [ ! -s "$out" ] || [ -n "$msg" ]; then
+            bad "$what" "exit 0 but no complete output, or an error message"; continue
+        fi
+        rm -f "$out"
+    else
+        if [ -e "$out" ]; then
+            bad "$what" "failed (exit $rc) but left $out"; rm -f "$out"; continue
+        fi
+        if [ "$want" = 2 ]; then
+            prefix="edgeflag: render: "
+        elif [ "$where" = - ]; then
+            prefix="edgeflag: $file: "
+        else
+            prefix="edgeflag: $file:$where: "
+        fi
+        case $msg in
+        "$prefix"*) text=${msg#"$prefix"} ;;
+        *) bad "$what" "message does not start with '$prefix'"; continue ;;
+        esac
+        if ! printf '%s\n' "$text" | grep -Eq -- "$regex"; then
+            bad "$what" "message '$text' does not match /$regex/"; continue
+        fi
+    fi
+    if [ "$class" != usage ]; then
+        size=()
+        [[ "$args" == --size* ]] && size=($args)
+        got=$("$LC" "$file" "${size[@]}")
+        gclass=$(printf '%s' "$got" | cut -f1) gwhere=$(printf '%s' "$got" | cut -f2)
+        if [ "$gclass" != "$class" ] || { [ "$class" != ok ] && [ "$gwhere" != "$where" ]; }; then
+            bad "$what" "library says '$gclass' at $gwhere, want '$class' at $where"; continue
+        fi
+    fi
+    pass=$((pass + 1))
+    echo "ok   - $what -> $want${class:+ ($class)}"
+done <"$here/CATALOGUE.tsv"
+if find . -maxdepth 1 -name '.out*' | grep -q .; then
+    bad "stray temporaries at the end" "$(find . -maxdepth 1 -name '.out*' | head -n 3)"
+fi
+echo "bad: $n catalogue entries"
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]
