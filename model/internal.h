@@ -283,7 +283,9 @@ static inline void ef_blend_span(const ef_blend *b, int32_t y, int32_t x, int32_
     } else {
         uint32_t cov = b->samples == 8 ? b->alpha8[mask] : b->alpha_n[ef_popcount32(mask)];
         s4 = ef_mul255x4(b->p4, cov);
-        sa = (uint32_t)(s4 >> 48);   /* the alpha byte is lane 3: mul(a, cov) */
+        /* mul(a, cov) computed directly: which lane holds the alpha byte
+         * depends on the host's byte order (found on s390x by make portability). */
+        sa = ef_mul255(b->a, cov);
     }
     for (int32_t i = 0; i < len; i++, d += 4) {
         uint64_t dd = ef_spread4(ef_load32(d));
