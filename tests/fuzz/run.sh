@@ -59,7 +59,7 @@ for t in "$@"; do
         runs=${runs:-$(grep -Eo 'Done [0-9]+ runs' "$log" | grep -Eo '[0-9]+' | tail -n 1)}
         if [ $rc -eq 0 ] && grep -q '^Done [0-9]* runs' "$log"; then
             pass=$((pass + 1))
-            echo "fuzz: $t: ${runs:-?} executions in ${secs} s, clean (corpus $(find "$work" -type f | wc -l) inputs)"
+            echo "fuzz: $t: ${runs:-?} executions in ${secs} s, clean ($(find "$work" -type f | wc -l) inputs in $work)"
             printf '%s\t%s\t%s\t%s\t%s\t%s\n' "$(date -u +%FT%TZ)" "$mode" "$t" "${runs:-0}" "$secs" clean >>"$stats"
         else
             fail=$((fail + 1))
@@ -106,7 +106,7 @@ for t in "$@"; do
                 cp "$f" "$corpus/$(sha1sum "$f" | cut -c1-40)"
             done < <(find "$new" -type f -printf '%s %p\n' | sort -n | cut -d' ' -f2-)
             pass=$((pass + 1))
-            echo "fuzz: $t: corpus minimised to $(find "$corpus" -type f | wc -l) inputs, $(du -sk "$corpus" | cut -f1) KiB"
+            echo "fuzz: $t: corpus minimised to $(find "$corpus" -type f | wc -l) inputs, $(du -sk --apparent-size "$corpus" | cut -f1) KiB"
         else
             fail=$((fail + 1)); echo "fuzz: $t: merge FAILED; log $log"; tail -n 5 "$log"
         fi
