@@ -187,4 +187,33 @@ static inline int fuzz_same_geometry(const ef_scene *s, const ef_scene *t)
     return tc == t->ncontours;
 }
 
+/* The readers' shared contract: loading the same bytes twice gives the same
+ * status and the same scene or error; a failure leaves the scene empty with a
+ * positioned message; a success is a consistent scene of the requested fit.
+ * Returns 1 with *s loaded (the caller frees it), 0 after a checked failure. */
+typedef ef_status (*fuzz_loader)(const char *name, const char *data, size_t len, const ef_load_opts *opts,
+                                 ef_scene *out, ef_error *err);
+static inline int fuzz_load_checked(fuzz_loader load, const char *name, const char *data, size_t size,
+                                    const ef_load_opts *opts, ef_scene *s)
+{
+    ef_scene s2;
+    ef_error e, e2;
+    memset(&e, 0, sizeof e);
+    ef_status st = load(name, data, size, opts, s, &e);
+    ef_status st2 = load(name, data, size, opts, &s2, &e2);
+    FUZZ_CHECK(st == st2, "second load gave status %d, first %d", (int)st2, (int)st);
+    if (st != EF_OK) {
+        fuzz_check_error(st, &e, name);
+        fuzz_check_empty(s);
+        FUZZ_CHECK(e.line == e2.line && e.col == e2.col && strcmp(e.msg, e2.msg) == 0, "error not deterministic");
+        return 0;
+    }
+    fuzz_check_scene(s);
+    FUZZ_CHECK(fuzz_scene_equal(s, &s2), "second load gave a different scene");
+    ef_scene_free(&s2);
+    if (opts && opts->fit_width)
+        FUZZ_CHECK(s->width == opts->fit_width && s->height == opts->fit_height, "fit size not honoured");
+    return 1;
+}
+
 #endif /* EF_FUZZ_COMMON_H */

@@ -13,23 +13,10 @@ static const char NAME[] = "fuzz.scene";
 
 static void one(const char *data, size_t size, const ef_load_opts *opts)
 {
-    ef_scene s, s2, t;
-    ef_error e, e2;
-    memset(&e, 0, sizeof e);
-    ef_status st = ef_scene_load_text(NAME, data, size, opts, &s, &e);
-    ef_status st2 = ef_scene_load_text(NAME, data, size, opts, &s2, &e2);
-    FUZZ_CHECK(st == st2, "second load gave status %d, first %d", (int)st2, (int)st);
-    if (st != EF_OK) {
-        fuzz_check_error(st, &e, NAME);
-        fuzz_check_empty(&s);
-        FUZZ_CHECK(e.line == e2.line && e.col == e2.col && strcmp(e.msg, e2.msg) == 0, "error not deterministic");
+    ef_scene s, t;
+    ef_error e;
+    if (!fuzz_load_checked(ef_scene_load_text, NAME, data, size, opts, &s))
         return;
-    }
-    fuzz_check_scene(&s);
-    FUZZ_CHECK(fuzz_scene_equal(&s, &s2), "second load gave a different scene");
-    ef_scene_free(&s2);
-    if (opts && opts->fit_width)
-        FUZZ_CHECK(s.width == opts->fit_width && s.height == opts->fit_height, "fit size not honoured");
 
     fuzz_buf b = { 0 };
     fuzz_scene_text(&s, &b);
