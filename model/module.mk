@@ -23,7 +23,7 @@ $(LIB_PC): model/edgeflag.pc.in
 .PHONY: install
 install: lib
 	install -d $(DESTDIR)$(PREFIX)/include/edgeflag $(DESTDIR)$(PREFIX)/lib/pkgconfig
-	install -m 644 model/edgeflag.h model/ef_scene.h $(DESTDIR)$(PREFIX)/include/edgeflag/
+	install -m 644 model/edgeflag.h model/ef_scene.h model/ef_trace.h $(DESTDIR)$(PREFIX)/include/edgeflag/
 	install -m 644 $(LIB_A) $(DESTDIR)$(PREFIX)/lib/
 	install -m 755 $(LIB_SO) $(DESTDIR)$(PREFIX)/lib/libedgeflag.so.0
 	ln -sf libedgeflag.so.0 $(DESTDIR)$(PREFIX)/lib/libedgeflag.so
