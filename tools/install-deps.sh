@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs what edgeflag needs from Debian 12's packages, only when missing.
 #   tools/install-deps.sh          build + demo: compiler, expat, libpng
-#   tools/install-deps.sh test     + cmocka, clang, 32-bit multilib (the test suite), and the
+#   tools/install-deps.sh test     + cmocka, clang, 32-bit multilib, Icarus, Verilator, GTKWave (the
+#                                  test suite), and the
 #                                  aarch64/s390x cross C libraries and qemu-user (best effort)
 #   tools/install-deps.sh portability   the same (what `make portability` needs)
 #   tools/install-deps.sh bench    + the peers and plotting for `make bench` (bench/README.md)
@@ -11,6 +12,9 @@ pkgs=(gcc make pkg-config libexpat1-dev libpng-dev)
 optional=()
 if [ "${1:-}" = test ] || [ "${1:-}" = portability ]; then
     pkgs+=(libcmocka-dev clang gcc-multilib libclang-rt-14-dev)
+    # the vectors' real readers: Icarus and Verilator ($readmemh testbenches), GTKWave's
+    # vcd2fst/fst2vcd (VCD round trip), xmllint (JUnit XML well-formedness)
+    pkgs+=(iverilog verilator gtkwave libxml2-utils)
     # `make portability` builds static aarch64 and s390x (big-endian) programs
     # with clang --target and runs them under qemu-user.  gcc-aarch64-linux-gnu
     # cannot be installed beside gcc-multilib in Debian 12; these can.  Best
