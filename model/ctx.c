@@ -68,6 +68,7 @@ void ef_ctx_destroy(ef_ctx *ctx)
     free(ctx->eo_cells);
     free(ctx->nz_cells);
     free(ctx->occ);
+    free(ctx->trace);
     free(ctx);
 }
 

@@ -78,6 +78,8 @@ struct ef_ctx {
     uint64_t *occ;          /* one bit per cell: marked since the last fill (mask tracking) */
 
     ef_diag diag;
+
+    struct ef_trace *trace; /* transaction trace (trace.c), NULL when off */
 };
 
 /* edge_setup.c: appends the edges of poly to ctx->edges (steps 1-4) and
