@@ -34,12 +34,29 @@ static EF_ALWAYS_INLINE void fill_nonzero(ef_ctx *ctx, int32_t y, int32_t xmin, 
                                           void *user, const ef_blend *blend, const int direct, const int words,
                                           const int check_overflow)
 {
+    /* Compositing needs only how many samples are covered, not which: for
+     * N = 16, 32 the state is then the sum over the words of their pad bits
+     * moved to bit 0 of each byte (byte L: how many of the words have lane L
+     * non-zero, at most 4), whose byte sum is the count (at most 32: the
+     * multiply's top byte gets no carry); the mask by sample, which costs a
+     * gather per word, is built only for the span callback and N = 8 (its
+     * alpha table is by mask). */
+    const int by_count = direct && words > 1;
     uint64_t *occ = ctx->occ;
     const int32_t W = ctx->width;
     uint64_t acc[4] = { 0, 0, 0, 0 };
-    uint32_t mask = 0;
+    uint64_t mask = 0;               /* coverage mask, or the interleaved pads (by_count) */
     uint64_t overflows = 0;
     int32_t start = xmin;
+#define NZ_SPAN(x0, n)                                                                        \
+    do {                                                                                      \
+        if (by_count)                                                                         \
+            ef_blend_span_n(blend, y, x0, n, (uint32_t)((mask * UINT64_C(0x0101010101010101)) >> 56)); \
+        else if (direct)                                                                      \
+            ef_blend_span(blend, y, x0, n, (uint32_t)mask);                                   \
+        else                                                                                  \
+            span(user, y, x0, n, (uint32_t)mask);                                             \
+    } while (0)
     for (int32_t wi = xmin >> 6; wi <= xmax >> 6; wi++) {
         uint64_t bits = occ[wi];
         if (!bits)
@@ -56,10 +73,7 @@ static EF_ALWAYS_INLINE void fill_nonzero(ef_ctx *ctx, int32_t y, int32_t xmin, 
                 continue;                  /* contributions that cancelled: mask unchanged */
             if (mask && p > start) {
                 int32_t len = (p < W ? p : W) - start;
-                if (direct)
-                    ef_blend_span(blend, y, start, len, mask);
-                else
-                    span(user, y, start, len, mask);
+                NZ_SPAN(start, len);
             }
             mask = 0;
             for (int w = 0; w < words; w++) {
@@ -73,7 +87,10 @@ static EF_ALWAYS_INLINE void fill_nonzero(ef_ctx *ctx, int32_t y, int32_t xmin, 
                 }
                 acc[w] = sum;
                 cell[w] = 0;                   /* clear-on-read */
-                mask |= lanes_nonzero(sum) << (8 * w);
+                if (by_count)
+                    mask += ((sum + EF_LANES7) & EF_PADS) >> 7;
+                else
+                    mask |= (uint64_t)lanes_nonzero(sum) << (8 * w);
             }
             start = p;
         } while (bits);
@@ -81,11 +98,9 @@ static EF_ALWAYS_INLINE void fill_nonzero(ef_ctx *ctx, int32_t y, int32_t xmin, 
     ctx->diag.winding_overflows += overflows;
     if (mask && start < W) {
         int32_t end = xmax + 1 < W ? xmax + 1 : W;
-        if (direct)
-            ef_blend_span(blend, y, start, end - start, mask);
-        else
-            span(user, y, start, end - start, mask);
+        NZ_SPAN(start, end - start);
     }
+#undef NZ_SPAN
 }
 
 #define FILL_NZ(words, check)                                                  \

@@ -252,38 +252,50 @@ static inline uint32_t ef_load32(const uint8_t *p)
     return v;
 }
 
-/* Composites the span [x, x+len) of row y with coverage mask `mask` (spec
- * 7.3 + 8): one call per filler span, inlined into the fillers. */
+/* Composites the span [x, x+len) of row y (spec 7.3 + 8): full says that
+ * every sample is covered, else cov is the coverage alpha.  Inlined into the
+ * fillers through ef_blend_span (by mask) and ef_blend_span_n (by count). */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline void ef_blend_span(const ef_blend *b, int32_t y, int32_t x, int32_t len, uint32_t mask)
+static inline void ef_blend_span_cov(const ef_blend *b, int32_t y, int32_t x, int32_t len, int full, uint32_t cov)
 {
     uint8_t *d = b->px + (size_t)y * b->stride + (size_t)x * 4;
     uint64_t s4;
     uint32_t sa;
-    if (mask == b->full) {
+    if (full) {
         if (b->a == 255) {
-            /* d' = d + P - mul(d, 255) = P: a plain fill, two pixels a store */
-            uint64_t two = (uint64_t)b->solid * UINT64_C(0x0000000100000001);
-            if (len >= 16) {
+            /* d' = d + P - mul(d, 255) = P: a plain fill.  Every pixel gets
+             * the same 4 bytes, so stores may overlap: a span is covered by
+             * whole blocks from its start plus one block ending at its end,
+             * with few branches (loop exits on data-dependent lengths
+             * mispredict). */
+            uint8_t *const e = d + (size_t)len * 4;
+            if (len >= 8) {
                 uint32_t pat[8];             /* a local copy: cannot alias d */
                 memcpy(pat, b->solid8, sizeof pat);
-                for (; len >= 16; len -= 16, d += 64) {
+                for (; d < e - 32; d += 32)
                     memcpy(d, pat, 32);      /* compilers emit wide stores */
-                    memcpy(d + 32, pat, 32);
+                memcpy(e - 32, pat, 32);
+            } else if (len >= 2) {
+                const uint64_t two = (uint64_t)b->solid * UINT64_C(0x0000000100000001);
+                if (len >= 4) {
+                    memcpy(d, &two, 8);
+                    memcpy(d + 8, &two, 8);
+                    memcpy(e - 16, &two, 8);
+                    memcpy(e - 8, &two, 8);
+                } else {
+                    memcpy(d, &two, 8);
+                    memcpy(e - 8, &two, 8);
                 }
-            }
-            for (; len >= 2; len -= 2, d += 8)
-                memcpy(d, &two, 8);
-            if (len)
+            } else {
                 memcpy(d, &b->solid, 4);
+            }
             return;
         }
         s4 = b->p4;         /* mul(P, 255) = P */
         sa = b->a;
     } else {
-        uint32_t cov = b->samples == 8 ? b->alpha8[mask] : b->alpha_n[ef_popcount32(mask)];
         s4 = ef_mul255x4(b->p4, cov);
         /* mul(a, cov) computed directly: which lane holds the alpha byte
          * depends on the host's byte order (found on s390x by make portability). */
@@ -294,6 +306,26 @@ static inline void ef_blend_span(const ef_blend *b, int32_t y, int32_t x, int32_
         uint32_t v = ef_pack4((dd + s4 - ef_mul255x4(dd, sa)) & EF_LANE8X4);
         memcpy(d, &v, 4);
     }
+}
+
+/* ef_blend_span_cov for coverage mask `mask`. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void ef_blend_span(const ef_blend *b, int32_t y, int32_t x, int32_t len, uint32_t mask)
+{
+    const int full = mask == b->full;
+    const uint32_t cov = full ? 0 : b->samples == 8 ? b->alpha8[mask] : b->alpha_n[ef_popcount32(mask)];
+    ef_blend_span_cov(b, y, x, len, full, cov);
+}
+
+/* ef_blend_span_cov for n covered samples, 1 <= n <= N. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void ef_blend_span_n(const ef_blend *b, int32_t y, int32_t x, int32_t len, uint32_t n)
+{
+    ef_blend_span_cov(b, y, x, len, (int)n == b->samples, b->alpha_n[n]);
 }
 
 #endif /* EF_INTERNAL_H */

@@ -70,9 +70,9 @@ static EF_ALWAYS_INLINE void load_offsets(const ef_ctx *ctx, int32_t *off, const
  * term's overflow is data-dependent and would mispredict about half the time. */
 #define DDA_STEP()                                \
     do {                                          \
-        int32_t ee_ = e + rs;                     \
-        int32_t carry_ = ee_ >= dy;               \
-        e = ee_ - (dy & -carry_);                 \
+        const int32_t ee_ = e + rs, et_ = ee_ - dy; \
+        const int32_t carry_ = et_ >= 0;          \
+        e = carry_ ? et_ : ee_;                   \
         x += qs + carry_;                         \
     } while (0)
 
@@ -189,10 +189,23 @@ static EF_ALWAYS_INLINE void plot_edge_row(ef_ctx *ctx, const int32_t *off, int3
             const uint32_t b = ((uint32_t)(xa < xl ? xl : xa) >> EF_DEV_FRAC_BITS) + 1;   /* <= W */
             mark_occ_range(occ, a, b);
         } else {
+            /* A partial row: s0..s1 only.  For N >= 16 (more samples a row)
+             * the occupancy range is marked once, as for a full row; for
+             * N = 8 a bit per sample costs less (measured). */
+            int32_t xl = x;
             for (int s = s0; s <= s1; s++) {
                 const uint32_t q = (uint32_t)(x + off[s]) >> EF_DEV_FRAC_BITS;
-                PLOT_CELL(q, s);
+                if (NS >= 16)
+                    PLOT_CELL_NOOCC(q, s);
+                else
+                    PLOT_CELL(q, s);
+                xl = x;
                 DDA_STEP();
+            }
+            if (NS >= 16) {
+                const uint32_t a = (uint32_t)(xa < xl ? xa : xl) >> EF_DEV_FRAC_BITS;
+                const uint32_t b = ((uint32_t)(xa < xl ? xl : xa) >> EF_DEV_FRAC_BITS) + 1;   /* <= W */
+                mark_occ_range(occ, a, b);
             }
         }
     } else if (EF_FAST_PATH && mode == EF_PLOT_INSIDE) {
