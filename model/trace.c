@@ -28,7 +28,7 @@ ef_status ef_trace_enable(ef_ctx *ctx, uint32_t iface_mask, ef_txn_fn sink, void
     for (int i = 0; i < EF_IF_COUNT; i++) {
         const ef_iface_desc *d = ef_iface_get(i);
         unsigned lsb = 0;
-        for (unsigned k = d->nfields; k-- > 0;) {
+        for (int k = d->nfields - 1; k >= 0; k--) {   /* the last field is the least significant */
             tr->lsb[i][k] = (uint16_t)lsb;
             lsb += d->field[k].width;
         }
