@@ -24,6 +24,8 @@ enum {
 int ef_cli_render(int argc, char **argv);
 int ef_cli_patterns(int argc, char **argv);
 int ef_cli_gen(int argc, char **argv);     /* cmd_gen.c, docs/gen.md */
+int ef_cli_check(int argc, char **argv);   /* cmd_check.c, docs/vectors.md section 7 */
+int ef_cli_vectors(int argc, char **argv); /* cmd_vectors.c, docs/vectors.md */
 
 /* The subcommands' option parsers, separate from what the commands do so that
  * tests/fuzz/fuzz_cli_args.c can drive them without touching any file.  Each
@@ -44,6 +46,29 @@ typedef struct ef_cli_patterns_args {
     int emit_c;
 } ef_cli_patterns_args;
 int ef_cli_patterns_parse(int argc, char **argv, ef_cli_patterns_args *a);
+
+typedef struct ef_cli_check_args {
+    const char *expected, *actual;
+    int32_t errors;             /* mismatches reported: 20 (default), 0 = all */
+    int cycles;                 /* 1: --cycles (default); 0: --transactions */
+    const char *junit;          /* --junit FILE, or NULL */
+    const char *diff_image;     /* --diff-image FILE, or NULL */
+    ef_cli_format diff_fmt;     /* its format (.png, or .pam without libpng) */
+} ef_cli_check_args;
+int ef_cli_check_parse(int argc, char **argv, ef_cli_check_args *a);
+
+/* `edgeflag vectors`: formats are EF_CLI_VEC_* bits, interfaces ef_iface bits. */
+enum { EF_CLI_VEC_HEX = 1, EF_CLI_VEC_VCD = 2, EF_CLI_VEC_BIN = 4, EF_CLI_VEC_ALL = 7 };
+typedef struct ef_cli_vectors_args {
+    const char *input, *dir;
+    int32_t samples;            /* 8 (default), 16 or 32 */
+    int rule;                   /* -1: each shape's own; else an ef_rule */
+    int32_t fit_w, fit_h;       /* 0, 0: the file's own size */
+    unsigned formats;           /* default EF_CLI_VEC_ALL */
+    uint32_t ifaces;            /* default every interface */
+    int force;
+} ef_cli_vectors_args;
+int ef_cli_vectors_parse(int argc, char **argv, ef_cli_vectors_args *a);
 
 /* Exact decimal integer: one or more ASCII digits and nothing else (no sign,
  * no spaces, no base prefix), value in [min, max].  Returns 1 and stores it,

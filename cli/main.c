@@ -19,6 +19,8 @@ static const command commands[] = {
     { "render", ef_cli_render, "rasterize an SVG or .scene file to PNG, PAM or PGM" },
     { "patterns", ef_cli_patterns, "search and print the n-rooks sample patterns" },
     { "gen", ef_cli_gen, "write seeded regression scenes (directed corner cases, random)" },
+    { "vectors", ef_cli_vectors, "write cycle-level test vectors (hex, VCD, binary) of a scene" },
+    { "check", ef_cli_check, "compare an RTL's vector dumps with the expected vectors" },
 };
 #define NCOMMANDS (sizeof commands / sizeof commands[0])
 

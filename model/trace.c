@@ -48,7 +48,8 @@ void ef_trace_emit(ef_trace *tr, int iface, uint64_t cycle, const uint64_t *v)
     for (unsigned k = 0; k < d->nfields; k++) {
         const unsigned w = d->field[k].width, p = tr->lsb[iface][k];
         const uint64_t x = v[k] & ((UINT64_C(1) << w) - 1);       /* w <= 32 */
-        t.w[p >> 6] |= x << (p & 63);
+        /* the bits that stay in this word (x << 0 when aligned), then the rest */
+        t.w[p >> 6] |= (x & (UINT64_MAX >> (p & 63))) << (p & 63);
         if ((p & 63) + w > 64)
             t.w[(p >> 6) + 1] |= x >> (64 - (p & 63));
     }

@@ -70,5 +70,7 @@ test: deps-test
 # Robustness (issue 3): fuzzing, the bad-input catalogue, integer sanitizer, portability.
 include tests/fuzz/module.mk
 include tests/bad/module.mk
+include tests/vectors/module.mk
+include tests/check/module.mk
 include tests/sanitize/module.mk
 include tests/portability.mk

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # tests/bad/run.sh BUILD_DIR - runs the bad-input catalogue (CATALOGUE.tsv;
 # README.md explains it).  For every entry, `edgeflag render FILE -o OUT ARGS`
+# (or, for an entry whose command column says check, `edgeflag check ARGS`)
 # must:
 #   - exit with the documented code, never by a signal (no crash), within 60 s;
 #   - print "edgeflag: FILE:LINE:COL: MESSAGE" (or "edgeflag: FILE: MESSAGE"
@@ -16,8 +17,9 @@ here=$(cd "$(dirname "$0")" && pwd)
 case $build in /*) ;; *) build=$PWD/$build ;; esac
 EF=$build/edgeflag
 LC=$build/tests/tools/load_check
+VL=$build/tests/check/vec_load     # the vector readers, for the `check` entries
 ext=${EF_BAD_EXT:-png}      # .pam for a WITH_PNG=0 build
-for b in "$EF" "$LC"; do
+for b in "$EF" "$LC" "$VL"; do
     [ -x "$b" ] || { echo "bad: $b not built"; echo "0 passed, 1 failed"; exit 1; }
 done
 
@@ -35,10 +37,59 @@ bad() {
     for l in "$@"; do echo "       $l"; done
     sed 's/^/       stderr: /' err | head -n 3
 }
+# check_entry: one `edgeflag check ARGS` entry (command column "check"): the
+# exit code, the message (on stderr; stdout empty unless mismatches, which no
+# entry has), no output file, and the readers' own class and place.
+check_entry() {
+    # shellcheck disable=SC2086
+    timeout 60 "$EF" check $args >stdout 2>err
+    rc=$?
+    what="check $args"
+    msg=$(grep -v '^edgeflag: warning: ' err | grep -m1 '^edgeflag: ')
+    if [ $rc -ge 124 ]; then
+        bad "$what" "exit $rc: killed by a signal or timed out (want $want)"; return
+    fi
+    if [ "$rc" != "$want" ]; then
+        bad "$what" "exit $rc, want $want"; return
+    fi
+    if [ "$want" = 0 ]; then
+        if [ -s stdout ] || [ -n "$msg" ]; then bad "$what" "exit 0 but output or an error message"; return; fi
+    else
+        if [ "$class" = usage ]; then
+            prefix="edgeflag: check: "
+        elif [ "$where" = - ]; then
+            prefix="edgeflag: $file: "
+        else
+            prefix="edgeflag: $file:$where: "
+        fi
+        case $msg in
+        "$prefix"*) text=${msg#"$prefix"} ;;
+        *) bad "$what" "message does not start with '$prefix'"; return ;;
+        esac
+        if ! printf '%s\n' "$text" | grep -Eq -- "$regex"; then
+            bad "$what" "message '$text' does not match /$regex/"; return
+        fi
+    fi
+    if [ "$class" != usage ]; then
+        # shellcheck disable=SC2086
+        got=$("$VL" $args)
+        gclass=$(printf '%s' "$got" | cut -f1) gwhere=$(printf '%s' "$got" | cut -f2)
+        if [ "$gclass" != "$class" ] || [ "$gwhere" != "$where" ]; then
+            bad "$what" "library says '$gclass' at $gwhere, want '$class' at $where"; return
+        fi
+    fi
+    pass=$((pass + 1))
+    echo "ok   - $what -> $want${class:+ ($class)}"
+}
+
 n=0
-while IFS=$'\t' read -r file want class regex where args; do
+while IFS=$'\t' read -r file want class regex where args command; do
     case $file in ''|'#'*|file) continue ;; esac
     n=$((n + 1))
+    if [ "${command:-render}" = check ]; then
+        check_entry
+        continue
+    fi
     out=out$n.$ext
     # shellcheck disable=SC2086
     timeout 60 "$EF" render "$file" -o "$out" $args >stdout 2>err

@@ -1,13 +1,14 @@
 /*
  * fuzz_cli_args.c - libFuzzer target for the command line's parsers
- * (cli/args.c and the option parsers of `render` and `patterns`).
+ * (cli/args.c and the option parsers of `render`, `patterns`, `check` and
+ * `vectors`).
  *
  * The whole input, as one string, goes to ef_cli_parse_int (several ranges)
  * and ef_cli_parse_size, each checked against a reference written here from
  * docs/cli.md ("decimal digits only, no sign, no spaces, no trailing
  * characters; a lower-case x separates the size").  Then the input, split at
- * newlines, is an argument vector for `edgeflag render ...` and `edgeflag
- * patterns ...`: a parse that succeeds must leave a complete, valid request
+ * newlines, is an argument vector for `edgeflag render ...`, `edgeflag
+ * patterns ...` and `edgeflag check ...`: a parse that succeeds must leave a complete, valid request
  * (an input, an output with a known format, N in {8, 16, 32}, a rule, a size
  * in range or none); any other result is 0 (help) or 2 (usage error), and the
  * same vector gives the same answer twice.  Nothing is read or written: the
@@ -117,6 +118,92 @@ static void check_patterns(int argc, char **argv)
     if (a.samples != b.samples || a.emit_c != b.emit_c) FAIL("patterns: two parses differ");
 }
 
+static void check_check(int argc, char **argv)
+{
+    ef_cli_check_args a, b;
+    int rc = ef_cli_check_parse(argc, argv, &a);
+    int rc2 = ef_cli_check_parse(argc, argv, &b);
+    if (rc != rc2) FAIL("check: %d then %d", rc, rc2);
+    if (has_help(argc, argv) != (rc == EF_CLI_EXIT_OK)) FAIL("check: --help and exit %d disagree", rc);
+    if (rc != -1 && rc != EF_CLI_EXIT_OK && rc != EF_CLI_EXIT_USAGE) FAIL("check: exit code %d", rc);
+    if (rc != -1) return;
+    if (!a.expected || !a.actual) FAIL("check: accepted without two files");
+    if (a.errors < 0) FAIL("check: --errors %" PRId32, a.errors);
+    if (a.cycles != 0 && a.cycles != 1) FAIL("check: cycles %d", a.cycles);
+    if (a.junit && !a.junit[0]) FAIL("check: empty --junit accepted");
+    if (a.diff_image && (!ef_cli_format_available(a.diff_fmt) || a.diff_fmt != ef_cli_format_from_path(a.diff_image) ||
+                         (a.diff_fmt != EF_CLI_FMT_PNG && a.diff_fmt != EF_CLI_FMT_PAM)))
+        FAIL("check: --diff-image '%s' accepted with format %d", a.diff_image, (int)a.diff_fmt);
+    if (a.junit && a.diff_image && strcmp(a.junit, a.diff_image) == 0) FAIL("check: one file for both outputs");
+    if (a.expected != b.expected || a.actual != b.actual || a.errors != b.errors || a.cycles != b.cycles ||
+        a.junit != b.junit || a.diff_image != b.diff_image)
+        FAIL("check: two parses differ");
+}
+
+/* `vectors`: the value of option `name` (as "NAME V" or "NAME=V") before any
+ * "--", skipping the values of the options that take one; NULL if absent. */
+static const char *vec_option(int argc, char **argv, const char *name)
+{
+    static const char *const valued[] = { "-o", "--output", "--samples", "--rule", "--size", "--formats", "--interfaces" };
+    const size_t n = strlen(name);
+    for (int i = 1; i < argc && strcmp(argv[i], "--") != 0; i++) {
+        if (strncmp(argv[i], name, n) == 0 && argv[i][n] == '=') return argv[i] + n + 1;
+        if (strcmp(argv[i], name) == 0) return i + 1 < argc ? argv[i + 1] : NULL;
+        for (size_t k = 0; k < sizeof valued / sizeof valued[0]; k++)
+            if (strcmp(argv[i], valued[k]) == 0) { i++; break; }
+    }
+    return NULL;
+}
+
+/* docs/vectors.md: a comma-separated list of known names, each at most once. */
+static bool ref_list(const char *v, const char *const *names, int n, uint32_t *mask)
+{
+    uint32_t m = 0;
+    for (;;) {
+        const char *comma = strchr(v, ',');
+        size_t len = comma ? (size_t)(comma - v) : strlen(v);
+        int k = 0;
+        while (k < n && !(strlen(names[k]) == len && memcmp(names[k], v, len) == 0)) k++;
+        if (k == n || (m >> k & 1u)) return false;
+        m |= 1u << k;
+        if (!comma) break;
+        v = comma + 1;
+    }
+    *mask = m;
+    return true;
+}
+
+static void check_vectors(int argc, char **argv)
+{
+    static const char *const formats[] = { "hex", "vcd", "bin" };
+    static const char *const ifaces[] = { "cmd", "edge", "et_wr", "et_rd", "plot", "span", "pix" };
+    ef_cli_vectors_args a, b;
+    int rc = ef_cli_vectors_parse(argc, argv, &a);
+    int rc2 = ef_cli_vectors_parse(argc, argv, &b);
+    if (rc != rc2) FAIL("vectors: %d then %d", rc, rc2);
+    if (has_help(argc, argv) != (rc == EF_CLI_EXIT_OK)) FAIL("vectors: --help and exit %d disagree", rc);
+    if (rc != -1 && rc != EF_CLI_EXIT_OK && rc != EF_CLI_EXIT_USAGE) FAIL("vectors: exit code %d", rc);
+    if (rc != -1) return;
+    if (!a.input || !a.dir || !a.dir[0]) FAIL("vectors: accepted without input or directory");
+    if (!ef_samples_valid(a.samples)) FAIL("vectors: accepted %" PRId32 " samples", a.samples);
+    if (a.rule != -1 && a.rule != EF_RULE_NONZERO && a.rule != EF_RULE_EVENODD) FAIL("vectors: rule %d", a.rule);
+    if (!((a.fit_w == 0 && a.fit_h == 0) ||
+          (a.fit_w >= 1 && a.fit_w <= EF_MAX_CANVAS && a.fit_h >= 1 && a.fit_h <= EF_MAX_CANVAS)))
+        FAIL("vectors: size %" PRId32 "x%" PRId32, a.fit_w, a.fit_h);
+    if (a.force != 0 && a.force != 1) FAIL("vectors: force %d", a.force);
+    /* The lists against the reference: default all, else exactly the names given. */
+    const char *fv = vec_option(argc, argv, "--formats"), *iv = vec_option(argc, argv, "--interfaces");
+    uint32_t want_f = EF_CLI_VEC_ALL, want_i = (1u << 7) - 1u;
+    if ((fv && !ref_list(fv, formats, 3, &want_f)) || (iv && !ref_list(iv, ifaces, 7, &want_i)))
+        FAIL("vectors: accepted --formats '%s' / --interfaces '%s'", fv ? fv : "", iv ? iv : "");
+    if (a.formats != want_f || a.ifaces != want_i)
+        FAIL("vectors: formats %u interfaces %u, reference %u %u", a.formats, (unsigned)a.ifaces, (unsigned)want_f,
+             (unsigned)want_i);
+    if (a.samples != b.samples || a.rule != b.rule || a.fit_w != b.fit_w || a.fit_h != b.fit_h || a.input != b.input ||
+        a.dir != b.dir || a.formats != b.formats || a.ifaces != b.ifaces || a.force != b.force)
+        FAIL("vectors: two parses differ");
+}
+
 int LLVMFuzzerInitialize(int *argc, char ***argv);
 int LLVMFuzzerInitialize(int *argc, char ***argv)
 {
@@ -152,11 +239,16 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         p = nl + 1;
     }
     argv[argc] = NULL;
-    char render[] = "render", patterns[] = "patterns";
+    char render[] = "render", patterns[] = "patterns", check[] = "check";
     argv[0] = render;
     check_render(argc, argv);
     argv[0] = patterns;
     check_patterns(argc, argv);
+    argv[0] = check;
+    check_check(argc, argv);
+    char vectors[] = "vectors";
+    argv[0] = vectors;
+    check_vectors(argc, argv);
     free(s);
     return 0;
 }

@@ -12,8 +12,8 @@ FUZZ_BUILD ?= build-fuzz
 FUZZ_CC ?= clang
 FUZZ_SECONDS ?= 60
 FUZZ_SMOKE_SECONDS ?= 10
-FUZZ_TARGETS ?= svg scene cli_args decimal render
-FUZZ_ALL := svg scene cli_args decimal render
+FUZZ_TARGETS ?= svg scene cli_args decimal render vec_read
+FUZZ_ALL := svg scene cli_args decimal render vec_read
 # ASan + UBSan, plus clang's integer checks with the intended wraps listed in
 # tests/sanitize/integer.ignorelist (as in `make test-integer`).
 FUZZ_SAN := -fsanitize=address,undefined,integer -fsanitize-ignorelist=tests/sanitize/integer.ignorelist \
@@ -24,6 +24,9 @@ FUZZ_BINS := $(FUZZ_ALL:%=$(BUILD)/fuzz/fuzz_%)
 # 2^20, so every input stays well inside libFuzzer's 10 s timeout and the
 # limit itself is reached often.
 FUZZ_DEFS := -DEF_IN_MAX_WORK_LOG2=20u
+# The vector readers stream files in chunks (64 KiB); the fuzz build reads
+# them 7 bytes at a time, so every token and record crosses a chunk boundary.
+FUZZ_DEFS += -DEF_VR_CHUNK=7u
 
 .PHONY: fuzz fuzz-build fuzz-bins fuzz-merge test-fuzz-smoke test-fuzz-replay
 
@@ -42,11 +45,13 @@ fuzz-bins: $(FUZZ_BINS)
 FUZZ_CLI_OBJ = $(filter-out $(BUILD)/cli/main.o,$(CLI_OBJ))
 $(BUILD)/fuzz/fuzz_render: $(ORACLE_OBJ)
 $(BUILD)/fuzz/fuzz_cli_args: $(FUZZ_CLI_OBJ)
+$(BUILD)/fuzz/fuzz_vec_read: $(RTLV_OBJ)
 $(BUILD)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/fuzz_common.h $(LIB_A)
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) -Itests/fuzz -Itests/oracle -Icli $(CFLAGS_ALL) -fsanitize=fuzzer $< \
 	    $(if $(filter fuzz_render,$(notdir $@)),$(ORACLE_OBJ)) \
 	    $(if $(filter fuzz_cli_args,$(notdir $@)),$(FUZZ_CLI_OBJ)) \
+	    $(if $(filter fuzz_vec_read,$(notdir $@)),$(RTLV_OBJ)) \
 	    -o $@ $(LDFLAGS_ALL) $(LIB_A) $(PNG_LIBS) $(EXPAT_LIBS)
 
 fuzz: fuzz-build

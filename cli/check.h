@@ -1,0 +1,86 @@
+/*
+ * check.h - the pieces of `edgeflag check` (docs/vectors.md section 7):
+ * cmd_check.c runs the command (options, a pair of files, exit code),
+ * check_dir.c pairs the files of two directories,
+ * check_compare.c aligns and reports one interface's transactions,
+ * check_junit.c writes the JUnit XML, check_image.c the diff image.
+ */
+#ifndef EF_CLI_CHECK_H
+#define EF_CLI_CHECK_H
+
+#include <stdint.h>
+#include <stdio.h>
+
+#include "cli.h"
+#include "ef_vec_read.h"
+
+/* One JUnit test case: one interface of one pair of files. */
+typedef struct chk_case {
+    char *classname;        /* "EXPECTED vs ACTUAL" */
+    char *name;             /* the interface */
+    uint64_t expected, actual;  /* transactions on each side */
+    uint64_t mismatches;
+    char *text;             /* the reported mismatch lines (a failure's body) */
+    size_t text_len, text_cap;
+    char *error;            /* malformed or unreadable input (an <error>), or NULL */
+    uint64_t ns;            /* time taken */
+} chk_case;
+
+/* A run of pixels to mark in the diff image. */
+typedef struct chk_mark {
+    int32_t y, x, len;
+} chk_mark;
+
+typedef struct chk_run {
+    const ef_cli_check_args *a;
+    FILE *out;              /* mismatch lines (stdout) */
+    uint64_t mismatches;    /* in all, exact */
+    uint64_t reported;      /* lines printed (at most --errors unless 0) */
+    int oom;                /* an allocation failed: exit 70 */
+    chk_case *cases;
+    size_t ncases, capcases;
+    /* --diff-image */
+    int32_t width, height;  /* frame size from a header or the manifest, 0 if none yet */
+    chk_mark *marks;
+    size_t nmarks, capmarks;
+    ef_vec_dump bg;         /* the expected pix (the picture under the marks) */
+    int have_bg;
+} chk_run;
+
+/* cmd_check.c: reads EXPECTED file ep (mf: its manifest entry in mname, or
+ * NULL) and, when ap is not NULL, ACTUAL file ap, and compares every
+ * interface both hold.  0, or the exit code of an input error (reported). */
+int chk_pair(chk_run *r, const char *ep, const char *ap, const ef_vec_manifest_file *mf, const char *mname);
+/* check_dir.c: two directories (r->a->expected, r->a->actual); as chk_pair. */
+int chk_dirs(chk_run *r);
+/* Reports an input error on stderr and as a JUnit <error>; the exit code
+ * (2, or 70 for EF_ERR_NOMEM).  chk_read_error formats a reader's error. */
+int chk_input_error(chk_run *r, ef_status st, const char *msg, const char *ename, const char *aname);
+int chk_read_error(chk_run *r, ef_status st, const ef_vec_read_error *err, const char *ename, const char *aname);
+/* "dir/name" (malloc'ed, NULL when out of memory); whether path is a file. */
+char *chk_join(const char *dir, const char *name);
+int chk_is_file(const char *path);
+
+/* Adds a test case; NULL when out of memory (r->oom set). */
+chk_case *chk_case_add(chk_run *r, const char *ename, const char *aname, const char *iface);
+
+/* Compares interface iface of e (file ename) and a (file aname) into tc:
+ * aligns the two sequences by content in order, reports each mismatch on
+ * r->out (while under --errors) and counts every one. */
+void chk_compare(chk_run *r, chk_case *tc, int iface, const ef_vec_dump *e, const char *ename, const ef_vec_dump *a,
+                 const char *aname);
+
+/* Writes the JUnit XML of r's cases to path atomically; 0, or -1 with errno. */
+int chk_junit_write(const chk_run *r, const char *path);
+
+/* Records the pixels of a pix/span transaction for the diff image. */
+void chk_mark_txn(chk_run *r, const ef_txn *t);
+
+/* Draws the expected frame with the marks and writes it atomically; 0, or
+ * -1 with a message in err. */
+int chk_image_write(chk_run *r, const char *path, ef_cli_format fmt, char *err, size_t errsize);
+
+/* Monotonic nanoseconds (JUnit times; integers only). */
+uint64_t chk_now_ns(void);
+
+#endif /* EF_CLI_CHECK_H */

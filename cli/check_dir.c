@@ -1,0 +1,176 @@
+/*
+ * check_dir.c - `edgeflag check` on two directories (docs/vectors.md section
+ * 7): which expected files there are (the manifest's, or without one every
+ * *.expected.hex and vectors.bin, with a warning) and which file of ACTUAL
+ * each is compared with (IFACE.actual.hex, else IFACE.expected.hex;
+ * vectors.bin).  A manifest's names were checked to be plain file names by
+ * its reader, so nothing outside EXPECTED is ever opened.
+ */
+#include "check.h"
+
+#include <dirent.h>
+#include <errno.h>
+#include <inttypes.h>
+#include <stdlib.h>
+#include <string.h>
+
+static int ends_with(const char *s, const char *suffix)
+{
+    size_t n = strlen(s), k = strlen(suffix);
+    return n >= k && strcmp(s + n - k, suffix) == 0;
+}
+
+/* ACTUAL's counterpart of EXPECTED's file `name`: vectors.bin, or for
+ * STEM.expected.hex STEM.actual.hex, else STEM.expected.hex.  NULL if none. */
+static char *counterpart(const char *adir, const char *name)
+{
+    if (ends_with(name, ".bin")) {
+        char *p = chk_join(adir, name);
+        if (p && !chk_is_file(p)) {
+            free(p);
+            p = NULL;
+        }
+        return p;
+    }
+    size_t stem = ends_with(name, ".expected.hex") ? strlen(name) - strlen(".expected.hex") : strlen(name);
+    static const char *const suffix[2] = { ".actual.hex", ".expected.hex" };
+    for (int k = 0; k < 2; k++) {
+        char *nm = malloc(stem + strlen(suffix[k]) + 1);
+        if (!nm)
+            return NULL;
+        memcpy(nm, name, stem);
+        strcpy(nm + stem, suffix[k]);
+        char *p = chk_join(adir, nm);
+        free(nm);
+        if (p && chk_is_file(p))
+            return p;
+        free(p);
+    }
+    return NULL;
+}
+
+static int cmp_names(const void *x, const void *y)
+{
+    return strcmp(*(char *const *)x, *(char *const *)y);
+}
+
+/* Without a manifest: EXPECTED's *.expected.hex and vectors.bin, sorted. */
+static int scan_dir(const char *dir, char ***names, size_t *n)
+{
+    DIR *d = opendir(dir);
+    struct dirent *de;
+    size_t cap = 0;
+    *names = NULL;
+    *n = 0;
+    if (!d)
+        return -1;
+    while ((de = readdir(d)) != NULL) {
+        if (!ends_with(de->d_name, ".expected.hex") && strcmp(de->d_name, "vectors.bin") != 0)
+            continue;
+        char **nn = *n < cap ? *names : realloc(*names, (cap = cap ? cap * 2 : 16) * sizeof *nn);
+        char *nm = nn ? malloc(strlen(de->d_name) + 1) : NULL;
+        if (nn)
+            *names = nn;
+        if (!nm) {   /* out of memory: no partial list (a missed file would pass silently) */
+            closedir(d);
+            while (*n > 0)
+                free((*names)[--*n]);
+            free(*names);
+            *names = NULL;
+            errno = ENOMEM;
+            return -1;
+        }
+        strcpy(nm, de->d_name);
+        (*names)[(*n)++] = nm;
+    }
+    closedir(d);
+    if (*n)
+        qsort(*names, *n, sizeof **names, cmp_names);
+    return 0;
+}
+
+/* One expected file of the directory; *compared counts the pairs run. */
+static int dir_entry(chk_run *r, const char *name, const ef_vec_manifest_file *mf, const char *mname, int *compared)
+{
+    const char *E = r->a->expected, *A = r->a->actual;
+    char *ep = chk_join(E, name), *ap = counterpart(A, name);
+    int rc = 0;
+    if (!ep) {
+        free(ap);
+        return EF_CLI_EXIT_INTERNAL;
+    }
+    if (mf && !chk_is_file(ep)) {
+        char buf[1024];
+        snprintf(buf, sizeof buf, "%s:%" PRIu64 ":%" PRIu64 ": the manifest names '%s', which is not in %s", mname,
+                 mf->line, mf->col, name, E);
+        rc = chk_input_error(r, EF_ERR_SYNTAX, buf, ep, "-");
+    } else if (ap) {
+        rc = chk_pair(r, ep, ap, mf, mname);
+        ++*compared;
+    } else {
+        fprintf(stderr, "edgeflag check: %s: no counterpart in %s, not compared\n", ep, A);
+        /* Still the picture under the marks of --diff-image. */
+        if (r->a->diff_image && !r->have_bg && ef_vec_iface_from_name(name) == EF_IF_PIX)
+            rc = chk_pair(r, ep, NULL, mf, mname);
+    }
+    free(ep);
+    free(ap);
+    return rc;
+}
+
+int chk_dirs(chk_run *r)
+{
+    const char *E = r->a->expected;
+    char *mpath = chk_join(E, "manifest.json");
+    ef_vec_manifest m;
+    ef_vec_read_error err;
+    int rc = 0, compared = 0;
+
+    memset(&m, 0, sizeof m);
+    if (!mpath)
+        return EF_CLI_EXIT_INTERNAL;
+    if (chk_is_file(mpath)) {
+        ef_status st = ef_vec_read_manifest_path(mpath, NULL, &m, &err);
+        if (st != EF_OK) {
+            rc = chk_read_error(r, st, &err, mpath, r->a->actual);
+            free(mpath);
+            return rc;
+        }
+        r->width = m.width;
+        r->height = m.height;
+        for (size_t k = 0; k < m.nfiles && rc == 0; k++) {
+            const ef_vec_manifest_file *f = &m.files[k];
+            int bin = (f->format && strcmp(f->format, "bin") == 0) || ends_with(f->name, ".bin");
+            int hex = !bin && (!f->format || strcmp(f->format, "hex") == 0) &&
+                      (f->role ? strcmp(f->role, "expected") == 0 : ends_with(f->name, ".expected.hex"));
+            if (bin || hex)
+                rc = dir_entry(r, f->name, f, mpath, &compared);
+        }
+    } else {
+        char **names;
+        size_t n;
+        fprintf(stderr, "edgeflag: warning: %s has no manifest.json (an incomplete `edgeflag vectors` run?): "
+                        "comparing its *.expected.hex and vectors.bin\n", E);
+        if (scan_dir(E, &names, &n) != 0) {
+            char buf[1024];
+            int saved = errno;
+            snprintf(buf, sizeof buf, "%s: cannot read the directory: %s", E, strerror(saved));
+            rc = chk_input_error(r, saved == ENOMEM ? EF_ERR_NOMEM : EF_ERR_IO, buf, E, r->a->actual);
+        }
+        for (size_t k = 0; k < n; k++) {
+            if (rc == 0)
+                rc = dir_entry(r, names[k], NULL, NULL, &compared);
+            free(names[k]);
+        }
+        free(names);
+    }
+    if (rc == 0 && compared == 0) {
+        char buf[1024];
+        snprintf(buf, sizeof buf, "%s: nothing to compare: no IFACE.actual.hex, IFACE.expected.hex or vectors.bin "
+                 "matching an expected file of %s", r->a->actual, E);
+        rc = chk_input_error(r, EF_ERR_SYNTAX, buf, E, r->a->actual);
+    }
+    ef_vec_manifest_free(&m);
+    free(mpath);
+    return rc;
+}

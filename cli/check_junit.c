@@ -1,0 +1,144 @@
+/*
+ * check_junit.c - `edgeflag check --junit FILE`: the comparison as JUnit XML
+ * for CI (Jenkins, GitLab, GitHub annotators all read this shape): one
+ * <testcase> per interface of each pair of files, a <failure> holding the
+ * mismatch lines that were reported, an <error> for an input that could not
+ * be read.  File names and messages are escaped so the document is always
+ * well-formed XML 1.0: markup characters as entities, valid UTF-8 as is,
+ * control characters and stray bytes (which XML 1.0 cannot hold at all) as
+ * the text "\xNN".  Times are integer nanoseconds printed as seconds with
+ * three decimals (no floating point).  Written atomically.
+ */
+#include "check.h"
+
+#include "atomic_file.h"
+
+#include <errno.h>
+#include <inttypes.h>
+#include <string.h>
+#include <time.h>
+
+uint64_t chk_now_ns(void)
+{
+    struct timespec ts;
+    if (clock_gettime(CLOCK_MONOTONIC, &ts) != 0)
+        return 0;
+    return (uint64_t)ts.tv_sec * UINT64_C(1000000000) + (uint64_t)ts.tv_nsec;
+}
+
+/* Length of a valid UTF-8 sequence at s (no overlongs, no surrogates, at
+ * most U+10FFFF) within n bytes, or 0. */
+static size_t utf8_len(const unsigned char *s, size_t n)
+{
+    unsigned char c = s[0];
+    size_t len = c >= 0xC2 && c <= 0xDF ? 2 : c >= 0xE0 && c <= 0xEF ? 3 : c >= 0xF0 && c <= 0xF4 ? 4 : 0;
+    if (!len || len > n)
+        return 0;
+    for (size_t k = 1; k < len; k++)
+        if ((s[k] & 0xC0u) != 0x80u)
+            return 0;
+    if ((c == 0xE0 && s[1] < 0xA0) || (c == 0xED && s[1] > 0x9F) || (c == 0xF0 && s[1] < 0x90) ||
+        (c == 0xF4 && s[1] > 0x8F))
+        return 0;
+    return len;
+}
+
+/* s escaped for XML; newlines kept in text, written as &#10; in attributes. */
+static void esc(FILE *f, const char *str, int attr)
+{
+    const unsigned char *s = (const unsigned char *)(str ? str : "");
+    size_t n = strlen((const char *)s);
+    for (size_t i = 0; i < n;) {
+        unsigned char c = s[i];
+        size_t len;
+        if (c == '&')
+            fputs("&amp;", f);
+        else if (c == '<')
+            fputs("&lt;", f);
+        else if (c == '>')
+            fputs("&gt;", f);
+        else if (c == '"')
+            fputs("&quot;", f);
+        else if (c == '\'')
+            fputs("&apos;", f);
+        else if (c == '\n')
+            fputs(attr ? "&#10;" : "\n", f);
+        else if (c == '\t')
+            fputs(attr ? "&#9;" : "\t", f);
+        else if (c >= 0x20 && c < 0x7f)
+            fputc(c, f);
+        else if (c >= 0x80 && (len = utf8_len(s + i, n - i)) != 0) {
+            fwrite(s + i, 1, len, f);
+            i += len;
+            continue;
+        } else
+            fprintf(f, "\\x%02x", c);
+        i++;
+    }
+}
+
+static void put_time(FILE *f, uint64_t ns)
+{
+    const uint64_t ms = ns / 1000000u;
+    fprintf(f, "%" PRIu64 ".%03" PRIu64, ms / 1000u, ms % 1000u);
+}
+
+static void write_cases(FILE *f, const chk_run *r)
+{
+    uint64_t failures = 0, errors = 0, ns = 0;
+    for (size_t k = 0; k < r->ncases; k++) {
+        failures += !r->cases[k].error && r->cases[k].mismatches;
+        errors += r->cases[k].error != NULL;
+        ns += r->cases[k].ns;
+    }
+    fputs("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n", f);
+    fprintf(f, "<testsuites name=\"edgeflag check\" tests=\"%zu\" failures=\"%" PRIu64 "\" errors=\"%" PRIu64 "\" time=\"",
+            r->ncases, failures, errors);
+    put_time(f, ns);
+    fprintf(f, "\">\n  <testsuite name=\"edgeflag check\" tests=\"%zu\" failures=\"%" PRIu64 "\" errors=\"%" PRIu64
+               "\" skipped=\"0\" time=\"",
+            r->ncases, failures, errors);
+    put_time(f, ns);
+    fputs("\">\n", f);
+    for (size_t k = 0; k < r->ncases; k++) {
+        const chk_case *c = &r->cases[k];
+        fputs("    <testcase classname=\"", f);
+        esc(f, c->classname, 1);
+        fputs("\" name=\"", f);
+        esc(f, c->name, 1);
+        fputs("\" time=\"", f);
+        put_time(f, c->ns);
+        if (c->error) {
+            fputs("\">\n      <error type=\"unreadable input\" message=\"", f);
+            esc(f, c->error, 1);
+            fputs("\"/>\n    </testcase>\n", f);
+        } else if (c->mismatches) {
+            fprintf(f, "\">\n      <failure type=\"mismatch\" message=\"%" PRIu64 " mismatch%s (%" PRIu64
+                       " expected, %" PRIu64 " actual transactions)\">",
+                    c->mismatches, c->mismatches == 1 ? "" : "es", c->expected, c->actual);
+            esc(f, c->text, 0);
+            fprintf(f, "(%" PRIu64 " mismatch%s in all; the lines above are those reported under --errors)\n",
+                    c->mismatches, c->mismatches == 1 ? "" : "es");
+            fputs("</failure>\n    </testcase>\n", f);
+        } else {
+            fputs("\"/>\n", f);
+        }
+    }
+    fputs("  </testsuite>\n</testsuites>\n", f);
+}
+
+int chk_junit_write(const chk_run *r, const char *path)
+{
+    ef_cli_atomic af;
+    if (ef_cli_atomic_open(&af, path) != 0)
+        return -1;
+    errno = 0;
+    write_cases(af.fp, r);
+    if (ferror(af.fp)) {
+        int saved = errno ? errno : EIO;
+        ef_cli_atomic_abort(&af);
+        errno = saved;
+        return -1;
+    }
+    return ef_cli_atomic_commit(&af);
+}

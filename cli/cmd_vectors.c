@@ -1,0 +1,352 @@
+/*
+ * cmd_vectors.c - `edgeflag vectors`: a scene rendered with the timing model
+ * on (docs/microarch.md), every transfer at every interface written as test
+ * vectors (docs/vectors.md).
+ *
+ * Order of work, as in `render` and `gen`, so that a failure leaves as little
+ * as possible: the command line is checked first (a usage error touches
+ * nothing); the input is loaded (exit 3, nothing created); existing files
+ * are refused without --force before the long part; the frame is rendered
+ * and traced into memory; only then is DIR created and each file written
+ * atomically, manifest.json last (vectors_files.c).
+ */
+#include "cli.h"
+
+#include "atomic_file.h"
+#include "ef_scene.h"
+#include "ef_trace.h"
+#include "ef_vec.h"
+#include "vectors_files.h"
+
+#include <inttypes.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char *const CMD = "vectors";
+
+static void usage(FILE *f)
+{
+    fputs("usage: edgeflag vectors INPUT -o DIR [--samples 8|16|32] [--rule nonzero|evenodd]\n"
+          "                        [--size WxH] [--formats hex,vcd,bin] [--interfaces LIST] [--force]\n"
+          "\n"
+          "Renders INPUT (.svg, .scene/.txt) with the timing model of the reference\n"
+          "microarchitecture and writes every transfer at every interface, stamped with\n"
+          "its cycle, as test vectors into DIR (docs/vectors.md):\n"
+          "  IFACE.stim.hex, IFACE.expected.hex   $readmemh words {cycle[47:0], payload}\n"
+          "  vectors.vcd                          every interface signal, one clock\n"
+          "  vectors.bin                          binary stream for the host tool\n"
+          "  frame.png                            the expected image\n"
+          "  manifest.json                        files, counts, SHA-256; written last\n"
+          "\n"
+          "options:\n"
+          "  -o, --output DIR   directory to write (created with its parents if missing)\n"
+          "  --samples N        samples per pixel: 8 (default), 16 or 32\n"
+          "  --rule RULE        fill every shape with RULE (nonzero or evenodd) instead of\n"
+          "                     its own\n"
+          "  --size WxH         fit the drawing into a W x H pixel canvas (1..16384 each)\n"
+          "  --formats LIST     comma-separated subset of hex,vcd,bin (default all three)\n"
+          "  --interfaces LIST  comma-separated subset of cmd,edge,et_wr,et_rd,plot,span,pix\n"
+          "                     (default all)\n"
+          "  --force            replace existing files of the same names\n"
+          "  -h, --help         show this text\n"
+          "  --                 end of options (for an INPUT starting with '-')\n"
+          "\n"
+          "Prints one summary line on standard output.\n"
+          "exit codes: 0 ok, 2 usage, 3 bad input or over a limit, 4 output not written\n"
+          "            (or a file exists), 70 internal error\n",
+          f);
+}
+
+/* A comma-separated list of names, each known and given once: the bits of
+ * their indices in names[] (the position in the list does not matter).
+ * Returns 1, or 0 after reporting. */
+static int parse_list(const char *opt, const char *v, const char *const *names, int n, uint32_t *out)
+{
+    uint32_t bits = 0;
+    const char *p = v;
+    for (;;) {
+        const char *comma = strchr(p, ',');
+        size_t len = comma ? (size_t)(comma - p) : strlen(p);
+        int k;
+        for (k = 0; k < n; k++)
+            if (strlen(names[k]) == len && strncmp(names[k], p, len) == 0)
+                break;
+        if (k == n) {
+            char all[96] = "";
+            for (int i = 0; i < n; i++) {
+                strcat(all, i ? "," : "");
+                strcat(all, names[i]);
+            }
+            ef_cli_usage_error(CMD, "%s must be a comma-separated list of %s, not '%s'", opt, all, v);
+            return 0;
+        }
+        if (bits >> k & 1u) {
+            ef_cli_usage_error(CMD, "%s names '%s' twice", opt, names[k]);
+            return 0;
+        }
+        bits |= 1u << k;
+        if (!comma)
+            break;
+        p = comma + 1;
+    }
+    *out = bits;
+    return 1;
+}
+
+static const char *const FORMAT_NAMES[] = { "hex", "vcd", "bin" };
+
+/* Returns -1 when parsing succeeded, else the exit code to return. */
+int ef_cli_vectors_parse(int argc, char **argv, ef_cli_vectors_args *a)
+{
+    const char *iface_names[EF_IF_COUNT];
+    int i, only_positional = 0;
+    int seen_samples = 0, seen_rule = 0, seen_size = 0, seen_formats = 0, seen_ifaces = 0;
+
+    memset(a, 0, sizeof *a);
+    a->samples = 8;
+    a->rule = -1;
+    a->formats = EF_CLI_VEC_ALL;
+    a->ifaces = EF_IF_ALL;
+    for (int k = 0; k < EF_IF_COUNT; k++)
+        iface_names[k] = ef_iface_get(k)->name;
+
+    /* --help wins over anything else on the line, even earlier junk. */
+    for (i = 1; i < argc && strcmp(argv[i], "--") != 0; i++) {
+        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+            usage(stdout);
+            return EF_CLI_EXIT_OK;
+        }
+    }
+
+    for (i = 1; i < argc;) {
+        const char *arg = argv[i], *v = NULL;
+        uint32_t bits;
+        int r;
+
+        if (only_positional || arg[0] != '-' || arg[1] == '\0') {
+            if (a->input)
+                return ef_cli_usage_error(CMD, "more than one input ('%s' and '%s')", a->input, arg);
+            a->input = arg;
+            i++;
+            continue;
+        }
+        if (strcmp(arg, "--") == 0) {
+            only_positional = 1;
+            i++;
+            continue;
+        }
+        if (strcmp(arg, "--force") == 0) {
+            if (a->force++)
+                return ef_cli_usage_error(CMD, "--force given twice");
+            i++;
+        } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "-o", &v)) != 0 ||
+                   (r = ef_cli_option_value(CMD, argc, argv, &i, "--output", &v)) != 0) {
+            if (r < 0)
+                return EF_CLI_EXIT_USAGE;
+            if (a->dir)
+                return ef_cli_usage_error(CMD, "output directory given twice");
+            if (!*v)
+                return ef_cli_usage_error(CMD, "empty output directory name");
+            a->dir = v;
+        } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "--samples", &v)) != 0) {
+            if (r < 0)
+                return EF_CLI_EXIT_USAGE;
+            if (seen_samples++)
+                return ef_cli_usage_error(CMD, "--samples given twice");
+            if (!ef_cli_parse_int(v, 1, 32, &a->samples) || !ef_samples_valid(a->samples))
+                return ef_cli_usage_error(CMD, "--samples must be 8, 16 or 32, not '%s'", v);
+        } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "--rule", &v)) != 0) {
+            if (r < 0)
+                return EF_CLI_EXIT_USAGE;
+            if (seen_rule++)
+                return ef_cli_usage_error(CMD, "--rule given twice");
+            if (strcmp(v, "evenodd") == 0)
+                a->rule = EF_RULE_EVENODD;
+            else if (strcmp(v, "nonzero") == 0)
+                a->rule = EF_RULE_NONZERO;
+            else
+                return ef_cli_usage_error(CMD, "--rule must be nonzero or evenodd, not '%s'", v);
+        } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "--size", &v)) != 0) {
+            if (r < 0)
+                return EF_CLI_EXIT_USAGE;
+            if (seen_size++)
+                return ef_cli_usage_error(CMD, "--size given twice");
+            if (!ef_cli_parse_size(v, EF_MAX_CANVAS, &a->fit_w, &a->fit_h))
+                return ef_cli_usage_error(CMD, "--size must be WxH with 1 <= W, H <= %d, not '%s'",
+                                          EF_MAX_CANVAS, v);
+        } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "--formats", &v)) != 0) {
+            if (r < 0)
+                return EF_CLI_EXIT_USAGE;
+            if (seen_formats++)
+                return ef_cli_usage_error(CMD, "--formats given twice");
+            if (!parse_list("--formats", v, FORMAT_NAMES, 3, &bits))
+                return EF_CLI_EXIT_USAGE;
+            a->formats = bits;
+        } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "--interfaces", &v)) != 0) {
+            if (r < 0)
+                return EF_CLI_EXIT_USAGE;
+            if (seen_ifaces++)
+                return ef_cli_usage_error(CMD, "--interfaces given twice");
+            if (!parse_list("--interfaces", v, iface_names, EF_IF_COUNT, &bits))
+                return EF_CLI_EXIT_USAGE;
+            a->ifaces = bits;
+        } else {
+            return ef_cli_usage_error(CMD, "unknown option '%s'", arg);
+        }
+    }
+    if (!a->input)
+        return ef_cli_usage_error(CMD, "no input file");
+    if (!a->dir)
+        return ef_cli_usage_error(CMD, "no output directory (-o DIR)");
+    return -1;
+}
+
+/* Failures the input can cause map to 3; running out of memory is not the
+ * input's fault as far as a script can tell, so it is grouped with 70. */
+static int exit_for(ef_status st)
+{
+    return st == EF_ERR_NOMEM ? EF_CLI_EXIT_INTERNAL : EF_CLI_EXIT_INPUT;
+}
+
+static void on_note(void *user, const char *file, uint32_t line, uint32_t col, const char *msg)
+{
+    (void)user;
+    fprintf(stderr, "%s:%" PRIu32 ":%" PRIu32 ": note: %s\n", file, line, col, msg);
+}
+
+static int load(const ef_cli_vectors_args *a, ef_scene *scene)
+{
+    ef_load_opts opts;
+    ef_error err;
+    ef_status st;
+
+    memset(&opts, 0, sizeof opts);
+    memset(&err, 0, sizeof err);
+    opts.fit_width = a->fit_w;
+    opts.fit_height = a->fit_h;
+    opts.note = on_note;
+    st = ef_scene_load_file(a->input, &opts, scene, &err);
+    if (st != EF_OK) {
+        char buf[sizeof err.file + sizeof err.msg + 64];
+        if (!err.file[0] && !err.msg[0])
+            snprintf(buf, sizeof buf, "%s: %s", a->input, ef_strerror(st));
+        else
+            ef_error_format(&err, buf, sizeof buf);
+        ef_cli_error("%s", buf);
+        return exit_for(st);
+    }
+    return -1;
+}
+
+/* Renders the scene with the trace on into c; fills info's frame facts. */
+static int trace_frame(const ef_cli_vectors_args *a, const ef_scene *scene, ef_ctx *ctx, ef_image *img,
+                       ef_vec_collect *c, ef_vec_info *info)
+{
+    ef_diag diag;
+    ef_status st;
+
+    memset(img->px, 0, img->stride * (size_t)img->height);   /* composited onto transparent black */
+    st = ef_trace_enable(ctx, a->ifaces, ef_vec_collect_sink, c);
+    if (st == EF_OK)
+        st = ef_trace_frame_begin(ctx);
+    if (st == EF_OK)
+        st = ef_scene_render(ctx, scene, a->rule, img);
+    if (st == EF_OK)
+        st = ef_trace_frame_end(ctx, &info->cycles);
+    if (st != EF_OK) {
+        ef_cli_error("%s: %s", a->input, ef_strerror(st));
+        return exit_for(st);
+    }
+    if (c->error == EF_ERR_NOMEM) {
+        ef_cli_error("%s: out of memory collecting the trace", a->input);
+        return EF_CLI_EXIT_INTERNAL;
+    }
+    if (c->error != EF_OK || ef_vec_collect_end(c, a->ifaces) > info->cycles) {
+        ef_cli_error("internal error: %s", c->error != EF_OK ? c->why : "a transfer after the frame's end");
+        return EF_CLI_EXIT_INTERNAL;
+    }
+    ef_ctx_diag(ctx, &diag);
+    if (diag.winding_overflows > 0)
+        fprintf(stderr,
+                "edgeflag: warning: %s: %" PRIu64 " winding counter overflow(s): the 7-bit "
+                "counters wrap modulo 128 (docs/spec.md 6.4), so non-zero coverage is wrong "
+                "wherever the winding number is a non-zero multiple of 128\n",
+                a->input, diag.winding_overflows);
+    return -1;
+}
+
+int ef_cli_vectors(int argc, char **argv)
+{
+    ef_cli_vectors_args a;
+    ef_scene scene;
+    ef_ctx *ctx = NULL;
+    ef_image img;
+    ef_vec_collect *c = NULL;
+    ef_vec_info info;
+    ef_cli_vec_job job;
+    ef_status st;
+    size_t nfiles = 0;
+    int rc = ef_cli_vectors_parse(argc, argv, &a);
+
+    if (rc >= 0)
+        return rc;
+    memset(&scene, 0, sizeof scene);
+    memset(&img, 0, sizeof img);
+    if ((rc = load(&a, &scene)) >= 0)
+        goto out;
+    memset(&job, 0, sizeof job);
+    job.dir = a.dir;
+    job.formats = a.formats;
+    job.ifaces = a.ifaces;
+    job.force = a.force;
+    /* Before the long part: an existing file (without --force) or a DIR that
+     * cannot be one stops the run with nothing written. */
+    if ((rc = ef_cli_vec_check_dir(&job)) >= 0)
+        goto out;
+
+    st = ef_ctx_create(&ctx, scene.width, scene.height, (int)a.samples);
+    if (st == EF_OK)
+        st = ef_image_alloc(&img, scene.width, scene.height);
+    if (st == EF_OK && (c = malloc(sizeof *c)) == NULL)
+        st = EF_ERR_NOMEM;
+    if (st != EF_OK) {
+        ef_cli_error("%s: canvas %" PRId32 "x%" PRId32 " at %d samples: %s", a.input, scene.width, scene.height,
+                     (int)a.samples, ef_strerror(st));
+        rc = exit_for(st);
+        goto out;
+    }
+    ef_vec_collect_init(c, a.ifaces);
+    memset(&info, 0, sizeof info);
+    info.input = ef_vec_base_name(a.input);
+    info.width = scene.width;
+    info.height = scene.height;
+    info.samples = (int)a.samples;
+    info.rule = a.rule;
+    info.mask = a.ifaces;
+    if (!ef_vec_file_seed(a.input, &info.seed))
+        info.seed = 0;
+    if ((rc = trace_frame(&a, &scene, ctx, &img, c, &info)) >= 0)
+        goto out;
+
+    job.info = &info;
+    job.collect = c;
+    job.img = &img;
+    if ((rc = ef_cli_vec_write(&job, &nfiles)) != EF_CLI_EXIT_OK)
+        goto out;
+    printf("edgeflag vectors: wrote %zu files (%" PRIu64 " transactions, %" PRIu64 " cycles; %" PRId32 "x%" PRId32
+           ", %d samples, rule %s, seed %" PRIu64 ") to %s\n",
+           nfiles, ef_vec_collect_total(c, a.ifaces), info.cycles, info.width, info.height, info.samples,
+           ef_vec_rule_name(info.rule), info.seed, a.dir);
+    rc = fflush(stdout) == 0 ? EF_CLI_EXIT_OK : EF_CLI_EXIT_OUTPUT;
+out:
+    if (c) {
+        ef_vec_collect_free(c);
+        free(c);
+    }
+    ef_image_free(&img);
+    if (ctx)
+        ef_ctx_destroy(ctx);
+    ef_scene_free(&scene);
+    return rc;
+}

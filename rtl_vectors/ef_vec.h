@@ -1,0 +1,186 @@
+/*
+ * ef_vec.h - the writers of `edgeflag vectors` (docs/vectors.md): a
+ * collector that the model's trace sink (ef_trace.h) fills, a merge of the
+ * interfaces into one cycle order, and the hex, VCD, binary and manifest
+ * writers, with the CRC-32 and SHA-256 they need.
+ *
+ * Everything here is integer-only and prints no time, locale-dependent text
+ * or path other than the input's base name: the same trace gives the same
+ * bytes on every machine and build.  Field layouts always come from the
+ * interface table (ef_iface_get / ef_txn_field), never from constants here.
+ */
+#ifndef EF_VEC_H
+#define EF_VEC_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+
+#include "ef_trace.h"
+
+#define EF_VEC_FORMAT 1             /* "format 1" of every file (docs/vectors.md) */
+#define EF_VEC_BIN_HEADER 104       /* header bytes of vectors.bin */
+#define EF_VEC_HEX_MAX_DIGITS ((EF_CYCLE_BITS + 64 * EF_TXN_WORDS + 3) / 4)
+
+/* ------------------------------------------------------------ checksums */
+
+/* CRC-32 of IEEE 802.3 / zlib / PNG.  Chains like zlib's crc32(): start with
+ * crc = 0 and pass each result back in; the CRC of "123456789" is 0xCBF43926. */
+uint32_t ef_vec_crc32(uint32_t crc, const void *data, size_t n);
+
+/* SHA-256 (FIPS 180-4). */
+typedef struct ef_vec_sha256 {
+    uint32_t h[8];
+    uint64_t len;          /* bytes hashed so far */
+    uint8_t block[64];
+    unsigned used;         /* bytes waiting in block */
+} ef_vec_sha256;
+void ef_vec_sha256_init(ef_vec_sha256 *s);
+void ef_vec_sha256_update(ef_vec_sha256 *s, const void *data, size_t n);
+void ef_vec_sha256_final(ef_vec_sha256 *s, uint8_t digest[32]);
+/* 64 lower-case hex digits and a NUL. */
+void ef_vec_sha256_hex(const uint8_t digest[32], char out[65]);
+
+/* --------------------------------------------------------------- output */
+
+/* A buffered byte sink that counts, hashes (SHA-256) and optionally CRCs
+ * what passes through, so the manifest's sizes and hashes describe exactly
+ * the bytes written.  With fp NULL nothing is written (a counting pass). */
+enum { EF_VEC_OUT_SHA = 1, EF_VEC_OUT_CRC = 2 };
+typedef struct ef_vec_out {
+    FILE *fp;
+    unsigned flags;
+    ef_vec_sha256 sha;
+    uint32_t crc;
+    uint64_t bytes;        /* written (or counted) so far */
+    int err;               /* errno of the first failed write; later writes are dropped */
+    size_t used;
+    unsigned char buf[1 << 16];
+} ef_vec_out;
+void ef_vec_out_init(ef_vec_out *o, FILE *fp, unsigned flags);
+void ef_vec_out_write(ef_vec_out *o, const void *data, size_t n);
+void ef_vec_out_puts(ef_vec_out *o, const char *s);
+void ef_vec_out_u64(ef_vec_out *o, uint64_t v);      /* decimal */
+/* Pushes the buffer out and finishes the hash (digest may be NULL).
+ * Returns 0, or -1 with errno set to the first write error. */
+int ef_vec_out_finish(ef_vec_out *o, uint8_t digest[32]);
+
+/* Decimal of v into buf (at least 21 bytes); returns the length. */
+size_t ef_vec_u64_dec(uint64_t v, char *buf);
+
+/* ------------------------------------------------------------ run facts */
+
+typedef struct ef_vec_info {
+    const char *input;     /* the input's base name (no directory) */
+    int32_t width, height; /* the canvas rendered */
+    int samples;
+    int rule;              /* -1: each shape's own ("scene"); else an ef_rule */
+    uint64_t seed;         /* `# seed N` of an edgeflag gen scene, else 0 */
+    uint64_t cycles;       /* the frame's length (ef_trace_frame_end) */
+    uint32_t mask;         /* interfaces recorded, bit i = ef_iface i */
+} ef_vec_info;
+
+/* "nonzero", "evenodd" or "scene". */
+const char *ef_vec_rule_name(int rule);
+/* "stim" for the command stream (what the DUT receives), else "expected". */
+const char *ef_vec_role(int iface);
+/* "IFACE.ROLE.hex" into buf; returns buf. */
+char *ef_vec_hex_name(int iface, char *buf, size_t size);
+/* The base name of a path: what follows the last '/'. */
+const char *ef_vec_base_name(const char *path);
+/* Text of s safe inside a one-line comment of a hex file or VCD: bytes
+ * outside ' '..'~', '\' and '$' become \xNN.  Writes to o. */
+void ef_vec_out_escaped(ef_vec_out *o, const char *s);
+/* "generator edgeflag V; input NAME; size WxH; samples N; rule R; seed S". */
+void ef_vec_out_run_line(ef_vec_out *o, const ef_vec_info *info);
+
+/* ------------------------------------------------------------ collector */
+
+/* One interface's transactions in arrival (= cycle) order, packed as
+ * records of 1 + nw words: the cycle, then the payload's ceil(P/64) words. */
+typedef struct ef_vec_list {
+    uint64_t *rec;
+    size_t count, cap;     /* records */
+    unsigned nw;
+} ef_vec_list;
+
+typedef struct ef_vec_collect {
+    ef_vec_list list[EF_IF_COUNT];
+    uint32_t mask;         /* interfaces accepted */
+    ef_status error;       /* first failure: EF_ERR_NOMEM, or EF_ERR_ARG for a broken trace */
+    char why[160];         /* what was broken, for EF_ERR_ARG */
+} ef_vec_collect;
+
+void ef_vec_collect_init(ef_vec_collect *c, uint32_t mask);
+void ef_vec_collect_free(ef_vec_collect *c);
+/* Appends t.  Refuses (and remembers in c->error) an interface outside the
+ * mask, a cycle >= 2^48 or not after the interface's previous one (one
+ * transfer per interface per cycle), payload bits above the width, and
+ * running out of memory. */
+ef_status ef_vec_collect_add(ef_vec_collect *c, const ef_txn *t);
+/* An ef_txn_fn: user is the ef_vec_collect. */
+void ef_vec_collect_sink(void *user, const ef_txn *t);
+size_t ef_vec_collect_count(const ef_vec_collect *c, int iface);
+/* Transaction k of iface. */
+void ef_vec_collect_get(const ef_vec_collect *c, int iface, size_t k, ef_txn *out);
+/* Sum of the counts of the interfaces in mask. */
+uint64_t ef_vec_collect_total(const ef_vec_collect *c, uint32_t mask);
+/* Cycle of the last transaction over the interfaces in mask, +1; 0 if none. */
+uint64_t ef_vec_collect_end(const ef_vec_collect *c, uint32_t mask);
+
+/* Global cycle order over the interfaces in mask: by cycle, then interface
+ * number, then production order. */
+typedef struct ef_vec_merge {
+    const ef_vec_collect *c;
+    uint32_t mask;
+    size_t pos[EF_IF_COUNT];
+} ef_vec_merge;
+void ef_vec_merge_init(ef_vec_merge *m, const ef_vec_collect *c, uint32_t mask);
+/* The next transaction into *out: 1, or 0 at the end. */
+int ef_vec_merge_next(ef_vec_merge *m, ef_txn *out);
+
+/* -------------------------------------------------------------- writers */
+
+/* Digits of one word of iface in a hex file: ceil((48 + P) / 4); 0 if none. */
+unsigned ef_vec_hex_digits(int iface);
+/* The word { cycle[47:0], payload } of t as exactly ef_vec_hex_digits
+ * lower-case digits and a NUL (out holds EF_VEC_HEX_MAX_DIGITS + 1). */
+unsigned ef_vec_hex_word(const ef_txn *t, char *out);
+/* IFACE.ROLE.hex: header comments, then one word per line. */
+void ef_vec_hex_write(ef_vec_out *o, const ef_vec_info *info, const ef_vec_collect *c, int iface);
+
+/* vectors.vcd: every signal of the interfaces in info->mask. */
+void ef_vec_vcd_write(ef_vec_out *o, const ef_vec_info *info, const ef_vec_collect *c);
+
+/* vectors.bin: the 104-byte header (two CRCs), then the merged records. */
+void ef_vec_bin_write(ef_vec_out *o, const ef_vec_info *info, const ef_vec_collect *c);
+/* The header alone (records_crc = the CRC-32 of the records). */
+void ef_vec_bin_header(uint8_t h[EF_VEC_BIN_HEADER], const ef_vec_info *info, const ef_vec_collect *c,
+                       uint32_t records_crc);
+
+/* One file written, as the manifest lists it. */
+typedef struct ef_vec_file {
+    char name[32];
+    const char *format;    /* "hex", "vcd", "bin", "png", "pam" */
+    int iface;             /* -1: not one interface */
+    const char *role;      /* "stim", "expected", "all" */
+    uint64_t count, bytes;
+    char sha256[65];
+} ef_vec_file;
+/* manifest.json; the string of info->input is escaped for JSON. */
+void ef_vec_manifest_write(ef_vec_out *o, const ef_vec_info *info, const ef_vec_collect *c,
+                           const ef_vec_file *files, size_t nfiles);
+
+/* ----------------------------------------------------------------- seed */
+
+/* The N of the first `# seed N` line in the leading comment block (lines
+ * that are blank or start with '#') of an edgeflag gen scene: 1 and *seed,
+ * or 0 when there is none.  N must be decimal <= 2^64-1, followed by the end
+ * of the line, ',', a space or a tab. */
+int ef_vec_scene_seed(const char *text, size_t len, uint64_t *seed);
+/* The same, reading at most the first 64 KiB of the file at path.  0 when
+ * the file has no such line or cannot be read (it was just loaded: an
+ * error here is not this reader's to report). */
+int ef_vec_file_seed(const char *path, uint64_t *seed);
+
+#endif /* EF_VEC_H */

@@ -1,0 +1,24 @@
+# `edgeflag check` (docs/vectors.md section 7): the CLI-level stage.
+#   make test-check    tests/check/run.sh: real vectors of the tiger and of an
+#                      `edgeflag gen` case pass against themselves (hex files,
+#                      binary streams, directories, RTL-style dumps without a
+#                      header); one flipped bit, one dropped and one delayed
+#                      transaction each fail at the right interface, cycle and
+#                      pixel; --transactions, --errors, --junit (xmllint),
+#                      --diff-image; usage errors.
+# The two helpers link the readers (rtl_vectors/) as well as the library.
+CHECK_TOOLS := $(BUILD)/tests/check/vec_mutate $(BUILD)/tests/check/vec_load
+
+$(BUILD)/tests/check/%: tests/check/%.c $(RTLV_OBJ) $(LIB_A)
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(CFLAGS_ALL) $< $(RTLV_OBJ) -o $@ $(LDFLAGS_ALL) $(LIB_A) $(EXPAT_LIBS)
+
+.PHONY: test-check
+test-check: cli $(CHECK_TOOLS) $(BUILD)/tests/tools/vec_bin_check
+	@bash tests/check/run.sh $(BUILD)
+
+# The readers' unit test links them as well as the library; an explicit rule
+# overrides tests/module.mk's pattern rule for this one binary (test-unit runs it).
+$(BUILD)/tests/test_vec_read: tests/unit/test_vec_read.c $(RTLV_OBJ) $(LIB_A)
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) -Itests $(CFLAGS_ALL) $< $(RTLV_OBJ) -o $@ $(LDFLAGS_ALL) $(TEST_LIBS)
