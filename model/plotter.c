@@ -142,6 +142,55 @@ static EF_ALWAYS_INLINE void mark_occ_range(uint64_t *occ, uint32_t a, uint32_t 
  * caller turns into cells with a margin of 6 and 7: a STEEP edge's cells lie
  * within that margin of its first x (it moves less than 6 px over the row),
  * an INSIDE edge's within 1 of its first and last plotted x. */
+/* Full rows of STEEP edges at N >= 16 (no overflow check): the row's
+ * samples are sorted into cells in registers and each cell is written once,
+ * instead of one read-modify-write per sample (consecutive samples of a steep
+ * edge hit the same cell: a store-to-load chain).  x moves monotonically, so
+ * every cell lies in [a, b], a = floor(min x / 256), b = floor(max x / 256)
+ * + 1, b - a <= 7 (less than 6 px of movement).  A sample's distance d from
+ * the cell the edge starts at (a when x increases, b when it decreases:
+ * b - q = floor((256b + 255 - v) / 256) for v = x + off) has 3 bits, kept as
+ * three bit planes with bit s for sample s; the cell at distance k gets the
+ * samples whose planes spell k.  Non-zero: a word's 8 samples become its
+ * lanes' increments at once (lanes cannot carry into each other). */
+static EF_ALWAYS_INLINE uint64_t spread_lanes(uint64_t m8)
+{
+    /* bit i of m8 (i < 8) -> 0x01 in lane i */
+    return ((((m8 * UINT64_C(0x0101010101010101)) & UINT64_C(0x8040201008040201)) + EF_LANES7) & EF_PADS) >> 7;
+}
+
+static EF_ALWAYS_INLINE void steep_flush(ef_ctx *ctx, uint64_t p0, uint64_t p1, uint64_t p2, int32_t xa, int32_t xl,
+                                         int32_t dir, int32_t flip, const int NS, const int NZ)
+{
+    const int32_t mn = xa < xl ? xa : xl, mx = xa < xl ? xl : xa;
+    const uint32_t a = (uint32_t)mn >> EF_DEV_FRAC_BITS, b = ((uint32_t)mx >> EF_DEV_FRAC_BITS) + 1u; /* <= W */
+    mark_occ_range(ctx->occ, a, b);
+    const int32_t c0 = (int32_t)(flip ? b : a);                  /* flip = -1: x decreases */
+    const uint64_t dirb = (uint64_t)((uint32_t)dir & 0x7Fu);
+    const uint32_t nc = b - a + 1u;                              /* 2 .. 8 */
+    const uint64_t full = NS == 32 ? UINT64_C(0xFFFFFFFF) : UINT64_C(0xFFFF);
+    uint32_t *eo = ctx->eo_cells;
+    uint64_t *nz = ctx->nz_cells;
+#define STEEP_CELL(k)                                                                                   \
+    do {                                                                                                \
+        const uint64_t m_ = ~((p0 ^ (uint64_t)-(int64_t)((k) & 1)) | (p1 ^ (uint64_t)-(int64_t)(((k) >> 1) & 1)) | \
+                              (p2 ^ (uint64_t)-(int64_t)(((k) >> 2) & 1))) & full;                      \
+        const int32_t q_ = c0 + (((int32_t)(k) ^ flip) - flip);                                         \
+        if (NZ) {                                                                                       \
+            uint64_t *w_ = &nz[(size_t)q_ * (size_t)(NS / 8)];                                          \
+            for (int wi_ = 0; wi_ < NS / 8; wi_++)                                                      \
+                w_[wi_] = (w_[wi_] + spread_lanes((m_ >> (8 * wi_)) & 0xFFu) * dirb) & EF_LANES7;         \
+        } else {                                                                                        \
+            eo[q_] ^= (uint32_t)m_;                                                                     \
+        }                                                                                               \
+    } while (0)
+    STEEP_CELL(0u);
+    STEEP_CELL(1u);
+    for (uint32_t k = 2; k < nc; k++)
+        STEEP_CELL(k);
+#undef STEEP_CELL
+}
+
 static EF_ALWAYS_INLINE void plot_edge_row(ef_ctx *ctx, const int32_t *off, int32_t *px, int32_t *pe, int32_t qs,
                                            int32_t rs, int32_t dy, int s0, int s1, int32_t dir, int32_t mode,
                                            int32_t *lo, int32_t *hi, int32_t *lox, int32_t *hix,
@@ -158,7 +207,39 @@ static EF_ALWAYS_INLINE void plot_edge_row(ef_ctx *ctx, const int32_t *off, int3
     (void)overflows;
     int32_t x = *px, e = *pe;
     const int32_t xa = x;
-    if (EF_FAST_PATH && mode == EF_PLOT_STEEP) {
+    if (EF_FAST_PATH && mode == EF_PLOT_STEEP && NS >= 16 && !check && s0 == 0 && s1 == NS - 1) {
+        *lox = xa < *lox ? xa : *lox;
+        *hix = xa > *hix ? xa : *hix;
+        /* y = 256 d + fraction: v - 256a, or 256b + 255 - v = ~v + 256(b + 1),
+         * as (v ^ flip) + adj.  x decreases over the row iff qs < 0. */
+        const int32_t flip = -(int32_t)(qs < 0);
+        const int32_t qa = (int32_t)((uint32_t)xa >> EF_DEV_FRAC_BITS);
+        const int32_t adj = flip ? (qa + 2) * EF_DEV_ONE : -qa * EF_DEV_ONE;
+        int32_t xl = x;
+        uint64_t p0 = 0, p1 = 0, p2 = 0;
+        if (rs == 0) {
+            EF_UNROLL
+            for (int s = 0; s < NS; s++) {
+                const uint64_t t = (uint64_t)(uint32_t)(((x + off[s]) ^ flip) + adj) << s;
+                p0 |= t & (UINT64_C(1) << (s + 8));
+                p1 |= t & (UINT64_C(1) << (s + 9));
+                p2 |= t & (UINT64_C(1) << (s + 10));
+                xl = x;
+                x += qs;
+            }
+        } else {
+            EF_UNROLL
+            for (int s = 0; s < NS; s++) {
+                const uint64_t t = (uint64_t)(uint32_t)(((x + off[s]) ^ flip) + adj) << s;
+                p0 |= t & (UINT64_C(1) << (s + 8));
+                p1 |= t & (UINT64_C(1) << (s + 9));
+                p2 |= t & (UINT64_C(1) << (s + 10));
+                xl = x;
+                DDA_STEP();
+            }
+        }
+        steep_flush(ctx, p0 >> 8, p1 >> 9, p2 >> 10, xa, xl, dir, flip, NS, NZ);
+    } else if (EF_FAST_PATH && mode == EF_PLOT_STEEP) {
         /* x in [0, 256W - 1]: q = (x + off) >> 8 in [0, W], no clamp. */
         *lox = xa < *lox ? xa : *lox;
         *hix = xa > *hix ? xa : *hix;

@@ -13,6 +13,9 @@
 #     edges, sub-pixel triangles, every kind of alpha), same 9 configurations;
 #   - when the command exists, the seeded regression set of `edgeflag gen`
 #     (level 1), each case at one of the 9 configurations in turn;
+#   - the cycle-level vectors (`edgeflag vectors`: every hex file, the VCD and
+#     the binary stream) of the regression scene at the 9 configurations and
+#     of three shared SVG dumps;
 # and runs the fixed-point unit tests (tests/unit/test_fixed.c, without
 # cmocka) as aarch64 and s390x programs.  The 32-bit and foreign builds are
 # WITH_SVG=0 WITH_PNG=0 (no target expat/libpng) and render the dumps; the
@@ -124,6 +127,14 @@ else
     echo "portability: note: no 'edgeflag gen' in this tree; the generated regression is regress_scene alone"
 fi
 
+vjobs=()   # "label|file|options": vectors, every build
+if "$ref/edgeflag" vectors --help >/dev/null 2>&1; then
+    for c in "${cfgs[@]}"; do o=$(opts_of $c); vjobs+=("vectors regress ($c)|$out/regress.scene|$o"); done
+    for f in $(ls "$out"/*.scene | grep -v '/regress.scene$' | head -n 3); do
+        vjobs+=("vectors $(basename "$f" .scene) (8 file)|$f|--samples 8")
+    done
+fi
+
 # ------------------------------------------------------------------ renders
 # Each build renders every job into its own directory and writes the hashes
 # to sums (a line "ERROR ..." on failure); JOBS builds render at a time.
@@ -152,6 +163,19 @@ render_all() {   # name runner native(0/1)
         echo "$h $label" >>"$d/sums"
         rm -f "$d/$j.pam"
     done
+    # Vectors: the frame image's name depends on libpng and the manifest
+    # names it, so the hex files, the VCD and the stream are compared.
+    for job in "${vjobs[@]}"; do
+        IFS='|' read -r label file o <<<"$job"
+        j=$((j + 1))
+        # shellcheck disable=SC2086
+        if ! $run "$name/edgeflag" vectors "$file" -o "$d/v$j" $o >/dev/null 2>>"$d/render.log"; then
+            echo "ERROR $name failed to write $label: $(tail -n 1 "$d/render.log")" >>"$d/sums"; return
+        fi
+        h=$(cd "$d/v$j" && cat ./*.hex vectors.vcd vectors.bin | sha256sum | cut -c1-64)
+        echo "$h $label" >>"$d/sums"
+        rm -rf "$d/v$j"
+    done
 }
 running=0
 for i in "${!names[@]}"; do
@@ -171,7 +195,7 @@ for name in "${names[@]}"; do
     else
         fail=$((fail + 1))
         first=$(diff "$out/img.$ref/sums" "$d/sums" | grep '^>' | head -n 1 | cut -d' ' -f3-)
-        echo "portability: MISMATCH $name vs $ref: $(diff "$out/img.$ref/sums" "$d/sums" | grep -c '^>') of ${#jobs[@]} images differ, first: $first"
+        echo "portability: MISMATCH $name vs $ref: $(diff "$out/img.$ref/sums" "$d/sums" | grep -c '^>') of $((${#jobs[@]} + ${#vjobs[@]})) outputs differ, first: $first"
     fi
 done
 
@@ -181,6 +205,7 @@ else
     echo "portability: builds ${names[*]#build-} do NOT all agree (see above)"
 fi
 echo "portability: ${#jobs[@]} images per build: $nsvg shared SVGs (dumps; SVG = dump on native builds) and regress_scene at 8/16/32 x file/evenodd/nonzero, and $ngen 'edgeflag gen' cases"
+echo "portability: ${#vjobs[@]} vector sets per build (hex, VCD, bin): regress_scene at the 9 configurations and 3 SVG dumps"
 for s in "${skips[@]}"; do echo "portability: SKIPPED $s"; done
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]
