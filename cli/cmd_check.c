@@ -321,11 +321,11 @@ int ef_cli_check(int argc, char **argv)
         }
     if (rc == 0 && r.mismatches)
         fprintf(stderr, "edgeflag check: FAIL: %" PRIu64 " mismatch%s in %" PRIu64 " of %" PRIu64
-                " interface%s compared (%" PRIu64 " reported)%s\n",
+                " comparison%s (%" PRIu64 " reported)%s\n",
                 r.mismatches, r.mismatches == 1 ? "" : "es", failing, compared, compared == 1 ? "" : "s", r.reported,
                 a.cycles ? "" : ", transactions only (cycles not compared)");
     else if (rc == 0)
-        fprintf(stderr, "edgeflag check: PASS: %" PRIu64 " interface%s, %" PRIu64 " transactions, %s\n", compared,
+        fprintf(stderr, "edgeflag check: PASS: %" PRIu64 " comparison%s, %" PRIu64 " transactions, %s\n", compared,
                 compared == 1 ? "" : "s", txns, a.cycles ? "cycle-exact" : "transactions only (cycles not compared)");
 
     int out_rc = 0;

@@ -62,7 +62,7 @@ test-bitexact:
 test-sanitize:
 	@$(MAKE) --no-print-directory BUILD=build-san OPT=-O1 \
 	    EXTRA_CFLAGS="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
-	    EXTRA_LDFLAGS="-fsanitize=address,undefined" ORACLE_SCENES=2000 test-unit test-oracle test-cli
+	    EXTRA_LDFLAGS="-fsanitize=address,undefined" ORACLE_SCENES=2000 test-unit test-oracle test-cli test-check
 
 test: deps-test
 	@bash tests/run.sh

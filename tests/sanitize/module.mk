@@ -16,4 +16,4 @@ test-integer:
 	@mkdir -p $(INT_BUILD) && cp tests/sanitize/integer.ignorelist $(INT_BUILD)/.ignorelist
 	@UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 $(MAKE) --no-print-directory BUILD=$(INT_BUILD) CC=clang OPT=-O1 \
 	    EXTRA_CFLAGS="$(INT_SAN)" EXTRA_LDFLAGS="-fsanitize=undefined,integer" ORACLE_SCENES=2000 \
-	    test-unit test-oracle test-cli
+	    test-unit test-oracle test-cli test-check
