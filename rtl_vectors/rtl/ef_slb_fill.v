@@ -1,0 +1,298 @@
+// ef_slb_fill: scanline buffer (SLB) + filler (FILL) of the edgeflag
+// reference microarchitecture, written from docs/microarch.md 3.4 and the
+// reference schedule (section 4, items 4-6) plus docs/spec.md 6.2, 6.3, 7.2.
+// Interfaces:  plot (PLOT -> SLB) in,  span (FILL -> COV) out.
+//
+// The aim is cycle-exact agreement with `edgeflag vectors` (checked with
+// `edgeflag check span.expected.hex span.actual.hex --cycles`), so every
+// timing decision below is traced to the sentence of the schedule it meets.
+//
+// Cell storage.  One cell per pixel column 0..W (W = the right-clamp sink),
+// NS lanes of 7 bits: lane s is sample s's winding counter (spec 6.3 without
+// the pad bit, which in the 64-bit word only exists to absorb the carry; a
+// 7-bit adder drops it by construction).  Even-odd uses bit 0 of each lane as
+// the flag (spec 6.2), so the same memory serves both rules, which the
+// command stream may switch per shape.
+//
+// Pipeline.  Every memory access is a 2-cycle read-modify-write through one
+// pipeline (microarch 3.4):
+//   stage 1 (cycle t):   the op is issued; the RAM samples its read address
+//                        at the rising edge that ends cycle t;
+//   stage 2 (cycle t+1): the cell value (RAM output, or the latest write when
+//                        its address matches: forwarding) is combined, and
+//                        written back at the edge that ends cycle t+1.
+// Ops: PLOT (plot.q: XOR or lane add), CELL (a scan step: read, accumulate,
+// clear-on-read), FLUSH (the scan's final step: no memory access).
+// Because a write lands one edge after the read of the next op, the only
+// hazard is "read at the edge of the previous op's write"; one forwarding
+// register (the latest write) covers it, so back-to-back plots to one cell
+// and a scan that starts on the cell of the row's last plot need no stall.
+//
+// Schedule (microarch section 4, items 4-6):
+//  * The scan's step for cell xmin is issued in the cycle after the row's
+//    last plot (item 5), then one cell per cycle up to xmax, then the flush.
+//  * A step issued in cycle t that closes a span offers it in cycle t+1: the
+//    span's valid is therefore decided in stage 2 from the cell just read
+//    (only "cell != 0 and mask != 0"; the payload is all registers).  A
+//    registered span_valid would need the xmin read one cycle earlier, in
+//    the cycle of the row's last plot, whose own read uses the port then:
+//    two read ports (or an asynchronous-read memory).  One OR-reduction
+//    after the RAM's output register is the cheaper price.
+//  * While the span is offered and COV is not ready (span_ready low) the
+//    whole pipeline holds (no issue, no write-back): the scan's next step is
+//    issued in the span's transfer cycle a = max(t+1, cov_free) (item 5).
+//  * The flush is issued in the cycle after the last cell's step (or in that
+//    step's span transfer cycle); from the cycle after the flush (or in the
+//    flush span's transfer cycle) plot_ready is high again: the next row's
+//    first cycle.  The scan needs no idle cycle between rows: the last
+//    clear-on-read write lands before the next row's first read.
+//
+// COV's acceptance (cov_free, item 6) is COV's business: this block sees it
+// only as span_ready.  The reference COV raises ready at cov_free = a + len.
+//
+// Edge tracking is exact: xmin/xmax are the least/greatest q plotted in the
+// row (microarch 3.4).  Reset: rst (synchronous, active high) starts a sweep
+// that clears cells 0..W_MAX one per cycle (microarch 2); init_done rises when
+// the buffer is clean and plots may be accepted.
+//
+// Synthesizable Verilog-2005.
+module ef_slb_fill #(
+    parameter NS    = 8,       // samples per pixel: 8, 16 or 32
+    parameter W_MAX = 16384    // largest canvas width (cells 0..W_MAX)
+) (
+    input  wire        clk,
+    input  wire        rst,
+    output reg         init_done,   // reset sweep finished
+
+    // Configuration registers (FRAME width, SHAPE rule): stable while a
+    // shape is rasterized.
+    input  wire [14:0] cfg_width,   // W, 1..W_MAX
+    input  wire        cfg_rule,    // SHAPE encoding: 0 non-zero, 1 even-odd
+
+    // plot: last[0] row[13:0] s[4:0] q[14:0] dir[0]
+    input  wire        plot_valid,
+    output wire        plot_ready,
+    input  wire        plot_last,
+    input  wire [13:0] plot_row,
+    input  wire [4:0]  plot_s,
+    input  wire [14:0] plot_q,
+    input  wire        plot_dir,    // 0: +1 (downward edge), 1: -1
+
+    // span: y[13:0] x[13:0] len[14:0] mask[31:0]
+    output wire        span_valid,
+    input  wire        span_ready,
+    output wire [13:0] span_y,
+    output wire [13:0] span_x,
+    output wire [14:0] span_len,
+    output wire [31:0] span_mask,
+
+    output wire        idle         // nothing in flight (for testbenches)
+);
+    localparam CW = 7 * NS;                 // cell width
+    localparam AW = $clog2(W_MAX + 1);      // cell address width
+
+    localparam [1:0] OP_NONE  = 2'd0;
+    localparam [1:0] OP_PLOT  = 2'd1;
+    localparam [1:0] OP_CELL  = 2'd2;
+    localparam [1:0] OP_FLUSH = 2'd3;
+
+    // ---------------------------------------------------------------- state
+    reg [AW-1:0] sweep_addr;
+
+    // Edge tracking of the row being plotted.
+    reg          trk_any;
+    reg [14:0]   trk_xmin, trk_xmax;
+
+    // Filler: scan cursor and accumulator of the row being scanned.
+    reg          scanning;
+    reg [14:0]   ptr;          // next cell to issue (up to xmax + 1)
+    reg [14:0]   xend;         // xmax of the row
+    reg [14:0]   start;        // first cell of the open span
+    reg [13:0]   fy;           // row being scanned
+    reg          f_rule;
+    reg [14:0]   f_width;
+    reg [CW-1:0] acc;          // per-lane accumulated winding (7-bit lanes)
+    reg [NS-1:0] mask;         // coverage mask of the open span
+
+    // Stage 2.
+    reg [1:0]    s2_op;
+    reg [14:0]   s2_addr;
+    reg [4:0]    s2_s;
+    reg          s2_dir;
+    reg          s2_rule;
+
+    // Latest write, for forwarding.
+    reg          lw_valid;
+    reg [AW-1:0] lw_addr;
+    reg [CW-1:0] lw_data;
+
+    // ------------------------------------------------------------ the RAM
+    wire          ram_we;
+    wire [AW-1:0] ram_wa;
+    wire [CW-1:0] ram_wd;
+    wire          ram_re;
+    wire [AW-1:0] ram_ra;
+    wire [CW-1:0] ram_rd;
+
+    ef_slb_ram #(.AW(AW), .DW(CW), .DEPTH(W_MAX + 1)) u_ram (
+        .clk(clk), .we(ram_we), .wa(ram_wa), .wd(ram_wd),
+        .re(ram_re), .ra(ram_ra), .rd(ram_rd)
+    );
+
+    // ------------------------------------------------------------ stage 2
+    // cur: the cell as it is now: the RAM read missed a write made at the same
+    // edge (read first), so the latest write wins on an address match.
+    wire          fwd  = lw_valid && (lw_addr == s2_addr[AW-1:0]);
+    wire [CW-1:0] cur  = fwd ? lw_data : ram_rd;
+
+    wire [NS-1:0] s2_sel = {{(NS-1){1'b0}}, 1'b1} << s2_s;  // one-hot sample
+    wire [CW-1:0] plot_new;     // cell after the PLOT op
+    wire [CW-1:0] acc_next;     // accumulator after a CELL op
+    wire [NS-1:0] mask_next;
+
+    genvar l;
+    generate
+        for (l = 0; l < NS; l = l + 1) begin : lane
+            wire [6:0] c = cur[7*l +: 7];
+            wire [6:0] a = acc[7*l +: 7];
+            // spec 6.2: toggle bit s;  spec 6.3: lane add of +1 / -1 mod 128
+            wire [6:0] marked = s2_rule ? (c ^ 7'd1)
+                                        : (c + (s2_dir ? 7'h7f : 7'h01));
+            assign plot_new[7*l +: 7] = s2_sel[l] ? marked : c;
+            // spec 7.2: acc ^= cell (even-odd), lane-wise add mod 128 (non-zero)
+            wire [6:0] an = f_rule ? (a ^ c) : (a + c);
+            assign acc_next[7*l +: 7] = an;
+            // mask bit: parity (even-odd) or counter != 0 (non-zero)
+            assign mask_next[l] = f_rule ? an[0] : (|an);
+        end
+    endgenerate
+
+    wire cell_nz = |cur;       // "the scan reads a non-zero cell"
+    wire mask_nz = |mask;
+
+    // microarch 3.4: a span closes when the scan reads a non-zero cell while
+    // the mask is non-zero (it ends before that cell), or at the flush if
+    // the mask is non-zero and the span starts left of W (cut at W).
+    wire [15:0] xend1     = {1'b0, xend} + 16'd1;
+    wire [14:0] flush_end = (xend1 < {1'b0, f_width}) ? xend1[14:0] : f_width;
+    wire span_cell  = (s2_op == OP_CELL)  && cell_nz && mask_nz;
+    wire span_flush = (s2_op == OP_FLUSH) && mask_nz && (start < f_width);
+
+    assign span_valid = span_cell || span_flush;
+    assign span_y     = fy;
+    assign span_x     = start[13:0];   // start < W <= 16384 whenever valid
+    // span_end <= W <= 16384 and start < span_end whenever valid: 15 bits.
+    wire [14:0] span_end = (s2_op == OP_CELL) ? s2_addr : flush_end;
+    assign span_len   = span_end - start;
+    generate
+        if (NS < 32) begin : mask_pad
+            assign span_mask = {{(32-NS){1'b0}}, mask};
+        end else begin : mask_full
+            assign span_mask = mask;
+        end
+    endgenerate
+
+    // Back-pressure: an offered span that COV does not take holds everything.
+    wire stall = span_valid && !span_ready;
+    wire s2_done = !stall;     // stage 2 completes at this edge
+
+    // ------------------------------------------------------------ stage 1
+    assign plot_ready = init_done && !scanning && !stall;
+    wire take_plot  = plot_valid && plot_ready;
+    wire scan_go    = init_done && scanning && !stall;
+    wire scan_cell  = scan_go && (ptr <= xend);
+    wire scan_flush = scan_go && !(ptr <= xend);
+
+    assign ram_re = take_plot || scan_cell;
+    assign ram_ra = take_plot ? plot_q[AW-1:0] : ptr[AW-1:0];
+
+    // Write port: the reset sweep, else stage 2's write-back (the new cell of
+    // a PLOT, zero for a CELL: clear-on-read).
+    wire s2_writes = s2_done && ((s2_op == OP_PLOT) || (s2_op == OP_CELL));
+    assign ram_we = !init_done || s2_writes;
+    assign ram_wa = !init_done ? sweep_addr : s2_addr[AW-1:0];
+    assign ram_wd = (!init_done || (s2_op == OP_CELL)) ? {CW{1'b0}} : plot_new;
+
+    // Range of the row including the plot being taken (exact tracking).
+    wire [14:0] new_xmin = (!trk_any || plot_q < trk_xmin) ? plot_q : trk_xmin;
+    wire [14:0] new_xmax = (!trk_any || plot_q > trk_xmax) ? plot_q : trk_xmax;
+
+    assign idle = init_done && !scanning && !trk_any && (s2_op == OP_NONE);
+
+    // ------------------------------------------------------------ registers
+    always @(posedge clk) begin
+        if (rst) begin
+            init_done  <= 1'b0;
+            sweep_addr <= {AW{1'b0}};
+            trk_any    <= 1'b0;
+            scanning   <= 1'b0;
+            s2_op      <= OP_NONE;
+            lw_valid   <= 1'b0;
+        end else begin
+            if (!init_done) begin
+                sweep_addr <= sweep_addr + 1'b1;
+                if ({{(32-AW){1'b0}}, sweep_addr} == W_MAX)
+                    init_done <= 1'b1;
+            end
+
+            if (ram_we) begin
+                lw_valid <= 1'b1;
+                lw_addr  <= ram_wa;
+                lw_data  <= ram_wd;
+            end
+
+            // Stage 2 completes: the accumulator takes a non-zero cell, and
+            // a new span starts there (spec 7.2).
+            if (s2_done && (s2_op == OP_CELL) && cell_nz) begin
+                start <= s2_addr;
+                acc   <= acc_next;
+                mask  <= mask_next;
+            end
+
+            // Stage 1 -> stage 2.
+            if (s2_done) begin
+                if (take_plot) begin
+                    s2_op   <= OP_PLOT;
+                    s2_addr <= plot_q;
+                    s2_s    <= plot_s;
+                    s2_dir  <= plot_dir;
+                    s2_rule <= cfg_rule;
+                end else if (scan_cell) begin
+                    s2_op   <= OP_CELL;
+                    s2_addr <= ptr;
+                end else if (scan_flush) begin
+                    s2_op   <= OP_FLUSH;
+                end else begin
+                    s2_op   <= OP_NONE;
+                end
+            end
+
+            if (scan_cell)
+                ptr <= ptr + 15'd1;
+            if (scan_flush)
+                scanning <= 1'b0;
+
+            // Plots: track the row's range; the last one starts the scan.
+            // (No CELL op can complete at this edge: plots are taken only
+            // when the scan is over, so these writes never collide.)
+            if (take_plot) begin
+                if (plot_last) begin
+                    trk_any  <= 1'b0;
+                    scanning <= 1'b1;
+                    ptr      <= new_xmin;
+                    xend     <= new_xmax;
+                    start    <= new_xmin;
+                    fy       <= plot_row;
+                    f_rule   <= cfg_rule;
+                    f_width  <= cfg_width;
+                    acc      <= {CW{1'b0}};
+                    mask     <= {NS{1'b0}};
+                end else begin
+                    trk_any  <= 1'b1;
+                    trk_xmin <= new_xmin;
+                    trk_xmax <= new_xmax;
+                end
+            end
+        end
+    end
+endmodule
