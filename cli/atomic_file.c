@@ -249,3 +249,38 @@ void ef_cli_atomic_abort(ef_cli_atomic *af)
     }
     remove_temp();
 }
+
+/* mkdir -p (atomic_file.h). */
+int ef_cli_make_dirs(const char *dir)
+{
+    char *p = strdup(dir);
+    struct stat st;
+    size_t n;
+    int rc = -1;
+    if (!p)
+        return -1;
+    n = strlen(p);
+    while (n > 1 && p[n - 1] == '/')
+        p[--n] = '\0';
+    for (char *q = p + 1;; q++) {
+        if (*q == '/' || *q == '\0') {
+            char save = *q;
+            *q = '\0';
+            if (mkdir(p, 0777) != 0 && errno != EEXIST)
+                goto out;
+            *q = save;
+            if (save == '\0')
+                break;
+        }
+    }
+    if (stat(p, &st) != 0)
+        goto out;
+    if (!S_ISDIR(st.st_mode)) {
+        errno = ENOTDIR;
+        goto out;
+    }
+    rc = 0;
+out:
+    free(p);
+    return rc;
+}

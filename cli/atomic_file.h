@@ -32,4 +32,9 @@ int ef_cli_atomic_commit(ef_cli_atomic *af);
 /* Closes and removes the temporary.  Safe after a failed open. */
 void ef_cli_atomic_abort(ef_cli_atomic *af);
 
+/* mkdir -p: creates dir and its missing parents.  An existing directory is
+ * fine (another shard of a farm run may have made it a moment ago).  0, or -1
+ * with errno set (ENOTDIR when dir exists and is not a directory). */
+int ef_cli_make_dirs(const char *dir);
+
 #endif /* EF_CLI_ATOMIC_FILE_H */

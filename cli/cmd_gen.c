@@ -210,44 +210,6 @@ static int parse(int argc, char **argv, gen_args *a)
     return -1;
 }
 
-/* mkdir -p: creates DIR and missing parents; an existing directory is fine
- * (another shard may have created it a moment ago). */
-static int make_dirs(const char *dir)
-{
-    char *p = strdup(dir);
-    struct stat st;
-    size_t n;
-    if (!p)
-        return -1;
-    n = strlen(p);
-    while (n > 1 && p[n - 1] == '/')
-        p[--n] = '\0';
-    for (char *q = p + 1; ; q++) {
-        int last = *q == '\0';
-        if (*q == '/' || last) {
-            char save = *q;
-            *q = '\0';
-            if (mkdir(p, 0777) != 0 && errno != EEXIST) {
-                free(p);
-                return -1;
-            }
-            *q = save;
-        }
-        if (last)
-            break;
-    }
-    if (stat(p, &st) != 0) {
-        free(p);
-        return -1;
-    }
-    free(p);
-    if (!S_ISDIR(st.st_mode)) {
-        errno = ENOTDIR;
-        return -1;
-    }
-    return 0;
-}
-
 static int join(char *out, size_t size, const char *dir, const char *name)
 {
     size_t n = strlen(dir);
@@ -314,7 +276,7 @@ int ef_cli_gen(int argc, char **argv)
     total = ef_gen_total(&a.cfg);
 
     if (!a.list) {
-        if (make_dirs(a.dir) != 0) {
+        if (ef_cli_make_dirs(a.dir) != 0) {
             ef_cli_error("cannot create directory '%s': %s", a.dir, strerror(errno));
             return EF_CLI_EXIT_OUTPUT;
         }

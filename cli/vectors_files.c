@@ -79,41 +79,6 @@ static int join(char *out, size_t size, const char *dir, const char *name)
     return 0;
 }
 
-/* mkdir -p: DIR and its missing parents; an existing directory is fine. */
-static int make_dirs(const char *dir)
-{
-    char *p = strdup(dir);
-    struct stat st;
-    size_t n;
-    int rc = -1;
-    if (!p)
-        return -1;
-    n = strlen(p);
-    while (n > 1 && p[n - 1] == '/')
-        p[--n] = '\0';
-    for (char *q = p + 1;; q++) {
-        if (*q == '/' || *q == '\0') {
-            char save = *q;
-            *q = '\0';
-            if (mkdir(p, 0777) != 0 && errno != EEXIST)
-                goto out;
-            *q = save;
-            if (save == '\0')
-                break;
-        }
-    }
-    if (stat(p, &st) != 0)
-        goto out;
-    if (!S_ISDIR(st.st_mode)) {
-        errno = ENOTDIR;
-        goto out;
-    }
-    rc = 0;
-out:
-    free(p);
-    return rc;
-}
-
 int ef_cli_vec_check_dir(const ef_cli_vec_job *job)
 {
     ef_vec_file f[MAX_FILES];
@@ -236,7 +201,7 @@ int ef_cli_vec_write(const ef_cli_vec_job *job, size_t *nfiles)
         ef_cli_error("out of memory");
         return EF_CLI_EXIT_INTERNAL;
     }
-    if (make_dirs(job->dir) != 0) {
+    if (ef_cli_make_dirs(job->dir) != 0) {
         ef_cli_error("cannot create directory '%s': %s", job->dir, strerror(errno));
         rc = EF_CLI_EXIT_OUTPUT;
         goto out;

@@ -5,6 +5,7 @@
  * and the entry points that pick hex or binary.
  */
 #include "vec_read_internal.h"
+#include "ef_vec.h"
 
 #include <errno.h>
 #include <inttypes.h>
@@ -16,32 +17,10 @@ const uint8_t ef_vec_bin_magic[8] = { 0x89, 'E', 'F', 'V', '\r', '\n', 0x1a, '\n
 
 /* ---------------------------------------------------------------- CRC-32 */
 
-/* Table-driven, one byte per step.  The table is built on first use from the
- * polynomial (not copied from anywhere), so the file states its own proof;
- * tests check the "123456789" -> 0xCBF43926 value. */
-static uint32_t crc_table[256];
-static int crc_ready;
-
-static void crc_init(void)
-{
-    for (uint32_t n = 0; n < 256u; n++) {
-        uint32_t c = n;
-        for (int k = 0; k < 8; k++)
-            c = (c & 1u) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
-        crc_table[n] = c;
-    }
-    crc_ready = 1;
-}
-
+/* The writers' CRC-32 (vec_crc32.c): one implementation for both sides. */
 uint32_t ef_vec_read_crc32(uint32_t crc, const void *data, size_t len)
 {
-    const uint8_t *p = data;
-    if (!crc_ready)
-        crc_init();
-    crc = ~crc;
-    for (size_t i = 0; i < len; i++)
-        crc = crc_table[(crc ^ p[i]) & 0xffu] ^ (crc >> 8);
-    return ~crc;
+    return ef_vec_crc32(crc, data, len);
 }
 
 /* ---------------------------------------------------------------- sources */
