@@ -15,14 +15,16 @@
  *
  * Speed, with exactly the results of the plain loop (efbench hash, and the
  * oracle, check every bit):
- * - N is a compile-time constant per instance, and a full row of N sample
- *   rows is a fixed-count loop unrolled into N plots with constant bits
- *   (the paper's 3.8 D); an exact slope (rs = 0) steps without the carry;
+ * - N is a compile-time constant per instance; at N = 32 a full row of a
+ *   STEEP edge is a fixed-count loop unrolled into 32 plots with constant
+ *   bits (the paper's 3.8 D), and an exact slope (rs = 0) steps without the
+ *   carry; at N = 8 and 16 full rows take the partial rows' loop (measured
+ *   faster: the full/partial test mispredicted more than unrolling saved);
  * - edges with both end points in [1, 256W] (EF_PLOT_INSIDE, EF_PLOT_STEEP)
  *   take x only in [0, 256W - 1], so the clamp of 6.1 cannot act and is
  *   skipped, and the shifts are of non-negative values;
- * - the occupancy bits of a full row of a STEEP edge (less than 6 px of
- *   movement per row) are set once for its cell range, and edge tracking of
+ * - the occupancy bits of a STEEP edge's row at N >= 16 (less than 6 px
+ *   of movement per row) are set once for its cell range, and edge tracking of
  *   STEEP and INSIDE edges widens an x range once per edge and row, turned
  *   into cells with a margin at the end of the row: supersets of the marked
  *   cells, which change no span (unmarked cells are zero, spec 7.1);
@@ -67,13 +69,17 @@ static EF_ALWAYS_INLINE void load_offsets(const ef_ctx *ctx, int32_t *off, const
 }
 
 /* One exact DDA step (spec 5 step 5 / 6.1).  Branch-free carry: the error
- * term's overflow is data-dependent and would mispredict about half the time. */
-#define DDA_STEP()                                \
-    do {                                          \
-        const int32_t ee_ = e + rs, et_ = ee_ - dy; \
-        const int32_t carry_ = et_ >= 0;          \
-        e = carry_ ? et_ : ee_;                   \
-        x += qs + carry_;                         \
+ * term's overflow is data-dependent and would mispredict about half the time.
+ * With rsd = rs - dy and qs1 = qs + 1 (per edge): t = e + rs - dy, carry =
+ * t >= 0; neg = -1 without a carry, 0 with one; e = t + (dy & neg) and
+ * x += qs + carry = qs1 + neg, so the error term's chain is one add, and no
+ * compare or select is needed.  |t| < 2^24. */
+#define DDA_STEP()                                              \
+    do {                                                        \
+        const int32_t t_ = e + rsd;                             \
+        const int32_t neg_ = -(int32_t)((uint32_t)t_ >> 31);    \
+        e = t_ + (dy & neg_);                                   \
+        x += qs1 + neg_;                                        \
     } while (0)
 
 /* Edge tracking per edge and row rather than per sample: the DDA's x moves
@@ -89,6 +95,12 @@ static EF_ALWAYS_INLINE void track(const ef_ctx *ctx, int32_t xa, int32_t xb, in
     *hi = qb > *hi ? qb : *hi;
 }
 
+/* Sample s's even-odd bit is `bit` in the caller's loop: a constant
+ * 1 << s in the unrolled full rows; in the partial rows a register doubled
+ * every sample (a shift by the variable s costs two instructions).  64 bits:
+ * no bit is shifted out after sample 31. */
+#define EO_BIT(s) ((void)(s), (uint32_t)bit)
+
 /* Marks sample s of cell q (6.2 / 6.3) and its occupancy bit.  Non-zero:
  * dl is the lane increment (0x01 or 0x7F) already shifted to lane s & 7, and
  * limit the old lane value that overflows (63 + 1, -64 - 1).  For N = 8 a
@@ -103,7 +115,7 @@ static EF_ALWAYS_INLINE void track(const ef_ctx *ctx, int32_t xa, int32_t xb, in
             *w_ = (old_ + dl) & EF_LANES7;                                                        \
             dl = dl << 8 | dl >> 56;       /* next sample: next lane, wrapping to lane 0 */       \
         } else {                                                                                  \
-            eo[q] ^= UINT32_C(1) << (s);                                                          \
+            eo[q] ^= EO_BIT(s);                                                                   \
         }                                                                                         \
         occ[(q) >> 6] |= UINT64_C(1) << ((q) & 63);                                               \
     } while (0)
@@ -119,7 +131,7 @@ static EF_ALWAYS_INLINE void track(const ef_ctx *ctx, int32_t xa, int32_t xb, in
             *w_ = (old_ + dl) & EF_LANES7;                                                        \
             dl = dl << 8 | dl >> 56;                                                              \
         } else {                                                                                  \
-            eo[q] ^= UINT32_C(1) << (s);                                                          \
+            eo[q] ^= EO_BIT(s);                                                                   \
         }                                                                                         \
     } while (0)
 
@@ -142,55 +154,6 @@ static EF_ALWAYS_INLINE void mark_occ_range(uint64_t *occ, uint32_t a, uint32_t 
  * caller turns into cells with a margin of 6 and 7: a STEEP edge's cells lie
  * within that margin of its first x (it moves less than 6 px over the row),
  * an INSIDE edge's within 1 of its first and last plotted x. */
-/* Full rows of STEEP edges at N >= 16 (no overflow check): the row's
- * samples are sorted into cells in registers and each cell is written once,
- * instead of one read-modify-write per sample (consecutive samples of a steep
- * edge hit the same cell: a store-to-load chain).  x moves monotonically, so
- * every cell lies in [a, b], a = floor(min x / 256), b = floor(max x / 256)
- * + 1, b - a <= 7 (less than 6 px of movement).  A sample's distance d from
- * the cell the edge starts at (a when x increases, b when it decreases:
- * b - q = floor((256b + 255 - v) / 256) for v = x + off) has 3 bits, kept as
- * three bit planes with bit s for sample s; the cell at distance k gets the
- * samples whose planes spell k.  Non-zero: a word's 8 samples become its
- * lanes' increments at once (lanes cannot carry into each other). */
-static EF_ALWAYS_INLINE uint64_t spread_lanes(uint64_t m8)
-{
-    /* bit i of m8 (i < 8) -> 0x01 in lane i */
-    return ((((m8 * UINT64_C(0x0101010101010101)) & UINT64_C(0x8040201008040201)) + EF_LANES7) & EF_PADS) >> 7;
-}
-
-static EF_ALWAYS_INLINE void steep_flush(ef_ctx *ctx, uint64_t p0, uint64_t p1, uint64_t p2, int32_t xa, int32_t xl,
-                                         int32_t dir, int32_t flip, const int NS, const int NZ)
-{
-    const int32_t mn = xa < xl ? xa : xl, mx = xa < xl ? xl : xa;
-    const uint32_t a = (uint32_t)mn >> EF_DEV_FRAC_BITS, b = ((uint32_t)mx >> EF_DEV_FRAC_BITS) + 1u; /* <= W */
-    mark_occ_range(ctx->occ, a, b);
-    const int32_t c0 = (int32_t)(flip ? b : a);                  /* flip = -1: x decreases */
-    const uint64_t dirb = (uint64_t)((uint32_t)dir & 0x7Fu);
-    const uint32_t nc = b - a + 1u;                              /* 2 .. 8 */
-    const uint64_t full = NS == 32 ? UINT64_C(0xFFFFFFFF) : UINT64_C(0xFFFF);
-    uint32_t *eo = ctx->eo_cells;
-    uint64_t *nz = ctx->nz_cells;
-#define STEEP_CELL(k)                                                                                   \
-    do {                                                                                                \
-        const uint64_t m_ = ~((p0 ^ (uint64_t)-(int64_t)((k) & 1)) | (p1 ^ (uint64_t)-(int64_t)(((k) >> 1) & 1)) | \
-                              (p2 ^ (uint64_t)-(int64_t)(((k) >> 2) & 1))) & full;                      \
-        const int32_t q_ = c0 + (((int32_t)(k) ^ flip) - flip);                                         \
-        if (NZ) {                                                                                       \
-            uint64_t *w_ = &nz[(size_t)q_ * (size_t)(NS / 8)];                                          \
-            for (int wi_ = 0; wi_ < NS / 8; wi_++)                                                      \
-                w_[wi_] = (w_[wi_] + spread_lanes((m_ >> (8 * wi_)) & 0xFFu) * dirb) & EF_LANES7;         \
-        } else {                                                                                        \
-            eo[q_] ^= (uint32_t)m_;                                                                     \
-        }                                                                                               \
-    } while (0)
-    STEEP_CELL(0u);
-    STEEP_CELL(1u);
-    for (uint32_t k = 2; k < nc; k++)
-        STEEP_CELL(k);
-#undef STEEP_CELL
-}
-
 static EF_ALWAYS_INLINE void plot_edge_row(ef_ctx *ctx, const int32_t *off, int32_t *px, int32_t *pe, int32_t qs,
                                            int32_t rs, int32_t dy, int s0, int s1, int32_t dir, int32_t mode,
                                            int32_t *lo, int32_t *hi, int32_t *lox, int32_t *hix,
@@ -207,44 +170,13 @@ static EF_ALWAYS_INLINE void plot_edge_row(ef_ctx *ctx, const int32_t *off, int3
     (void)overflows;
     int32_t x = *px, e = *pe;
     const int32_t xa = x;
-    if (EF_FAST_PATH && mode == EF_PLOT_STEEP && NS >= 16 && !check && s0 == 0 && s1 == NS - 1) {
-        *lox = xa < *lox ? xa : *lox;
-        *hix = xa > *hix ? xa : *hix;
-        /* y = 256 d + fraction: v - 256a, or 256b + 255 - v = ~v + 256(b + 1),
-         * as (v ^ flip) + adj.  x decreases over the row iff qs < 0. */
-        const int32_t flip = -(int32_t)(qs < 0);
-        const int32_t qa = (int32_t)((uint32_t)xa >> EF_DEV_FRAC_BITS);
-        const int32_t adj = flip ? (qa + 2) * EF_DEV_ONE : -qa * EF_DEV_ONE;
-        int32_t xl = x;
-        uint64_t p0 = 0, p1 = 0, p2 = 0;
-        if (rs == 0) {
-            EF_UNROLL
-            for (int s = 0; s < NS; s++) {
-                const uint64_t t = (uint64_t)(uint32_t)(((x + off[s]) ^ flip) + adj) << s;
-                p0 |= t & (UINT64_C(1) << (s + 8));
-                p1 |= t & (UINT64_C(1) << (s + 9));
-                p2 |= t & (UINT64_C(1) << (s + 10));
-                xl = x;
-                x += qs;
-            }
-        } else {
-            EF_UNROLL
-            for (int s = 0; s < NS; s++) {
-                const uint64_t t = (uint64_t)(uint32_t)(((x + off[s]) ^ flip) + adj) << s;
-                p0 |= t & (UINT64_C(1) << (s + 8));
-                p1 |= t & (UINT64_C(1) << (s + 9));
-                p2 |= t & (UINT64_C(1) << (s + 10));
-                xl = x;
-                DDA_STEP();
-            }
-        }
-        steep_flush(ctx, p0 >> 8, p1 >> 9, p2 >> 10, xa, xl, dir, flip, NS, NZ);
-    } else if (EF_FAST_PATH && mode == EF_PLOT_STEEP) {
+    const int32_t rsd = rs - dy, qs1 = qs + 1;
+    if (EF_FAST_PATH && mode == EF_PLOT_STEEP) {
         /* x in [0, 256W - 1]: q = (x + off) >> 8 in [0, W], no clamp. */
         *lox = xa < *lox ? xa : *lox;
         *hix = xa > *hix ? xa : *hix;
-        if (s0 == 0 && s1 == NS - 1) {
-            /* A full row, unrolled; its cells lie in [xa/256, xl/256 + 1]
+        if (NS == 32 && s0 == 0 && s1 == NS - 1) {
+            /* A full row at N = 32, unrolled; its cells lie in [xa/256, xl/256 + 1]
              * (x moves monotonically), marked in the occupancy map at once.
              * An exact slope (rs = 0: vertical edges, among others) steps
              * without the carry. */
@@ -252,6 +184,7 @@ static EF_ALWAYS_INLINE void plot_edge_row(ef_ctx *ctx, const int32_t *off, int3
             if (rs == 0) {
                 EF_UNROLL
                 for (int s = 0; s < NS; s++) {
+                    const uint64_t bit = UINT64_C(1) << s;
                     const uint32_t q = (uint32_t)(x + off[s]) >> EF_DEV_FRAC_BITS;
                     PLOT_CELL_NOOCC(q, s);
                     xl = x;
@@ -260,6 +193,7 @@ static EF_ALWAYS_INLINE void plot_edge_row(ef_ctx *ctx, const int32_t *off, int3
             } else {
                 EF_UNROLL
                 for (int s = 0; s < NS; s++) {
+                    const uint64_t bit = UINT64_C(1) << s;
                     const uint32_t q = (uint32_t)(x + off[s]) >> EF_DEV_FRAC_BITS;
                     PLOT_CELL_NOOCC(q, s);
                     xl = x;
@@ -270,16 +204,18 @@ static EF_ALWAYS_INLINE void plot_edge_row(ef_ctx *ctx, const int32_t *off, int3
             const uint32_t b = ((uint32_t)(xa < xl ? xl : xa) >> EF_DEV_FRAC_BITS) + 1;   /* <= W */
             mark_occ_range(occ, a, b);
         } else {
-            /* A partial row: s0..s1 only.  For N >= 16 (more samples a row)
-             * the occupancy range is marked once, as for a full row; for
-             * N = 8 a bit per sample costs less (measured). */
+            /* A partial row (s0..s1), or a full one at N = 8, 16.  For
+             * N >= 16 (more samples a row) the occupancy range is marked
+             * once; for N = 8 a bit per sample costs less (measured). */
             int32_t xl = x;
+            uint64_t bit = UINT64_C(1) << s0;
             for (int s = s0; s <= s1; s++) {
                 const uint32_t q = (uint32_t)(x + off[s]) >> EF_DEV_FRAC_BITS;
                 if (NS >= 16)
                     PLOT_CELL_NOOCC(q, s);
                 else
                     PLOT_CELL(q, s);
+                bit <<= 1;
                 xl = x;
                 DDA_STEP();
             }
@@ -291,9 +227,11 @@ static EF_ALWAYS_INLINE void plot_edge_row(ef_ctx *ctx, const int32_t *off, int3
         }
     } else if (EF_FAST_PATH && mode == EF_PLOT_INSIDE) {
         int32_t xl = x;
+        uint64_t bit = UINT64_C(1) << s0;
         for (int s = s0; s <= s1; s++) {
             const uint32_t q = (uint32_t)(x + off[s]) >> EF_DEV_FRAC_BITS;
             PLOT_CELL(q, s);
+            bit <<= 1;
             xl = x;
             DDA_STEP();
         }
@@ -304,9 +242,11 @@ static EF_ALWAYS_INLINE void plot_edge_row(ef_ctx *ctx, const int32_t *off, int3
     } else {
         const int32_t W = ctx->width;
         int32_t xl = x;
+        uint64_t bit = UINT64_C(1) << s0;
         for (int s = s0; s <= s1; s++) {
             const int32_t q = ef_clamp_i32(ef_asr_i32(x + off[s], EF_DEV_FRAC_BITS), 0, W);
             PLOT_CELL(q, s);
+            bit <<= 1;
             xl = x;
             DDA_STEP();
         }
