@@ -22,8 +22,9 @@
 #      rules from cmd.stim.hex, records its spans (tests/rtl/tb_slb_fill.v),
 #      and `edgeflag check span.expected.hex span.actual.hex --cycles` must
 #      pass: the tiger at 160x120 and directed + random `edgeflag gen`
-#      level-1 cases, each at 8/16/32 samples x nonzero/evenodd, under
-#      Icarus; the tiger once more under Verilator;
+#      level-1 cases, each at 8/16/32 samples x nonzero/evenodd (and the
+#      scenes' own mixed rules where they mix them), under Icarus; the tiger
+#      once more under Verilator;
 #   4. the bench can fail: the RTL without its write-to-read forwarding must
 #      fail --cycles; a COV that takes one more cycle per span (an RTL with
 #      other timing) must fail --cycles and pass --transactions.
@@ -223,7 +224,9 @@ slb() {
     local name=$1 input=$2 ns=$3 rule=$4; shift 4
     local d=$work/slb/$name np nc sim
     mkdir -p "$d"
-    "$EF" vectors "$input" -o "$d" --samples "$ns" --rule "$rule" --formats hex \
+    # rule "scene": each shape's own rule (cfg_rule then changes per shape)
+    [ "$rule" = scene ] || set -- --rule "$rule" "$@"
+    "$EF" vectors "$input" -o "$d" --samples "$ns" --formats hex \
         --interfaces cmd,plot,span "$@" >"$d/vectors.log" 2>&1 ||
         { cat "$d/vectors.log"; echo "RESULT FAIL slb $name: edgeflag vectors"; return; }
     np=$(count "$d/plot.expected.hex"); nc=$(count "$d/cmd.stim.hex")
@@ -263,8 +266,12 @@ for f in $(awk -F'\t' '$3 == "random" { print $2 }' "$work/gen/index.tsv" | head
     cases+=("random-${f%.scene}:$f")
 done
 for c in "${cases[@]}"; do
+    rules="nonzero evenodd"
+    # Scenes mixing both rules also run with their own rules, so that the
+    # rule switches between shapes of one frame.
+    case ${c%%:*} in many-shapes|random-*) rules="$rules scene" ;; esac
     for ns in 8 16 32; do
-        for r in nonzero evenodd; do
+        for r in $rules; do
             submit "slb_${c%%:*}_${ns}_$r" slb "${c%%:*}/$ns/$r" "$work/gen/${c#*:}" "$ns" "$r"
         done
     done
