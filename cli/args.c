@@ -103,3 +103,39 @@ void ef_cli_error(const char *fmt, ...)
     va_end(ap);
     fputc('\n', stderr);
 }
+
+int ef_cli_scene_option(const char *cmd, int argc, char **argv, int *i, int32_t *samples, int *rule,
+                        int32_t *fit_w, int32_t *fit_h, int seen[3])
+{
+    const char *v;
+    int r;
+    if ((r = ef_cli_option_value(cmd, argc, argv, i, "--samples", &v)) != 0) {
+        if (r < 0)
+            return -1;
+        if (seen[0]++)
+            return ef_cli_usage_error(cmd, "--samples given twice"), -1;
+        if (!ef_cli_parse_int(v, 1, 32, samples) || !ef_samples_valid(*samples))
+            return ef_cli_usage_error(cmd, "--samples must be 8, 16 or 32, not '%s'", v), -1;
+    } else if ((r = ef_cli_option_value(cmd, argc, argv, i, "--rule", &v)) != 0) {
+        if (r < 0)
+            return -1;
+        if (seen[1]++)
+            return ef_cli_usage_error(cmd, "--rule given twice"), -1;
+        if (strcmp(v, "evenodd") == 0)
+            *rule = EF_RULE_EVENODD;
+        else if (strcmp(v, "nonzero") == 0)
+            *rule = EF_RULE_NONZERO;
+        else
+            return ef_cli_usage_error(cmd, "--rule must be nonzero or evenodd, not '%s'", v), -1;
+    } else if ((r = ef_cli_option_value(cmd, argc, argv, i, "--size", &v)) != 0) {
+        if (r < 0)
+            return -1;
+        if (seen[2]++)
+            return ef_cli_usage_error(cmd, "--size given twice"), -1;
+        if (!ef_cli_parse_size(v, EF_MAX_CANVAS, fit_w, fit_h))
+            return ef_cli_usage_error(cmd, "--size must be WxH with 1 <= W, H <= %d, not '%s'", EF_MAX_CANVAS, v), -1;
+    } else {
+        return 0;
+    }
+    return 1;
+}

@@ -88,6 +88,13 @@ int ef_cli_option_value(const char *cmd, int argc, char **argv, int *i, const ch
 
 /* "edgeflag: <cmd>: <message>" + a hint line on stderr; returns
  * EF_CLI_EXIT_USAGE so callers can `return ef_cli_usage_error(...)`. */
+/* The scene options of `render` and `vectors`: --samples 8|16|32,
+ * --rule nonzero|evenodd, --size WxH, each at most once (seen[3] counts them).
+ * Returns 1 when argv[*i] was one of them (stored, *i advanced), 0 when it is
+ * another argument, -1 after a usage error (reported under cmd). */
+int ef_cli_scene_option(const char *cmd, int argc, char **argv, int *i, int32_t *samples, int *rule,
+                        int32_t *fit_w, int32_t *fit_h, int seen[3]);
+
 int ef_cli_usage_error(const char *cmd, const char *fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 2, 3)))

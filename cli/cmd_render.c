@@ -50,7 +50,7 @@ typedef ef_cli_render_args render_args;
 int ef_cli_render_parse(int argc, char **argv, render_args *a)
 {
     int i, only_positional = 0;
-    int seen_samples = 0, seen_rule = 0, seen_size = 0;
+    int seen[3] = { 0, 0, 0 };   /* --samples, --rule, --size */
 
     memset(a, 0, sizeof *a);
     a->samples = 16;
@@ -89,32 +89,10 @@ int ef_cli_render_parse(int argc, char **argv, render_args *a)
             if (!*v)
                 return ef_cli_usage_error(CMD, "empty output file name");
             a->output = v;
-        } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "--samples", &v)) != 0) {
+        } else if ((r = ef_cli_scene_option(CMD, argc, argv, &i, &a->samples, &a->rule, &a->fit_w, &a->fit_h,
+                                            seen)) != 0) {
             if (r < 0)
                 return EF_CLI_EXIT_USAGE;
-            if (seen_samples++)
-                return ef_cli_usage_error(CMD, "--samples given twice");
-            if (!ef_cli_parse_int(v, 1, 32, &a->samples) || !ef_samples_valid(a->samples))
-                return ef_cli_usage_error(CMD, "--samples must be 8, 16 or 32, not '%s'", v);
-        } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "--rule", &v)) != 0) {
-            if (r < 0)
-                return EF_CLI_EXIT_USAGE;
-            if (seen_rule++)
-                return ef_cli_usage_error(CMD, "--rule given twice");
-            if (strcmp(v, "evenodd") == 0)
-                a->rule = EF_RULE_EVENODD;
-            else if (strcmp(v, "nonzero") == 0)
-                a->rule = EF_RULE_NONZERO;
-            else
-                return ef_cli_usage_error(CMD, "--rule must be evenodd or nonzero, not '%s'", v);
-        } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "--size", &v)) != 0) {
-            if (r < 0)
-                return EF_CLI_EXIT_USAGE;
-            if (seen_size++)
-                return ef_cli_usage_error(CMD, "--size given twice");
-            if (!ef_cli_parse_size(v, EF_MAX_CANVAS, &a->fit_w, &a->fit_h))
-                return ef_cli_usage_error(CMD, "--size must be WxH with 1 <= W, H <= %d, not '%s'",
-                                          EF_MAX_CANVAS, v);
         } else {
             return ef_cli_usage_error(CMD, "unknown option '%s'", arg);
         }
