@@ -65,10 +65,19 @@ static EF_ALWAYS_INLINE void fill_nonzero(ef_ctx *ctx, int32_t y, int32_t xmin, 
         do {
             int32_t p = wi * 64 + (int32_t)ef_ctz64(bits);
             bits &= bits - 1;
+            /* The plotter adds to the cell's bytes modulo 256 (plotter.c):
+             * the spec's lanes are the low 7 bits, the pad bits are masked
+             * off here.  Read through memcpy (the bytes were written as
+             * bytes), cleared as read, including a cell whose counters are
+             * all 0 modulo 128 (its pad bits may be set). */
             uint64_t *cell = &ctx->nz_cells[(size_t)p * (size_t)words];
-            uint64_t any = 0;
-            for (int w = 0; w < words; w++)
-                any |= cell[w];
+            uint64_t v[4], any = 0;
+            for (int w = 0; w < words; w++) {
+                memcpy(&v[w], &cell[w], 8);
+                v[w] &= EF_LANES7;
+                any |= v[w];
+            }
+            memset(cell, 0, (size_t)words * 8);    /* clear-on-read */
             if (any == 0)
                 continue;                  /* contributions that cancelled: mask unchanged */
             if (mask && p > start) {
@@ -77,7 +86,7 @@ static EF_ALWAYS_INLINE void fill_nonzero(ef_ctx *ctx, int32_t y, int32_t xmin, 
             }
             mask = 0;
             for (int w = 0; w < words; w++) {
-                uint64_t a = acc[w], b = cell[w];
+                uint64_t a = acc[w], b = v[w];
                 uint64_t sum = (a + b) & EF_LANES7;
                 if (check_overflow) {
                     /* Signed 7-bit overflow per lane: operands agree in sign, result not. */
@@ -86,7 +95,6 @@ static EF_ALWAYS_INLINE void fill_nonzero(ef_ctx *ctx, int32_t y, int32_t xmin, 
                         overflows += ef_popcount32(gather_pads(ov << 1));  /* bit 8L+6 -> 8L+7 */
                 }
                 acc[w] = sum;
-                cell[w] = 0;                   /* clear-on-read */
                 if (by_count)
                     mask += ((sum + EF_LANES7) & EF_PADS) >> 7;
                 else

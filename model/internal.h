@@ -74,7 +74,9 @@ struct ef_ctx {
 
     /* the one-scanline buffer: W+1 cells (cell W is the right-clamp sink) */
     uint32_t *eo_cells;     /* even-odd: N bits per cell */
-    uint64_t *nz_cells;     /* non-zero: N/8 words per cell */
+    uint64_t *nz_cells;     /* non-zero: N/8 words per cell; the plotter adds to
+                             * their bytes (ef_nz_lane_byte), the filler masks
+                             * the pad bits off as it reads them */
     uint64_t *occ;          /* one bit per cell: marked since the last fill (mask tracking) */
 
     ef_diag diag;
@@ -195,6 +197,24 @@ void ef_fill_evenodd(ef_ctx *ctx, int32_t y, int32_t xmin, int32_t xmax, ef_span
                      const ef_blend *blend);
 void ef_fill_nonzero(ef_ctx *ctx, int32_t y, int32_t xmin, int32_t xmax, ef_span_fn span, void *user,
                      const ef_blend *blend);
+
+/* Non-zero buffer, byte view (plotter.c): the byte of a cell that holds
+ * sample s's counter.  The filler reads a cell as N/8 words, sample s in word
+ * s/8, lane L = s mod 8 (bits 8L..8L+7); lane L is byte L of the word on a
+ * little-endian host and byte 7 - L on a big-endian one. */
+static inline size_t ef_nz_lane_byte(unsigned s)
+{
+#if defined(__BYTE_ORDER__) && defined(__ORDER_BIG_ENDIAN__) && __BYTE_ORDER__ == __ORDER_BIG_ENDIAN__
+    return (s & ~7u) | (7u - (s & 7u));
+#elif defined(__BYTE_ORDER__) && defined(__ORDER_LITTLE_ENDIAN__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+    return s;
+#else
+    const uint16_t one = 1;
+    unsigned char low;
+    memcpy(&low, &one, 1);
+    return low ? s : (s & ~7u) | (7u - (s & 7u));
+#endif
+}
 
 /* Index of the lowest set bit of v != 0. */
 static inline unsigned ef_ctz64(uint64_t v)

@@ -102,37 +102,29 @@ static EF_ALWAYS_INLINE void track(const ef_ctx *ctx, int32_t xa, int32_t xb, in
 #define EO_BIT(s) ((void)(s), (uint32_t)bit)
 
 /* Marks sample s of cell q (6.2 / 6.3) and its occupancy bit.  Non-zero:
- * dl is the lane increment (0x01 or 0x7F) already shifted to lane s & 7, and
- * limit the old lane value that overflows (63 + 1, -64 - 1).  For N = 8 a
- * cell is one word, so the word index (s >> 3) & (N/8 - 1) folds to 0. */
-#define PLOT_CELL(q, s)                                                                           \
-    do {                                                                                          \
-        if (NZ) {                                                                                 \
-            uint64_t *w_ = &nz[(size_t)(q) * (size_t)(NS / 8) + (size_t)(((s) >> 3) & (NS / 8 - 1))]; \
-            const uint64_t old_ = *w_;                                                            \
-            if (check)                                                                            \
-                *overflows += ((old_ >> (8u * (unsigned)((s) & 7))) & 0x7Fu) == limit;            \
-            *w_ = (old_ + dl) & EF_LANES7;                                                        \
-            dl = dl << 8 | dl >> 56;       /* next sample: next lane, wrapping to lane 0 */       \
-        } else {                                                                                  \
-            eo[q] ^= EO_BIT(s);                                                                   \
-        }                                                                                         \
-        occ[(q) >> 6] |= UINT64_C(1) << ((q) & 63);                                               \
-    } while (0)
-
-/* PLOT_CELL without the occupancy bit (the caller marks a range). */
+ * the counter of sample s is a byte (ef_nz_lane_byte), to which d8 (0x01 or
+ * 0xFF) is added modulo 256: its low 7 bits are the spec's lane modulo 128
+ * and its top bit is the pad bit, which the filler masks off when it reads
+ * the word (fill_nonzero.c).  One byte add replaces the word's load, add,
+ * mask, store and the lane rotation, and consecutive samples of an edge touch
+ * different bytes, so no store feeds the next load.  limit is the old 7-bit
+ * value that overflows (63 for +1, 64 for -1). */
 #define PLOT_CELL_NOOCC(q, s)                                                                     \
     do {                                                                                          \
         if (NZ) {                                                                                 \
-            uint64_t *w_ = &nz[(size_t)(q) * (size_t)(NS / 8) + (size_t)(((s) >> 3) & (NS / 8 - 1))]; \
-            const uint64_t old_ = *w_;                                                            \
+            uint8_t *b_ = &nzb[(size_t)(q) * (size_t)NS + ef_nz_lane_byte((unsigned)(s))];         \
             if (check)                                                                            \
-                *overflows += ((old_ >> (8u * (unsigned)((s) & 7))) & 0x7Fu) == limit;            \
-            *w_ = (old_ + dl) & EF_LANES7;                                                        \
-            dl = dl << 8 | dl >> 56;                                                              \
+                *overflows += (*b_ & 0x7Fu) == limit;                                             \
+            *b_ = (uint8_t)(*b_ + d8);                                                            \
         } else {                                                                                  \
             eo[q] ^= EO_BIT(s);                                                                   \
         }                                                                                         \
+    } while (0)
+
+#define PLOT_CELL(q, s)                                                                           \
+    do {                                                                                          \
+        PLOT_CELL_NOOCC(q, s);                                                                    \
+        occ[(q) >> 6] |= UINT64_C(1) << ((q) & 63);                                               \
     } while (0)
 
 /* Occupancy bits for the cells [a, b], a <= b, b - a < 64. */
@@ -160,12 +152,11 @@ static EF_ALWAYS_INLINE void plot_edge_row(ef_ctx *ctx, const int32_t *off, int3
                                            uint64_t *overflows, const int NS, const int NZ, const int check)
 {
     uint32_t *eo = ctx->eo_cells;
-    uint64_t *nz = ctx->nz_cells;
+    uint8_t *nzb = (uint8_t *)ctx->nz_cells;
     uint64_t *occ = ctx->occ;
-    /* +1 or -1 modulo 128 in one lane (spec 6.3), at sample s0's lane. */
-    uint64_t dl = (uint64_t)((uint32_t)dir & 0x7Fu) << (8u * ((unsigned)s0 & 7u));
-    const uint64_t limit = dir > 0 ? 0x3Fu : 0x40u;
-    (void)dl;
+    const uint8_t d8 = (uint8_t)dir;                       /* +1 or -1 modulo 256 */
+    const unsigned limit = dir > 0 ? 0x3Fu : 0x40u;
+    (void)d8;
     (void)limit;
     (void)overflows;
     int32_t x = *px, e = *pe;
