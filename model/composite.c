@@ -48,9 +48,12 @@ ef_status ef_fill(ef_ctx *ctx, ef_image *img, const ef_polygon *poly, ef_rule ru
     b.p4 = ef_spread4(b.solid);
     b.a = color.a;
     b.samples = ctx->samples;
-    b.full = ctx->samples == 32 ? UINT32_MAX : (UINT32_C(1) << ctx->samples) - 1;
-    b.alpha8 = ef_alpha_of_mask8();
-    b.alpha_n = ef_alpha_of_count(ctx->samples);
+    b.count8 = ef_count_of_mask8();
+    const uint8_t *alpha_n = ef_alpha_of_count(ctx->samples);
+    for (int n = 0; n <= ctx->samples; n++) {
+        b.s4_n[n] = ef_mul255x4(b.p4, alpha_n[n]);
+        b.sa_n[n] = ef_mul255(color.a, alpha_n[n]);
+    }
     /* A transparent colour changes no pixel, but it is still rasterized so that
      * the diagnostics (and later the vectors) see every shape.  The fillers
      * composite each span as they close it (ef_blend_span in internal.h). */

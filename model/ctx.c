@@ -53,7 +53,7 @@ ef_status ef_ctx_create(ef_ctx **out, int32_t width, int32_t height, int samples
         return EF_ERR_NOMEM;
     }
     for (int32_t j = 0; j < height; j++)
-        ctx->slot[j] = -1;
+        ctx->slot[j] = (ef_slot){ -1, 0 };
     *out = ctx;
     return EF_OK;
 }

@@ -46,28 +46,42 @@ static inline int32_t floor_shr(int32_t v, unsigned sh)
     return (int32_t)(((uint32_t)v + (UINT32_C(1) << 25)) >> sh) - (int32_t)((UINT32_C(1) << 25) >> sh);
 }
 
+/* What edge setup keeps in registers while it walks a polygon: the edge
+ * store's state is written back once (through ctx, every store into an edge
+ * record could alias these fields and force reloads). */
+typedef struct setup_state {
+    ef_edge *edges;
+    ef_slot *slot;
+    uint32_t nedges;
+    uint32_t dropped;
+    int32_t h, c;           /* 256/N and h/2 */
+    unsigned sh;            /* h = 2^sh */
+    int32_t last_row;       /* last sample row, N*H - 1 */
+    int32_t row_min, row_max;
+} setup_state;
+
 /* Spec 5 steps 2-4 and 6 for one edge a -> b (not horizontal).  h = 256/N is
  * a power of two (2^sh), so the ceilings of step 3 are shifts.  Step 5 (the
  * DDA's divisions) is ef_dda_start, run by the plotter at the edge's first
  * row. */
-static inline void setup_edge(ef_ctx *ctx, ef_point a, ef_point b, unsigned sh, int32_t last_row,
-                              int32_t *row_min, int32_t *row_max)
+static inline void setup_edge(setup_state *st, ef_point a, ef_point b)
 {
-    const int32_t h = ctx->h, c = ctx->c;
+    const int32_t h = st->h, c = st->c;
+    const unsigned sh = st->sh;
     const int down = a.y < b.y;
     const ef_point p0 = down ? a : b, p1 = down ? b : a;
     int32_t r0 = floor_shr(p0.y - c + h - 1, sh);         /* ceil((Y0 - c) / h) */
     int32_t r1 = floor_shr(p1.y - c - 1, sh);             /* ceil((Y1 - c) / h) - 1 */
     if (r0 < 0)
         r0 = 0;                                            /* top clip: start inside */
-    if (r1 > last_row)
-        r1 = last_row;                                     /* bottom clip */
+    if (r1 > st->last_row)
+        r1 = st->last_row;                                 /* bottom clip */
     if (r0 > r1) {
-        ctx->diag.edges_dropped++;
+        st->dropped++;
         return;
     }
-    uint32_t i = ctx->nedges++;
-    ef_edge *E = &ctx->edges[i];
+    const uint32_t i = st->nedges++;
+    ef_edge *E = &st->edges[i];
     E->x0 = p0.x;
     E->y0 = p0.y;
     E->dx = p1.x - p0.x;                                   /* |dx| < 2^24 */
@@ -76,12 +90,10 @@ static inline void setup_edge(ef_ctx *ctx, ef_point a, ef_point b, unsigned sh, 
     E->r1 = r1;
     E->dir = down ? 1 : -1;
     /* Pixel rows of the first and last sample rows: N = 2^(8 - sh), r0 >= 0. */
-    int32_t slot = r0 >> (8 - sh), last = r1 >> (8 - sh);
-    ef_et_insert(ctx, i, slot);
-    if (slot < *row_min)
-        *row_min = slot;
-    if (last > *row_max)
-        *row_max = last;
+    const int32_t slot = r0 >> (8 - sh), last = r1 >> (8 - sh);
+    ef_et_insert(st->edges, st->slot, i, slot);
+    st->row_min = slot < st->row_min ? slot : st->row_min;
+    st->row_max = last > st->row_max ? last : st->row_max;
 }
 
 ef_status ef_edges_setup(ef_ctx *ctx, const ef_polygon *poly, int32_t *row_min, int32_t *row_max)
@@ -92,21 +104,23 @@ ef_status ef_edges_setup(ef_ctx *ctx, const ef_polygon *poly, int32_t *row_min, 
     uint64_t total = poly->ncontours ? (uint64_t)poly->start[poly->ncontours] - poly->start[0] : 0;
     if (total > EF_MAX_EDGES_PER_SHAPE)
         return EF_ERR_LIMIT;
-    ef_status st = reserve_edges(ctx, (uint32_t)total);
-    if (st != EF_OK)
-        return st;
+    ef_status status = reserve_edges(ctx, (uint32_t)total);
+    if (status != EF_OK)
+        return status;
     /* Reverse input order: the edge table prepends, so its lists (and the
      * AET) read in input order (edge_table.c).  Every point is checked once
      * (as the start of its edge); a bad one undoes what was built, so an
      * error leaves no state behind (and no diagnostic counted). */
     const ef_diag diag0 = ctx->diag;
-    const unsigned sh = ctx->samples == 8 ? 5 : ctx->samples == 16 ? 4 : 3;   /* h = 2^sh */
-    const int32_t last_row = ctx->samples * ctx->height - 1;
+    setup_state st = { ctx->edges, ctx->slot, 0, 0, ctx->h, ctx->c,
+                       ctx->samples == 8 ? 5u : ctx->samples == 16 ? 4u : 3u,
+                       ctx->samples * ctx->height - 1, INT32_MAX, -1 };
+    uint32_t edges_in = 0;
     int bad = 0;
     for (uint32_t ci = poly->ncontours; ci-- > 0 && !bad;) {
         uint32_t b = poly->start[ci], n = poly->start[ci + 1] - b;
         const ef_point *pts = poly->pts + b;
-        ctx->diag.edges_in += n;
+        edges_in += n;
         if (n == 0)
             continue;
         ef_point bb = pts[0];                      /* edge k runs pts[k] -> pts[k+1 mod n] */
@@ -121,20 +135,23 @@ ef_status ef_edges_setup(ef_ctx *ctx, const ef_polygon *poly, int32_t *row_min, 
                 break;
             }
             if (a.y == bb.y)
-                ctx->diag.edges_dropped++;             /* horizontal: crosses no row */
+                st.dropped++;                          /* horizontal: crosses no row */
             else
-                setup_edge(ctx, a, bb, sh, last_row, row_min, row_max);
+                setup_edge(&st, a, bb);
             bb = a;
         }
     }
     if (bad) {
-        for (int32_t j = *row_min; j <= *row_max; j++)
-            ctx->slot[j] = -1;
+        for (int32_t j = st.row_min; j <= st.row_max; j++)
+            ctx->slot[j] = (ef_slot){ -1, 0 };
         ctx->nedges = 0;
         ctx->diag = diag0;
-        *row_min = INT32_MAX;
-        *row_max = -1;
         return EF_ERR_ARG;
     }
+    ctx->nedges = st.nedges;
+    ctx->diag.edges_in += edges_in;
+    ctx->diag.edges_dropped += st.dropped;
+    *row_min = st.row_min;
+    *row_max = st.row_max;
     return EF_OK;
 }

@@ -20,12 +20,10 @@ void ef_et_reset(ef_ctx *ctx)
 
 int32_t ef_et_take(ef_ctx *ctx, int32_t row, uint32_t *n)
 {
-    int32_t head = ctx->slot[row];
-    if (head < 0) {
-        *n = 0;
-        return -1;
-    }
-    ctx->slot[row] = -1;
-    *n = (uint32_t)ctx->edges[head].count;
+    ef_slot *S = &ctx->slot[row];
+    const int32_t head = S->head;
+    *n = S->n;
+    S->head = -1;
+    S->n = 0;
     return head;
 }

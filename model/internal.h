@@ -48,7 +48,6 @@ typedef struct ef_edge {
     int32_t dx;     /* X1 - X0 */
     int32_t r0;     /* first sample row (clipped) */
     int32_t next;   /* edge-table slot list link, -1 ends */
-    int32_t count;  /* edges in the slot list from this one on */
 } ef_edge;
 
 /* Plotter paths (plotter.c).  CLAMP: the general one.  The others need
@@ -57,6 +56,13 @@ typedef struct ef_edge {
  * cannot act.  STEEP additionally moves less than 6 px over any pixel row. */
 enum { EF_PLOT_CLAMP = 0, EF_PLOT_INSIDE = 1, EF_PLOT_STEEP = 2 };
 _Static_assert((int64_t)32 * ((int64_t)1 << 24) < ((int64_t)1 << 30), "h*dX fits 30 bits: qs fits int32");
+
+/* An edge-table slot: the first edge of its list (-1: empty) and how many
+ * edges the list holds (spec 6 needs the row's AET size before plotting). */
+typedef struct ef_slot {
+    int32_t head;
+    uint32_t n;
+} ef_slot;
 
 struct ef_ctx {
     int32_t width, height;
@@ -67,7 +73,7 @@ struct ef_ctx {
     /* edge store and edge table */
     ef_edge *edges;
     uint32_t nedges, edges_cap;
-    int32_t *slot;          /* height entries: first edge of the pixel row, -1 = none */
+    ef_slot *slot;          /* height entries: the pixel row's list of new edges */
     int32_t *aet;           /* active edge indices, unsorted */
     uint32_t naet;
     uint32_t naet_row;      /* active edges while the current row was plotted */
@@ -139,16 +145,12 @@ _Static_assert((int64_t)63 * ((int64_t)1 << 24) < ((int64_t)1 << 30), "t*dX fits
 void ef_et_reset(ef_ctx *ctx);
 /* Prepends to the slot's list: edge setup inserts a polygon's edges in
  * reverse input order, so every list reads in input order. */
-static inline void ef_et_insert(ef_ctx *ctx, uint32_t edge_index, int32_t slot)
+static inline void ef_et_insert(ef_edge *edges, ef_slot *slots, uint32_t edge_index, int32_t slot)
 {
-    ef_edge *E = &ctx->edges[edge_index];
-    const int32_t head = ctx->slot[slot], empty = -(int32_t)(head < 0);
-    E->next = head;
-    /* count = 1 + the old head's count (0 for an empty slot), branch-free:
-     * an empty slot reads this record's own count, just set to 0. */
-    E->count = 0;
-    E->count = 1 + (ctx->edges[(head & ~empty) | ((int32_t)edge_index & empty)].count & ~empty);
-    ctx->slot[slot] = (int32_t)edge_index;
+    ef_slot *S = &slots[slot];
+    edges[edge_index].next = S->head;
+    S->head = (int32_t)edge_index;
+    S->n++;
 }
 /* Takes slot `row`'s list (first edge, -1 if none; *n edges) out of the edge
  * table: the plotter activates them, in input order, after the edges already
@@ -175,15 +177,19 @@ typedef struct ef_blend {
     uint32_t solid;         /* P packed in memory order */
     uint32_t solid8[8];     /* eight copies: solid fills store 32 bytes at a time */
     uint32_t a;             /* colour alpha */
-    uint32_t full;          /* the full mask 2^N - 1 */
     int samples;
-    const uint8_t *alpha8;  /* N = 8: coverage alpha of every mask */
-    const uint8_t *alpha_n; /* alpha by number of covered samples, 0..N */
+    const uint8_t *count8;  /* N = 8: covered samples of every mask */
+    /* by number n of covered samples, 0..N, with cov = alpha(n) (spec 7.3):
+     * mul(P, cov) in 4 lanes and mul(a, cov), so a partial span costs two
+     * loads instead of five multiplies (filled once per shape, ef_fill) */
+    uint64_t s4_n[33];
+    uint32_t sa_n[33];
 } ef_blend;
 
-/* coverage.c: spec 7.3 as tables: alpha of each 8-bit mask (N = 8), and
- * alpha by number of covered samples (0..N) for N = 8, 16, 32. */
-const uint8_t *ef_alpha_of_mask8(void);
+/* coverage.c: spec 7.3 as tables: the number of covered samples of each
+ * 8-bit mask (N = 8), and alpha by number of covered samples (0..N) for
+ * N = 8, 16, 32. */
+const uint8_t *ef_count_of_mask8(void);
 const uint8_t *ef_alpha_of_count(int samples);
 
 /* rasterize.c: ef_rasterize with either a span callback or, when blend is not
@@ -275,18 +281,16 @@ static inline uint32_t ef_load32(const uint8_t *p)
     return v;
 }
 
-/* Composites the span [x, x+len) of row y (spec 7.3 + 8): full says that
- * every sample is covered, else cov is the coverage alpha.  Inlined into the
- * fillers through ef_blend_span (by mask) and ef_blend_span_n (by count). */
+/* Composites the span [x, x+len) of row y (spec 7.3 + 8) where n samples,
+ * 1 <= n <= N, are covered.  Inlined into the fillers through ef_blend_span
+ * (by mask) and ef_blend_span_n (by count). */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline void ef_blend_span_cov(const ef_blend *b, int32_t y, int32_t x, int32_t len, int full, uint32_t cov)
+static inline void ef_blend_span_n(const ef_blend *b, int32_t y, int32_t x, int32_t len, uint32_t n)
 {
     uint8_t *d = b->px + (size_t)y * b->stride + (size_t)x * 4;
-    uint64_t s4;
-    uint32_t sa;
-    if (full) {
+    if ((int)n == b->samples) {
         if (b->a == 255) {
             /* d' = d + P - mul(d, 255) = P: a plain fill.  Every pixel gets
              * the same 4 bytes, so stores may overlap: a span is covered by
@@ -316,14 +320,13 @@ static inline void ef_blend_span_cov(const ef_blend *b, int32_t y, int32_t x, in
             }
             return;
         }
-        s4 = b->p4;         /* mul(P, 255) = P */
-        sa = b->a;
-    } else {
-        s4 = ef_mul255x4(b->p4, cov);
-        /* mul(a, cov) computed directly: which lane holds the alpha byte
-         * depends on the host's byte order (found on s390x by make portability). */
-        sa = ef_mul255(b->a, cov);
     }
+    /* mul(P, cov) and mul(a, cov) from the shape's table (for n = N, cov =
+     * 255: P and a).  mul(a, cov) is its own entry: which lane holds the
+     * alpha byte depends on the host's byte order (found on s390x by make
+     * portability). */
+    const uint64_t s4 = b->s4_n[n];
+    const uint32_t sa = b->sa_n[n];
     for (int32_t i = 0; i < len; i++, d += 4) {
         uint64_t dd = ef_spread4(ef_load32(d));
         uint32_t v = ef_pack4((dd + s4 - ef_mul255x4(dd, sa)) & EF_LANE8X4);
@@ -331,24 +334,14 @@ static inline void ef_blend_span_cov(const ef_blend *b, int32_t y, int32_t x, in
     }
 }
 
-/* ef_blend_span_cov for coverage mask `mask`. */
+/* ef_blend_span_n for coverage mask `mask` (not 0). */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
 static inline void ef_blend_span(const ef_blend *b, int32_t y, int32_t x, int32_t len, uint32_t mask)
 {
-    const int full = mask == b->full;
-    const uint32_t cov = full ? 0 : b->samples == 8 ? b->alpha8[mask] : b->alpha_n[ef_popcount32(mask)];
-    ef_blend_span_cov(b, y, x, len, full, cov);
-}
-
-/* ef_blend_span_cov for n covered samples, 1 <= n <= N. */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline void ef_blend_span_n(const ef_blend *b, int32_t y, int32_t x, int32_t len, uint32_t n)
-{
-    ef_blend_span_cov(b, y, x, len, (int)n == b->samples, b->alpha_n[n]);
+    const uint32_t n = b->samples == 8 ? b->count8[mask] : ef_popcount32(mask);
+    ef_blend_span_n(b, y, x, len, n);
 }
 
 #endif /* EF_INTERNAL_H */
