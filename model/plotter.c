@@ -5,7 +5,8 @@
  * one exact DDA step.  This is the hardware's one-edge-row-per-cycle loop.
  *
  * The even-odd buffer takes an XOR of the sample's bit; the non-zero buffer
- * adds the edge direction to the sample's 7-bit lane of a packed word.  The
+ * adds the edge direction to the byte that holds the sample's 7-bit lane of
+ * a packed word (modulo 256: the filler masks the pad bits, spec 6.3).  The
  * occupancy map gets a bit for every cell that may have been marked, so the
  * filler visits only those (mask tracking, word at a time); a range of cells
  * that contains every marked one bounds the row (edge tracking).  A row's
