@@ -46,9 +46,9 @@ static inline int32_t floor_shr(int32_t v, unsigned sh)
     return (int32_t)(((uint32_t)v + (UINT32_C(1) << 25)) >> sh) - (int32_t)((UINT32_C(1) << 25) >> sh);
 }
 
-/* What edge setup keeps in registers while it walks a polygon: the edge
- * store's state is written back once (through ctx, every store into an edge
- * record could alias these fields and force reloads). */
+/* Edge setup's state while it walks a polygon, in a local rather than in
+ * ctx (where every store into an edge record may alias it), written back to
+ * ctx once at the end. */
 typedef struct setup_state {
     ef_edge *edges;
     ef_slot *slot;
