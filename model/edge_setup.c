@@ -110,8 +110,8 @@ ef_status ef_edges_setup(ef_ctx *ctx, const ef_polygon *poly, int32_t *row_min, 
     /* Reverse input order: the edge table prepends, so its lists (and the
      * AET) read in input order (edge_table.c).  Every point is checked once
      * (as the start of its edge); a bad one undoes what was built, so an
-     * error leaves no state behind (and no diagnostic counted). */
-    const ef_diag diag0 = ctx->diag;
+     * error leaves no state behind (and no diagnostic counted: the counts
+     * reach ctx->diag only on success). */
     setup_state st = { ctx->edges, ctx->slot, 0, 0, ctx->h, ctx->c,
                        ctx->samples == 8 ? 5u : ctx->samples == 16 ? 4u : 3u,
                        ctx->samples * ctx->height - 1, INT32_MAX, -1 };
@@ -145,7 +145,6 @@ ef_status ef_edges_setup(ef_ctx *ctx, const ef_polygon *poly, int32_t *row_min, 
         for (int32_t j = st.row_min; j <= st.row_max; j++)
             ctx->slot[j] = (ef_slot){ -1, 0 };
         ctx->nedges = 0;
-        ctx->diag = diag0;
         return EF_ERR_ARG;
     }
     ctx->nedges = st.nedges;
