@@ -16,11 +16,10 @@
  *
  * Speed, with exactly the results of the plain loop (efbench hash, and the
  * oracle, check every bit):
- * - N is a compile-time constant per instance; at N = 32 a full row of a
- *   STEEP edge is a fixed-count loop unrolled into 32 plots with constant
- *   bits (the paper's 3.8 D), and an exact slope (rs = 0) steps without the
- *   carry; at N = 8 and 16 full rows take the partial rows' loop (measured
- *   faster: the full/partial test mispredicted more than unrolling saved);
+ * - N is a compile-time constant per instance; the rows of edges active
+ *   from earlier rows are unrolled with constant offsets, bytes and bits
+ *   (the paper's 3.8 D), and every row ends where its last sample is
+ *   plotted, without a loop counter (ROW_FROM0, ROW_LOOP);
  * - edges with both end points in [1, 256W] (EF_PLOT_INSIDE, EF_PLOT_STEEP)
  *   take x only in [0, 256W - 1], so the clamp of 6.1 cannot act and is
  *   skipped, and the shifts are of non-negative values;
@@ -49,10 +48,8 @@
 
 #if defined(__GNUC__)
 #define EF_ALWAYS_INLINE inline __attribute__((always_inline))
-#define EF_UNROLL _Pragma("GCC unroll 32")
 #else
 #define EF_ALWAYS_INLINE inline
-#define EF_UNROLL
 #endif
 
 /* The plot offsets of this context (spec 6.1), with the test mutations. */
@@ -128,6 +125,55 @@ static EF_ALWAYS_INLINE void track(const ef_ctx *ctx, int32_t xa, int32_t xb, in
         occ[(q) >> 6] |= UINT64_C(1) << ((q) & 63);                                               \
     } while (0)
 
+/* Sample rows s0..s1 of one edge in the current pixel row.  Both forms plot
+ * each sample, stop after s1, and otherwise take the sample's DDA step, so
+ * they leave x at sample s1 (the last plotted x, which edge tracking needs);
+ * the caller takes the step to the next row.
+ *
+ * ROW_FROM0 is for edges active from earlier rows, which start the row at
+ * sample 0: the samples are unrolled, each with its offset, byte and bit as
+ * constants, and the exit test is all that is left of the loop.  ROW_LOOP is
+ * for a row's new edges, which start at a data-dependent sample: entering an
+ * unrolled sequence there (a switch) cost a mispredicted jump per edge on top
+ * of the exit's, and measured slower than the loop. */
+#define ROW_SAMPLE(S, PLOT)                                                       \
+    if ((S) < NS) {                                                               \
+        const uint64_t bit = UINT64_C(1) << (S);                                  \
+        const uint32_t q_ = (uint32_t)(x + off[S]) >> EF_DEV_FRAC_BITS;          \
+        PLOT(q_, S);                                                              \
+        if ((S) == NS - 1 || (S) == s1)                                           \
+            break;                                                                \
+        DDA_STEP();                                                               \
+    }
+#define ROW_SAMPLES8(B, PLOT)                                                     \
+    ROW_SAMPLE(B + 0, PLOT) ROW_SAMPLE(B + 1, PLOT) ROW_SAMPLE(B + 2, PLOT)      \
+    ROW_SAMPLE(B + 3, PLOT) ROW_SAMPLE(B + 4, PLOT) ROW_SAMPLE(B + 5, PLOT)      \
+    ROW_SAMPLE(B + 6, PLOT) ROW_SAMPLE(B + 7, PLOT)
+#define ROW_FROM0(PLOT)                                                           \
+    do {                                                                          \
+        ROW_SAMPLES8(0, PLOT) ROW_SAMPLES8(8, PLOT)                               \
+        ROW_SAMPLES8(16, PLOT) ROW_SAMPLES8(24, PLOT)                             \
+    } while (0)
+#define ROW_LOOP(PLOT)                                                            \
+    do {                                                                          \
+        uint64_t bit = UINT64_C(1) << s0;                                         \
+        for (int s = s0;; s++) {                                                  \
+            const uint32_t q_ = (uint32_t)(x + off[s]) >> EF_DEV_FRAC_BITS;      \
+            PLOT(q_, s);                                                          \
+            if (s == s1)                                                          \
+                break;                                                            \
+            bit <<= 1;                                                            \
+            DDA_STEP();                                                           \
+        }                                                                         \
+    } while (0)
+#define ROW_SAMPLES(PLOT)                                                         \
+    do {                                                                          \
+        if (first)                                                                \
+            ROW_LOOP(PLOT);                                                       \
+        else                                                                      \
+            ROW_FROM0(PLOT);                                                      \
+    } while (0)
+
 /* Occupancy bits for the cells [a, b], a <= b, b - a < 64. */
 static EF_ALWAYS_INLINE void mark_occ_range(uint64_t *occ, uint32_t a, uint32_t b)
 {
@@ -150,7 +196,8 @@ static EF_ALWAYS_INLINE void mark_occ_range(uint64_t *occ, uint32_t a, uint32_t 
 static EF_ALWAYS_INLINE void plot_edge_row(ef_ctx *ctx, const int32_t *off, int32_t *px, int32_t *pe, int32_t qs,
                                            int32_t rs, int32_t dy, int s0, int s1, int32_t dir, int32_t mode,
                                            int32_t *lo, int32_t *hi, int32_t *lox, int32_t *hix,
-                                           uint64_t *overflows, const int NS, const int NZ, const int check)
+                                           uint64_t *overflows, const int NS, const int NZ, const int check,
+                                           const int first)
 {
     uint32_t *eo = ctx->eo_cells;
     uint8_t *nzb = (uint8_t *)ctx->nz_cells;
@@ -164,73 +211,27 @@ static EF_ALWAYS_INLINE void plot_edge_row(ef_ctx *ctx, const int32_t *off, int3
     const int32_t xa = x;
     const int32_t rsd = rs - dy, qs1 = qs + 1;
     if (EF_FAST_PATH && mode == EF_PLOT_STEEP) {
-        /* x in [0, 256W - 1]: q = (x + off) >> 8 in [0, W], no clamp. */
+        /* x in [0, 256W - 1]: q = (x + off) >> 8 in [0, W], no clamp.  For
+         * N >= 16 (more samples a row) the occupancy range is marked once;
+         * for N = 8 a bit per sample costs less (measured). */
         *lox = xa < *lox ? xa : *lox;
         *hix = xa > *hix ? xa : *hix;
-        if (NS == 32 && s0 == 0 && s1 == NS - 1) {
-            /* A full row at N = 32, unrolled; its cells lie in [xa/256, xl/256 + 1]
-             * (x moves monotonically), marked in the occupancy map at once.
-             * An exact slope (rs = 0: vertical edges, among others) steps
-             * without the carry. */
-            int32_t xl = x;
-            if (rs == 0) {
-                EF_UNROLL
-                for (int s = 0; s < NS; s++) {
-                    const uint64_t bit = UINT64_C(1) << s;
-                    const uint32_t q = (uint32_t)(x + off[s]) >> EF_DEV_FRAC_BITS;
-                    PLOT_CELL_NOOCC(q, s);
-                    xl = x;
-                    x += qs;
-                }
-            } else {
-                EF_UNROLL
-                for (int s = 0; s < NS; s++) {
-                    const uint64_t bit = UINT64_C(1) << s;
-                    const uint32_t q = (uint32_t)(x + off[s]) >> EF_DEV_FRAC_BITS;
-                    PLOT_CELL_NOOCC(q, s);
-                    xl = x;
-                    DDA_STEP();
-                }
-            }
-            const uint32_t a = (uint32_t)(xa < xl ? xa : xl) >> EF_DEV_FRAC_BITS;
-            const uint32_t b = ((uint32_t)(xa < xl ? xl : xa) >> EF_DEV_FRAC_BITS) + 1;   /* <= W */
+        if (NS >= 16) {
+            ROW_SAMPLES(PLOT_CELL_NOOCC);
+            const uint32_t a = (uint32_t)(xa < x ? xa : x) >> EF_DEV_FRAC_BITS;
+            const uint32_t b = ((uint32_t)(xa < x ? x : xa) >> EF_DEV_FRAC_BITS) + 1;   /* <= W */
             mark_occ_range(occ, a, b);
         } else {
-            /* A partial row (s0..s1), or a full one at N = 8, 16.  For
-             * N >= 16 (more samples a row) the occupancy range is marked
-             * once; for N = 8 a bit per sample costs less (measured). */
-            int32_t xl = x;
-            uint64_t bit = UINT64_C(1) << s0;
-            for (int s = s0; s <= s1; s++) {
-                const uint32_t q = (uint32_t)(x + off[s]) >> EF_DEV_FRAC_BITS;
-                if (NS >= 16)
-                    PLOT_CELL_NOOCC(q, s);
-                else
-                    PLOT_CELL(q, s);
-                bit <<= 1;
-                xl = x;
-                DDA_STEP();
-            }
-            if (NS >= 16) {
-                const uint32_t a = (uint32_t)(xa < xl ? xa : xl) >> EF_DEV_FRAC_BITS;
-                const uint32_t b = ((uint32_t)(xa < xl ? xl : xa) >> EF_DEV_FRAC_BITS) + 1;   /* <= W */
-                mark_occ_range(occ, a, b);
-            }
+            ROW_SAMPLES(PLOT_CELL);
         }
+        DDA_STEP();
     } else if (EF_FAST_PATH && mode == EF_PLOT_INSIDE) {
-        int32_t xl = x;
-        uint64_t bit = UINT64_C(1) << s0;
-        for (int s = s0; s <= s1; s++) {
-            const uint32_t q = (uint32_t)(x + off[s]) >> EF_DEV_FRAC_BITS;
-            PLOT_CELL(q, s);
-            bit <<= 1;
-            xl = x;
-            DDA_STEP();
-        }
+        ROW_SAMPLES(PLOT_CELL);
         /* the first and last plotted x, both in [0, 256W - 1] */
-        const int32_t a = xa < xl ? xa : xl, b = xa < xl ? xl : xa;
+        const int32_t a = xa < x ? xa : x, b = xa < x ? x : xa;
         *lox = a < *lox ? a : *lox;
         *hix = b > *hix ? b : *hix;
+        DDA_STEP();
     } else {
         const int32_t W = ctx->width;
         int32_t xl = x;
@@ -270,7 +271,7 @@ static EF_ALWAYS_INLINE void plot_row(ef_ctx *ctx, int32_t row, int32_t head, in
         const int32_t r1 = E->r1;
         const int s1 = (r1 < end ? r1 : end) - base;
         plot_edge_row(ctx, off, &x, &e, E->qs, E->rs, E->dy, 0, s1, E->dir, E->mode, &lo, &hi, &lox, &hix,
-                      &overflows, NS, NZ, check);
+                      &overflows, NS, NZ, check, 0);
         /* Still active below this row: stays, in AET order.  Branch-free:
          * whether an edge ends here is data, and would mispredict. */
         E->x = x;
@@ -287,7 +288,7 @@ static EF_ALWAYS_INLINE void plot_row(ef_ctx *ctx, int32_t row, int32_t head, in
         const int32_t r1 = E->r1;
         const int s1 = (r1 < end ? r1 : end) - base;
         plot_edge_row(ctx, off, &x, &e, E->qs, E->rs, E->dy, E->r0 - base, s1, E->dir, E->mode, &lo, &hi, &lox,
-                      &hix, &overflows, NS, NZ, check);
+                      &hix, &overflows, NS, NZ, check, 1);
         E->x = x;
         E->e = e;
         aet[kept] = idx;
