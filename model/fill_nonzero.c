@@ -30,27 +30,54 @@ static inline uint32_t lanes_nonzero(uint64_t acc)
     return gather_pads(((acc & EF_LANES7) + EF_LANES7) & EF_PADS);
 }
 
+/* For N = 16 and 32 with compositing, the lanes are added as 16-byte
+ * vectors (GCC's and Clang's generic vector extension: SSE2 on x86-64, NEON
+ * on AArch64, plain words elsewhere).  The arithmetic is the same byte-wise
+ * add and mask as the words' (lanes do not carry into each other), so the
+ * results are the same bits; EF_NO_VECTOR builds (tests/portability.sh)
+ * take the word path instead. */
+#if defined(__GNUC__) && !defined(EF_NO_VECTOR)
+#define EF_FILL_VECTOR 1
+typedef uint8_t ef_u8x16 __attribute__((vector_size(16)));
+
+/* Sum of the 16 bytes of v, each at most 2 (so no byte carries). */
+static inline uint32_t byte_sum16(ef_u8x16 v)
+{
+    uint64_t w[2];
+    memcpy(w, &v, 16);
+    return (uint32_t)(((w[0] + w[1]) * UINT64_C(0x0101010101010101)) >> 56);
+}
+#else
+#define EF_FILL_VECTOR 0
+#endif
+
 static EF_ALWAYS_INLINE void fill_nonzero(ef_ctx *ctx, int32_t y, int32_t xmin, int32_t xmax, ef_span_fn span,
                                           void *user, const ef_blend *blend, const int direct, const int words,
                                           const int check_overflow)
 {
     /* Compositing needs only how many samples are covered, not which: for
-     * N = 16, 32 the state is then the sum over the words of their pad bits
-     * moved to bit 0 of each byte (byte L: how many of the words have lane L
-     * non-zero, at most 4), whose byte sum is the count (at most 32: the
-     * multiply's top byte gets no carry); the mask by sample, which costs a
-     * gather per word, is built only for the span callback and N = 8 (its
-     * alpha table is by mask). */
+     * N = 16, 32 the state is then that count, taken as a byte sum of the
+     * lanes' non-zero flags (with vectors), or of the words' pad bits moved to
+     * bit 0 of each byte (byte L: how many of the words have lane L non-zero,
+     * at most 4; the multiply's top byte gets no carry); the mask by sample,
+     * which costs a gather per word, is built only for the span callback and
+     * N = 8 (its alpha table is by mask). */
     const int by_count = direct && words > 1;
+    const int by_vector = EF_FILL_VECTOR && by_count;
     uint64_t *occ = ctx->occ;
     const int32_t W = ctx->width;
     uint64_t acc[4] = { 0, 0, 0, 0 };
-    uint64_t mask = 0;               /* coverage mask, or the interleaved pads (by_count) */
+    uint64_t mask = 0;               /* coverage mask, the interleaved pads (by_count) or the count (by_vector) */
     uint64_t overflows = 0;
     int32_t start = xmin;
+#if EF_FILL_VECTOR
+    ef_u8x16 vacc[2] = { { 0 }, { 0 } };
+#endif
 #define NZ_SPAN(x0, n)                                                                        \
     do {                                                                                      \
-        if (by_count)                                                                         \
+        if (by_vector)                                                                        \
+            ef_blend_span_n(blend, y, x0, n, (uint32_t)mask);                                 \
+        else if (by_count)                                                                    \
             ef_blend_span_n(blend, y, x0, n, (uint32_t)((mask * UINT64_C(0x0101010101010101)) >> 56)); \
         else if (direct)                                                                      \
             ef_blend_span(blend, y, x0, n, (uint32_t)mask);                                   \
@@ -71,6 +98,34 @@ static EF_ALWAYS_INLINE void fill_nonzero(ef_ctx *ctx, int32_t y, int32_t xmin, 
              * bytes), cleared as read, including a cell whose counters are
              * all 0 modulo 128 (its pad bits may be set). */
             uint64_t *cell = &ctx->nz_cells[(size_t)p * (size_t)words];
+#if EF_FILL_VECTOR
+            if (by_vector) {
+                /* A cell whose counters cancelled closes a span here and
+                 * opens one with the same count: the same pixels, and no
+                 * test for it on every cell. */
+                ef_u8x16 v[2];
+                memcpy(v, cell, (size_t)words * 8);
+                memset(cell, 0, (size_t)words * 8);    /* clear-on-read */
+                if (mask && p > start) {
+                    int32_t len = (p < W ? p : W) - start;
+                    NZ_SPAN(start, len);
+                }
+                ef_u8x16 nonzero = { 0 }, over = { 0 };
+                for (int k = 0; k < words / 2; k++) {
+                    const ef_u8x16 a = vacc[k], b = v[k] & 0x7F;
+                    const ef_u8x16 sum = (a + b) & 0x7F;
+                    if (check_overflow)      /* as below: operands agree in sign, result not */
+                        over -= (ef_u8x16)((~(a ^ b) & (a ^ sum) & 0x40) != 0);
+                    vacc[k] = sum;
+                    nonzero -= (ef_u8x16)(sum != 0);
+                }
+                if (check_overflow)
+                    overflows += byte_sum16(over);
+                mask = byte_sum16(nonzero);
+                start = p;
+                continue;
+            }
+#endif
             uint64_t v[4], any = 0;
             for (int w = 0; w < words; w++) {
                 memcpy(&v[w], &cell[w], 8);

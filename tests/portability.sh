@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Same bits everywhere (`make portability`).  Builds edgeflag
-#   - natively with gcc and clang at -O0 and -O3,
+#   - natively with gcc and clang at -O0 and -O3, and with gcc -O2
+#     -DEF_NO_VECTOR (the word-at-a-time filler that builds without GCC's
+#     vector extension take),
 #   - as 32-bit x86 programs (gcc and clang -m32 -O2),
 #   - for aarch64 (little-endian) and s390x (big-endian) with clang
 #     --target=... -static against Debian's cross C libraries, at -O0 and -O3,
@@ -68,6 +70,7 @@ build build-bx-gcc-O0 "" "2 1 62" CC=gcc OPT=-O0
 build build-bx-gcc-O3 "" "2 1 62" CC=gcc OPT=-O3
 build build-bx-clang-O0 "" "2 1 62" CC=clang OPT=-O0
 build build-bx-clang-O3 "" "2 1 62" CC=clang OPT=-O3
+build build-bx-gcc-O2-novector "" "2 1 62" CC=gcc OPT=-O2 EXTRA_CFLAGS=-DEF_NO_VECTOR
 build build-bx-gcc-O2-m32 "" "1 1 3" CC=gcc OPT=-O2 EXTRA_CFLAGS=-m32 EXTRA_LDFLAGS=-m32 WITH_SVG=0 WITH_PNG=0
 build build-bx-clang-O2-m32 "" "1 1 3" CC=clang OPT=-O2 EXTRA_CFLAGS=-m32 EXTRA_LDFLAGS=-m32 WITH_SVG=0 WITH_PNG=0
 foreign=()
