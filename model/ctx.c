@@ -48,7 +48,8 @@ ef_status ef_ctx_create(ef_ctx **out, int32_t width, int32_t height, int samples
     ctx->eo_cells = calloc(cells, sizeof *ctx->eo_cells);
     ctx->nz_cells = calloc(cells * (size_t)(samples / 8), sizeof *ctx->nz_cells);
     ctx->occ = calloc((cells + 63) / 64, sizeof *ctx->occ);
-    if (!ctx->slot || !ctx->eo_cells || !ctx->nz_cells || !ctx->occ) {
+    ctx->crowd = calloc(cells + 1, sizeof *ctx->crowd);
+    if (!ctx->slot || !ctx->eo_cells || !ctx->nz_cells || !ctx->occ || !ctx->crowd) {
         ef_ctx_destroy(ctx);
         return EF_ERR_NOMEM;
     }
@@ -64,10 +65,12 @@ void ef_ctx_destroy(ef_ctx *ctx)
         return;
     free(ctx->edges);
     free(ctx->aet);
+    free(ctx->aet_saved);
     free(ctx->slot);
     free(ctx->eo_cells);
     free(ctx->nz_cells);
     free(ctx->occ);
+    free(ctx->crowd);
     free(ctx->trace);
     free(ctx);
 }

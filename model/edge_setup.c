@@ -28,6 +28,10 @@ static ef_status reserve_edges(ef_ctx *ctx, uint32_t need)
     if (!a)
         return EF_ERR_NOMEM;
     ctx->aet = a;
+    ef_aet_saved *sv = realloc(ctx->aet_saved, (size_t)cap * sizeof *sv);
+    if (!sv)
+        return EF_ERR_NOMEM;
+    ctx->aet_saved = sv;
     ctx->edges_cap = cap;
     return EF_OK;
 }

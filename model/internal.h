@@ -57,6 +57,11 @@ typedef struct ef_edge {
 enum { EF_PLOT_CLAMP = 0, EF_PLOT_INSIDE = 1, EF_PLOT_STEEP = 2 };
 _Static_assert((int64_t)32 * ((int64_t)1 << 24) < ((int64_t)1 << 30), "h*dX fits 30 bits: qs fits int32");
 
+/* An active edge's place and DDA state before a crowded row (plotter.c). */
+typedef struct ef_aet_saved {
+    int32_t idx, x, e;
+} ef_aet_saved;
+
 /* An edge-table slot: the first edge of its list (-1: empty) and how many
  * edges the list holds (spec 6 needs the row's AET size before plotting). */
 typedef struct ef_slot {
@@ -77,6 +82,9 @@ struct ef_ctx {
     int32_t *aet;           /* active edge indices, unsorted */
     uint32_t naet;
     uint32_t naet_row;      /* active edges while the current row was plotted */
+    ef_aet_saved *aet_saved; /* edges_cap entries: the AET as a crowded row found it (plotter.c) */
+    int32_t *crowd;         /* W + 2 entries, zero between rows: edges that may plot per cell, as differences */
+    int32_t crowd_lo, crowd_hi; /* the entries of crowd that a crowded row touched */
 
     /* the one-scanline buffer: W+1 cells (cell W is the right-clamp sink) */
     uint32_t *eo_cells;     /* even-odd: N bits per cell */
