@@ -177,8 +177,9 @@ static EF_ALWAYS_INLINE void fill_nonzero(ef_ctx *ctx, int32_t y, int32_t xmin, 
 void ef_fill_nonzero(ef_ctx *ctx, int32_t y, int32_t xmin, int32_t xmax, ef_span_fn span, void *user,
                      const ef_blend *blend)
 {
-    /* Same reasoning as the plotter: with at most 63 active edges no running
-     * counter can leave [-64, 63], so the check is skipped there. */
+    /* A running counter is a sample's winding number, at most the number of
+     * active edges in size: with at most 63 it cannot leave [-64, 63], so
+     * the check is skipped there. */
     const int check = ctx->naet_row >= 64;
     switch (ctx->samples * 2 + check) {
     case 16: FILL_NZ(1, 0); break;
