@@ -16,12 +16,6 @@
  */
 #include "internal.h"
 
-#if defined(__GNUC__)
-#define EF_ALWAYS_INLINE inline __attribute__((always_inline))
-#else
-#define EF_ALWAYS_INLINE inline
-#endif
-
 static EF_ALWAYS_INLINE void fill_evenodd(ef_ctx *ctx, int32_t y, int32_t xmin, int32_t xmax, ef_span_fn span,
                                           void *user, const ef_blend *blend, const int direct)
 {

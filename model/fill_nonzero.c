@@ -11,12 +11,6 @@
  */
 #include "internal.h"
 
-#if defined(__GNUC__)
-#define EF_ALWAYS_INLINE inline __attribute__((always_inline))
-#else
-#define EF_ALWAYS_INLINE inline
-#endif
-
 /* Pad bits (bit 8L+7) of a word -> bits 0..7 in lane order: the multiply moves
  * bit 8L to bit 56+L with no carries into the top byte (checked exhaustively
  * in tests/unit/test_model.c). */

@@ -22,6 +22,14 @@
 #include "ef_fixed.h"
 
 /* Packed winding constants (spec 6.3). */
+/* The hot paths' helpers: inlined where the compiler would not on its own
+ * (their constant arguments select the code). */
+#if defined(__GNUC__)
+#define EF_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define EF_ALWAYS_INLINE inline
+#endif
+
 #define EF_LANES7 UINT64_C(0x7F7F7F7F7F7F7F7F)
 #define EF_PADS UINT64_C(0x8080808080808080)
 #define EF_SIGN7 UINT64_C(0x4040404040404040)
@@ -43,6 +51,8 @@ typedef struct ef_edge {
     int32_t r1;     /* last sample row (inclusive, clipped) */
     int32_t dir;    /* +1 downward, -1 upward */
     int32_t mode;   /* plotter path, EF_PLOT_* */
+    int32_t qn;     /* MASK edges: floor(256*dX / dY), the DDA's step over a pixel row */
+    int32_t rn;     /* MASK edges: (256*dX) mod dY */
     /* from edge setup (steps 2-4, 6) */
     int32_t x0, y0; /* upper end point */
     int32_t dx;     /* X1 - X0 */
@@ -53,8 +63,13 @@ typedef struct ef_edge {
 /* Plotter paths (plotter.c).  CLAMP: the general one.  The others need
  * 1 <= X0, X1 <= 256*W: the DDA's x = ceil(x_r) - 1 then stays in
  * [0, 256W - 1], so q = (x + off) >> 8 lies in [0, W] and the spec 6.1 clamp
- * cannot act.  STEEP additionally moves less than 6 px over any pixel row. */
-enum { EF_PLOT_CLAMP = 0, EF_PLOT_INSIDE = 1, EF_PLOT_STEEP = 2 };
+ * cannot act.  STEEP additionally moves less than 6 px over any pixel row.
+ * MASK (only when the plotter asks for it): moves less than 1 px over a row,
+ * so a row's samples mark at most three cells, and dY < 2^21 (the row's
+ * comparisons fit 32 bits); its DDA state is kept at the first sample row of
+ * each pixel row (extrapolated above the edge's start in its first row). */
+enum { EF_PLOT_CLAMP = 0, EF_PLOT_INSIDE = 1, EF_PLOT_STEEP = 2, EF_PLOT_MASK = 3 };
+#define EF_MASK_MAX_DY (INT32_C(1) << 21)
 _Static_assert((int64_t)32 * ((int64_t)1 << 24) < ((int64_t)1 << 30), "h*dX fits 30 bits: qs fits int32");
 
 /* An active edge's place and DDA state before a crowded row (plotter.c). */
@@ -74,6 +89,7 @@ struct ef_ctx {
     int samples;            /* N */
     int32_t h, c;           /* 256/N and h/2, Q16.8 */
     int32_t off[32];        /* plot offset per sub-scanline: 256 - h*k_s - c */
+    _Alignas(16) int16_t mask_pairs[64]; /* (s, off[s]), s = 0..N-1: MASK rows' multiplier pairs (plotter.c) */
 
     /* edge store and edge table */
     ef_edge *edges;
@@ -106,46 +122,76 @@ struct ef_ctx {
 ef_status ef_edges_setup(ef_ctx *ctx, const ef_polygon *poly, int32_t *row_min, int32_t *row_max);
 
 /* Spec 5 step 5, exact: the DDA of an edge set up by ef_edges_setup, at its
- * first sample row r0, and its plotter path.  h = 256/N, c = h/2.
- * x = floor(A / dY) = X0 + floor(B / dY) with B = (Y_r0 - Y0)*dX - 1, and
- * Y_r0 - Y0 < h unless the top clip moved r0, so B fits 32 bits (|B| < 2^30)
- * and the division is a 32-bit one except for edges clipped at the top. */
-static inline void ef_dda_start(ef_edge *E, int32_t h, int32_t c, int32_t w256, int last_s)
+ * first sample row r0, and its plotter path.  h = 256/N, c = h/2, last_s =
+ * N - 1.  x = floor(A / dY) = X0 + floor(B / dY) with B = (Y_r - Y0)*dX - 1,
+ * and Y_r - Y0 < h unless the top clip moved r0, so B fits 32 bits
+ * (|B| < 2^30) and the division is a 32-bit one except for edges clipped at
+ * the top.  mask_ok: the plotter can take MASK edges; their x is that of the
+ * first sample row of r0's pixel row instead (the same formula at Y_r up to
+ * 255 - h above Y0: |B| <= 256 * |dX| < 2^30 for them). */
+static EF_ALWAYS_INLINE void ef_dda_start(ef_edge *E, int32_t h, int32_t c, int32_t w256, int last_s, int mask_ok)
 {
     const int32_t dy = E->dy, dx = E->dx;
-    const int32_t t = h * E->r0 + c - E->y0;          /* Y_r0 - Y0 >= 0 */
-    if (t <= 63) {
-        /* C division truncates; floor it without a branch (the sign of B is
-         * data and would mispredict): remainder r < 0 -> q - 1, r + dy. */
-        const int32_t B = t * dx - 1, q = B / dy, r = B % dy, neg = -(int32_t)(r < 0);
-        E->x = E->x0 + q + neg;
-        E->e = r + (dy & neg);
-    } else {
-        /* |A| < 2^23 * 2^24 + 2^24 * 2^24 < 2^49: exact in int64. */
-        int64_t A = (int64_t)E->x0 * dy + (int64_t)t * dx - 1, q, r;
-        ef_divmod_floor_i64(A, dy, &q, &r);
-        E->x = (int32_t)q;
-        E->e = (int32_t)r;
-    }
-    /* |h*dx| < 2^29 and dy < 2^24: 32-bit division, same floor rule.  (An
-     * edge crossing one sample row never steps; computing its step anyway
-     * costs less than the branch.) */
-    const int32_t step = h * dx, q2 = step / dy, r2 = step % dy, neg2 = -(int32_t)(r2 < 0);
-    const int32_t qs = q2 + neg2, rs = r2 + (dy & neg2);
-    E->qs = qs;
-    E->rs = rs;
-    /* Branch-free (edge orientation is data): end points' x range, then the
-     * path: 0 CLAMP, 1 INSIDE, 2 STEEP (|x step| <= |qs| + 1, over at most
-     * last_s steps within one row). */
+    const int32_t step = h * dx;                      /* |h*dx| < 2^29 */
+    /* End points' x range (branch-free: edge orientation is data). */
     const int32_t neg3 = -(int32_t)(dx < 0);
     const int32_t xlo = E->x0 + (dx & neg3), xhi = E->x0 + (dx & ~neg3);
     const int32_t inside = (xlo >= 1) & (xhi <= w256);
-    /* qs + 1 for qs >= 0, -qs = ~qs + 1 for qs < 0: (qs ^ sign) + 1 (a select
-     * here compiled to a branch that mispredicted on about one edge in four) */
+    /* MASK: |x step| <= |qs| + 1 <= K = floor(255 / last_s), qs = floor(step /
+     * dY), i.e. -K*dY <= step < K*dY (no division; K*dY < 2^27 here). */
+    const int32_t K = 255 / last_s;
+    const int32_t mask = inside & (mask_ok != 0) & (dy < EF_MASK_MAX_DY) & (w256 >= 2 * EF_DEV_ONE) &
+                         (step >= -K * (dy & (EF_MASK_MAX_DY - 1))) & (step < K * (dy & (EF_MASK_MAX_DY - 1)));
+    /* One 32-bit division gives the DDA's step: per sample row, (qs, rs) =
+     * floor divmod(h*dX, dY), or for a MASK edge per pixel row, (qn, rn) =
+     * floor divmod(256*dX, dY) (|256*dX| < 256 * 1.15 * dY < 2^30 by the
+     * bound above).  C division truncates; floor it without a branch (the
+     * sign is data and would mispredict): remainder r < 0 -> q - 1, r + dy.
+     * (An edge crossing one sample row never steps; computing its step anyway
+     * costs less than the branch.) */
+    const int32_t num = dx * (h + ((EF_DEV_ONE - h) & -mask));
+    const int32_t q2 = num / dy, r2 = num % dy, neg2 = -(int32_t)(r2 < 0);
+    const int32_t qs = q2 + neg2, rs = r2 + (dy & neg2);
+    E->qs = qs;             /* MASK edges: not their (qs, rs); ef_mask_demote computes those */
+    E->rs = rs;
+    E->qn = qs;
+    E->rn = rs;
+    /* The path: 0 CLAMP, 1 INSIDE, 2 STEEP (|x step| <= |qs| + 1, over at
+     * most last_s steps within one row, less than 6 px), 3 MASK (under 1 px).
+     * |qs| + 1 for qs >= 0, -qs = ~qs + 1 for qs < 0: (qs ^ sign) + 1 (a
+     * select here compiled to a branch that mispredicted on about one edge in
+     * four) */
     const int32_t sgn = -(int32_t)((uint32_t)qs >> 31);
-    const uint32_t step_abs = (uint32_t)(qs ^ sgn) + 1u;
-    const int32_t steep = (uint64_t)step_abs * (uint32_t)last_s < 6u * EF_DEV_ONE;
-    E->mode = inside * (EF_PLOT_INSIDE + steep);
+    const uint64_t moves = (uint64_t)((uint32_t)(qs ^ sgn) + 1u) * (uint32_t)last_s;
+    const int32_t steep = (moves < 6u * EF_DEV_ONE) | mask;
+    E->mode = inside * (EF_PLOT_INSIDE + steep) + mask;
+    /* A MASK edge starts at the first sample row of its pixel row: r0 with
+     * its sample index (r0 mod N) cleared. */
+    const int32_t r = E->r0 & ~(last_s & -mask);
+    const int32_t t = h * r + c - E->y0;              /* Y_r - Y0: >= 0 unless MASK */
+    if (t <= 63) {
+        const int32_t B = t * dx - 1, q = B / dy, rem = B % dy, neg = -(int32_t)(rem < 0);
+        E->x = E->x0 + q + neg;
+        E->e = rem + (dy & neg);
+    } else {
+        /* |A| < 2^23 * 2^24 + 2^24 * 2^24 < 2^49: exact in int64. */
+        int64_t A = (int64_t)E->x0 * dy + (int64_t)t * dx - 1, q, rem;
+        ef_divmod_floor_i64(A, dy, &q, &rem);
+        E->x = (int32_t)q;
+        E->e = (int32_t)rem;
+    }
+}
+
+/* A MASK edge to STEEP, for rows plotted sample by sample: its per-sample
+ * step (qs, rs), as ef_dda_start computes it for the other paths.  Its DDA
+ * state, at the first sample row of a pixel row, is what STEEP edges carry
+ * between rows. */
+static inline void ef_mask_demote(ef_edge *E, int32_t h)
+{
+    const int32_t step = h * E->dx, q = step / E->dy, r = step % E->dy, neg = -(int32_t)(r < 0);
+    E->qs = q + neg;
+    E->rs = r + (E->dy & neg);
+    E->mode = EF_PLOT_STEEP;
 }
 _Static_assert((int64_t)63 * ((int64_t)1 << 24) < ((int64_t)1 << 30), "t*dX fits 31 bits when t <= 63");
 

@@ -30,6 +30,10 @@
  *   cells, which change no span (unmarked cells are zero, spec 7.1);
  * - data-dependent choices (an edge's end, the DDA carry, the floor of a
  *   division) are computed without branches, which would mispredict;
+ * - at N = 16 and 32, MASK edges (less than 1 px of movement a row) plot
+ *   a whole row at once from two exact compares per sample, SSE2 over the
+ *   row's samples, without a loop or a data-dependent branch
+ *   (plot_mask_row, spec 6.1);
  * - the winding-overflow diagnostic (spec 6.4) is only evaluated on rows
  *   where 64 edges may plot into one cell (ef_plot_nonzero): with fewer no
  *   counter can leave [-64, 63], so the count is the same.
@@ -46,11 +50,25 @@
 #endif
 #define EF_FAST_PATH (EF_MUTATION == 0)
 
-#if defined(__GNUC__)
-#define EF_ALWAYS_INLINE inline __attribute__((always_inline))
+/* MASK rows (plot_mask_row) use SSE2, which every x86-64 has; other hosts,
+ * big-endian ones (the byte order of the non-zero lanes) and EF_NO_VECTOR
+ * builds plot those edges sample by sample, with the same results. */
+#if EF_FAST_PATH && !defined(EF_NO_VECTOR) && defined(__SSE2__) && defined(__BYTE_ORDER__) &&                \
+    __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+#include <emmintrin.h>
+#define EF_MASK_ROWS 1
 #else
-#define EF_ALWAYS_INLINE inline
+#define EF_MASK_ROWS 0
 #endif
+/* At N = 8 (about 3.5 samples an edge-row on tiger and on text) a row costs
+ * more than its samples plotted one by one (measured: 18% more instructions,
+ * 11% more time), so 8x keeps the sample loop. */
+#ifndef EF_MASK_MIN_N
+#define EF_MASK_MIN_N 16
+#endif
+/* Whether this plotter instance takes MASK rows: not on rows that count
+ * winding overflows, which need the plots in AET order. */
+#define MASK_ROWS(NS, check) (EF_MASK_ROWS && !(check) && (NS) >= EF_MASK_MIN_N)
 
 /* The plot offsets of this context (spec 6.1), with the test mutations. */
 static EF_ALWAYS_INLINE void load_offsets(const ef_ctx *ctx, int32_t *off, const int NS)
@@ -218,7 +236,7 @@ static EF_ALWAYS_INLINE void plot_edge_row(ef_ctx *ctx, const int32_t *off, int3
     int32_t x = *px, e = *pe;
     const int32_t xa = x;
     const int32_t rsd = rs - dy, qs1 = qs + 1;
-    if (EF_FAST_PATH && mode == EF_PLOT_STEEP) {
+    if (EF_FAST_PATH && mode >= EF_PLOT_STEEP) {   /* MASK edges too, on rows that count overflows */
         /* x in [0, 256W - 1]: q = (x + off) >> 8 in [0, W], no clamp.  For
          * N >= 16 (more samples a row) the occupancy range is marked once;
          * for N = 8 a bit per sample costs less (measured). */
@@ -256,6 +274,126 @@ static EF_ALWAYS_INLINE void plot_edge_row(ef_ctx *ctx, const int32_t *off, int3
     *px = x;
     *pe = e;
 }
+
+#if EF_MASK_ROWS
+/* Byte masks of a sample range s0..s1 for 16 and 32 samples: 32 bytes from
+ * mask_from[dir < 0] + 32 - s0 hold d8 from byte s0 on, 32 bytes from mask_to
+ * + 31 - s1 are 0xFF up to byte s1. */
+#define EF_X32(v) v, v, v, v, v, v, v, v, v, v, v, v, v, v, v, v, v, v, v, v, v, v, v, v, v, v, v, v, v, v, v, v
+static const uint8_t mask_from[2][64] = { { EF_X32(0), EF_X32(1) }, { EF_X32(0), EF_X32(0xFF) } };
+static const uint8_t mask_to[64] = { EF_X32(0xFF), EF_X32(0) };
+#undef EF_X32
+
+/* P_s = s*step + dY*off_s for the four samples of pairs[j] (see plot_mask_row). */
+static EF_ALWAYS_INLINE __m128i mask_p4(const __m128i *pairs, int j, __m128i bl, __m128i bh)
+{
+    const __m128i a = _mm_load_si128(&pairs[j]);   /* ctx (calloc) and the array are 16-byte aligned */
+    return _mm_add_epi32(_mm_madd_epi16(a, bl), _mm_slli_epi32(_mm_madd_epi16(a, bh), 15));
+}
+
+/* Samples 16k..16k+15 as bytes, -1 where P_s > c. */
+static EF_ALWAYS_INLINE __m128i mask_ge16(const __m128i *p, __m128i c)
+{
+    return _mm_packs_epi16(_mm_packs_epi32(_mm_cmpgt_epi32(p[0], c), _mm_cmpgt_epi32(p[1], c)),
+                           _mm_packs_epi32(_mm_cmpgt_epi32(p[2], c), _mm_cmpgt_epi32(p[3], c)));
+}
+
+/* One pixel row of a MASK edge (less than 1 px of movement over the row),
+ * all its samples at once and without a branch.  (*px, *pe) is the DDA state
+ * at the row's first sample row (extrapolated in the edge's first row); the
+ * edge plots samples s0..s1.  Sample s's x is X_s = x + floor((e + s*step) /
+ * dY), step = h*dX, and its cell q_s = floor((X_s + off_s) / 256) lies in
+ * [B, B + 2], B = floor(x / 256) - (dX < 0) clamped to [0, W - 2] (X_s stays
+ * within 255 of x, on the side dX points to).  Since dY > 0 and the right
+ * side is a multiple of dY:
+ *     q_s >= B + j  <=>  X_s + off_s >= 256(B + j)
+ *                   <=>  P_s = s*step + dY*off_s >= dY*(256(B + j) - x) - e = T_j,
+ * so two compares per sample (j = 1, 2) give each sample's cell.  |P_s| <=
+ * (N-1)|step| + 255 dY < 510 dY and |T_j| < 768 dY: with dY < 2^21 all fit
+ * 32 bits.  P_s is two 16-bit multiply-adds of the pairs (s, off_s) with
+ * (step, dY) split at bit 15 (pmaddwd).  The compares become byte masks per
+ * sample, which the non-zero buffer adds (d8 in the masked bytes; paddb is
+ * the byte add modulo 256 of the sample loop) and the even-odd one XORs as
+ * bits.  The state then takes the row's whole DDA step, (qn, rn). */
+static EF_ALWAYS_INLINE void plot_mask_row(ef_ctx *ctx, int32_t *px, int32_t *pe, const ef_edge *E, int s0, int s1,
+                                           int32_t *lo, int32_t *hi, const int NS, const int NZ)
+{
+    const int32_t x = *px, e = *pe, dy = E->dy, dx = E->dx;
+    const int32_t step = dx * (EF_DEV_ONE / NS);
+    const int32_t B = ef_clamp_i32(ef_asr_i32(x, EF_DEV_FRAC_BITS) - (dx < 0), 0, ctx->width - 2);
+    const int32_t t1 = dy * (EF_DEV_ONE * (B + 1) - x) - e;   /* 256(B+1) - x in [-510, 511] */
+    const __m128i bl = _mm_set1_epi32((int32_t)((uint32_t)(dy & 0x7FFF) << 16 | ((uint32_t)step & 0x7FFFu)));
+    const __m128i bh = _mm_set1_epi32(
+        (int32_t)((uint32_t)(dy >> 15) << 16 | ((uint32_t)ef_asr_i32(step, 15) & 0xFFFFu)));
+    const __m128i c1 = _mm_set1_epi32(t1 - 1), c2 = _mm_set1_epi32(t1 - 1 + EF_DEV_ONE * dy);
+    const __m128i *pairs = (const __m128i *)ctx->mask_pairs;
+    *lo = B < *lo ? B : *lo;
+    *hi = B + 2 > *hi ? B + 2 : *hi;
+    /* the samples s0..s1 as bits; m1, m2: the samples that reach B + 1, B + 2 */
+    const uint32_t r = (~UINT32_C(0) << s0) & (~UINT32_C(0) >> (31 - s1));
+    uint32_t m1 = 0, m2 = 0;
+    if (NS == 8) {
+        /* bytes 0-7: sample s reaches B + 1; bytes 8-15: B + 2 */
+        const __m128i p0 = mask_p4(pairs, 0, bl, bh), p1 = mask_p4(pairs, 1, bl, bh);
+        const __m128i g = _mm_packs_epi16(_mm_packs_epi32(_mm_cmpgt_epi32(p0, c1), _mm_cmpgt_epi32(p1, c1)),
+                                          _mm_packs_epi32(_mm_cmpgt_epi32(p0, c2), _mm_cmpgt_epi32(p1, c2)));
+        const uint32_t m = (uint32_t)_mm_movemask_epi8(g);
+        m1 = m & 0xFFu;
+        m2 = m >> 8;
+        if (NZ) {
+            const uint64_t r8 = (~UINT64_C(0) << (8 * s0)) & (~UINT64_C(0) >> (8 * (7 - s1)));
+            const __m128i rd = _mm_set1_epi64x((long long)(r8 & (UINT64_C(0x0101010101010101) * (uint8_t)E->dir)));
+            const __m128i a = _mm_andnot_si128(g, rd);                 /* [r & ~G1 | r & ~G2] */
+            const __m128i add01 = _mm_and_si128(a, _mm_or_si128(_mm_slli_si128(g, 8), _mm_set_epi64x(0, -1)));
+            const __m128i add2 = _mm_srli_si128(_mm_and_si128(g, rd), 8);
+            uint8_t *cell = (uint8_t *)ctx->nz_cells + (size_t)B * 8;
+            _mm_storeu_si128((__m128i *)cell, _mm_add_epi8(_mm_loadu_si128((const __m128i *)cell), add01));
+            _mm_storel_epi64((__m128i *)(cell + 16), _mm_add_epi8(_mm_loadl_epi64((const __m128i *)(cell + 16)), add2));
+        }
+    } else {
+        /* groups of 16 samples; the bytes of samples s0..s1 hold d8 */
+        const uint8_t *from = mask_from[E->dir < 0] + 32 - s0, *to = mask_to + 31 - s1;
+        uint8_t *cell = (uint8_t *)ctx->nz_cells + (size_t)B * (size_t)NS;
+#pragma GCC unroll 2
+        for (int k = 0; k < NS / 16; k++) {
+            const __m128i p[4] = { mask_p4(pairs, 4 * k, bl, bh), mask_p4(pairs, 4 * k + 1, bl, bh),
+                                   mask_p4(pairs, 4 * k + 2, bl, bh), mask_p4(pairs, 4 * k + 3, bl, bh) };
+            const __m128i G1 = mask_ge16(p, c1), G2 = mask_ge16(p, c2);
+            if (NZ) {
+                const __m128i rd = _mm_and_si128(_mm_loadu_si128((const __m128i *)(from + 16 * k)),
+                                                 _mm_loadu_si128((const __m128i *)(to + 16 * k)));
+                __m128i *v0 = (__m128i *)(cell + 16 * k), *v1 = (__m128i *)(cell + NS + 16 * k),
+                        *v2 = (__m128i *)(cell + 2 * NS + 16 * k);
+                _mm_storeu_si128(v0, _mm_add_epi8(_mm_loadu_si128(v0), _mm_andnot_si128(G1, rd)));
+                _mm_storeu_si128(v1, _mm_add_epi8(_mm_loadu_si128(v1), _mm_andnot_si128(G2, _mm_and_si128(G1, rd))));
+                _mm_storeu_si128(v2, _mm_add_epi8(_mm_loadu_si128(v2), _mm_and_si128(G2, rd)));
+            }
+            m1 |= (uint32_t)_mm_movemask_epi8(G1) << (16 * k);
+            m2 |= (uint32_t)_mm_movemask_epi8(G2) << (16 * k);
+        }
+    }
+    /* the samples of each cell; even-odd: the cells' XORs */
+    const uint32_t in0 = r & ~m1, in1 = r & m1 & ~m2, in2 = r & m2;
+    if (!NZ) {
+        uint32_t *eo = ctx->eo_cells + B;
+        eo[0] ^= in0;
+        eo[1] ^= in1;
+        eo[2] ^= in2;
+    }
+    /* occupancy of the cells marked (the word after the last one exists and
+     * only ever takes zeros: B + 2 <= W) */
+    const uint64_t marked = (uint64_t)(in0 != 0) | (uint64_t)(in1 != 0) << 1 | (uint64_t)(in2 != 0) << 2;
+    uint64_t *occ = ctx->occ;
+    const uint32_t ow = (uint32_t)B >> 6, osh = (uint32_t)B & 63;
+    occ[ow] |= marked << osh;
+    occ[ow + 1] |= (marked >> 1) >> (63 - osh);
+    /* the DDA step over the whole row: t = e + rn - dy, as DDA_STEP */
+    const int32_t t = e + E->rn - dy;
+    const int32_t neg = -(int32_t)((uint32_t)t >> 31);
+    *pe = t + (dy & neg);
+    *px = x + E->qn + 1 + neg;
+}
+#endif
 
 /* A crowded row's edge that plots x values between xa and xb (either
  * order): one more edge that may plot into each of its cells
@@ -302,8 +440,13 @@ static EF_ALWAYS_INLINE void plot_row(ef_ctx *ctx, int32_t row, int32_t head, in
         const int s1 = (r1 < end ? r1 : end) - base;
         if (crowd)
             saved[k] = (ef_aet_saved){ idx, x, e };
-        plot_edge_row(ctx, off, &x, &e, E->qs, E->rs, E->dy, 0, s1, E->dir, E->mode, &lo, &hi, &lox, &hix,
-                      &overflows, NS, NZ, check, 0);
+#if EF_MASK_ROWS
+        if (MASK_ROWS(NS, check) && E->mode == EF_PLOT_MASK)
+            plot_mask_row(ctx, &x, &e, E, 0, s1, &lo, &hi, NS, NZ);
+        else
+#endif
+            plot_edge_row(ctx, off, &x, &e, E->qs, E->rs, E->dy, 0, s1, E->dir, E->mode, &lo, &hi, &lox, &hix,
+                          &overflows, NS, NZ, check, 0);
         if (crowd)
             crowd_add(crowd_d, W, E->x, x, &crowd_lo, &crowd_hi);   /* x is monotonic: first plot to past the last */
         /* Still active below this row: stays, in AET order.  Branch-free:
@@ -317,12 +460,17 @@ static EF_ALWAYS_INLINE void plot_row(ef_ctx *ctx, int32_t row, int32_t head, in
     const int32_t h = ctx->h, c = ctx->c, w256 = ctx->width * EF_DEV_ONE;
     for (int32_t idx = head; idx >= 0;) {
         ef_edge *E = &edges[idx];
-        ef_dda_start(E, h, c, w256, NS - 1);
+        ef_dda_start(E, h, c, w256, NS - 1, MASK_ROWS(NS, check));
         int32_t x = E->x, e = E->e;
         const int32_t r1 = E->r1;
         const int s1 = (r1 < end ? r1 : end) - base;
-        plot_edge_row(ctx, off, &x, &e, E->qs, E->rs, E->dy, E->r0 - base, s1, E->dir, E->mode, &lo, &hi, &lox,
-                      &hix, &overflows, NS, NZ, check, 1);
+#if EF_MASK_ROWS
+        if (MASK_ROWS(NS, check) && E->mode == EF_PLOT_MASK)
+            plot_mask_row(ctx, &x, &e, E, E->r0 - base, s1, &lo, &hi, NS, NZ);
+        else
+#endif
+            plot_edge_row(ctx, off, &x, &e, E->qs, E->rs, E->dy, E->r0 - base, s1, E->dir, E->mode, &lo, &hi,
+                          &lox, &hix, &overflows, NS, NZ, check, 1);
         if (crowd)
             crowd_add(crowd_d, W, E->x, x, &crowd_lo, &crowd_hi);
         E->x = x;
@@ -392,6 +540,18 @@ static void crowd_undo(ef_ctx *ctx, uint32_t naet, int32_t xmin, int32_t xmax)
     memset(&ctx->occ[xmin >> 6], 0, (size_t)((xmax >> 6) - (xmin >> 6) + 1) * sizeof *ctx->occ);
 }
 
+/* Before a row plotted with the overflow count (sample by sample, in AET
+ * order): the AET's MASK edges become STEEP ones (new edges start as such on
+ * those rows, MASK_ROWS). */
+static void mask_demote_aet(ef_ctx *ctx)
+{
+    for (uint32_t k = 0; k < ctx->naet; k++) {
+        ef_edge *E = &ctx->edges[ctx->aet[k]];
+        if (E->mode == EF_PLOT_MASK)
+            ef_mask_demote(E, ctx->h);
+    }
+}
+
 #define PLOT_NZ(check, crowd)                                                              \
     do {                                                                                   \
         switch (ctx->samples) {                                                            \
@@ -420,6 +580,8 @@ void ef_plot_nonzero(ef_ctx *ctx, int32_t row, int32_t head, int32_t *xmin, int3
         return;
     }
     if (ctx->samples == 8 || !EF_FAST_PATH) {
+        if (MASK_ROWS(8, 0))
+            mask_demote_aet(ctx);
         PLOT_NZ(1, 0);
         return;
     }
@@ -431,5 +593,7 @@ void ef_plot_nonzero(ef_ctx *ctx, int32_t row, int32_t head, int32_t *xmin, int3
     crowd_undo(ctx, naet, *xmin, *xmax);
     *xmin = xmin0;
     *xmax = xmax0;
+    if (EF_MASK_ROWS)
+        mask_demote_aet(ctx);
     PLOT_NZ(1, 0);
 }

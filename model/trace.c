@@ -143,7 +143,7 @@ ef_status ef_trace_fill(ef_ctx *ctx, ef_image *img, const ef_polygon *poly, ef_r
             if (rec < 0 || !record_of(&ctx->edges[rec], a, z))
                 continue;                         /* horizontal or outside: no record */
             ef_edge E = ctx->edges[rec--];        /* a copy: the plotter starts the DDA itself */
-            ef_dda_start(&E, h, c, w256, ctx->samples - 1);
+            ef_dda_start(&E, h, c, w256, ctx->samples - 1, 0);
             const uint64_t vw[10] = { 0, (uint64_t)E.r0 >> log2n, (uint64_t)E.r0, (uint64_t)E.r1, bits(E.x),
                                       (uint64_t)E.e, bits(E.qs), (uint64_t)E.rs, (uint64_t)E.dy, E.dir < 0 };
             ef_trace_emit(tr, EF_IF_ET_WR, t + EF_L_DEC + EF_L_SETUP, vw);

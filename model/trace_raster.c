@@ -217,7 +217,7 @@ uint64_t ef_trace_rows(ef_ctx *ctx, ef_image *img, ef_rule rule, const uint8_t p
         }
         for (int32_t idx = head; idx >= 0; idx = ctx->edges[idx].next) {   /* new, input order */
             ef_edge *E = &ctx->edges[idx];
-            ef_dda_start(E, h, c, w256, ns - 1);
+            ef_dda_start(E, h, c, w256, ns - 1, 0);
             plot_edge(&r, E, row, E->r0 - base, (E->r1 < end ? E->r1 : end) - base, &xmin, &xmax);
             if (E->r1 > end)
                 ctx->aet[kept++] = idx;

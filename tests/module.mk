@@ -49,6 +49,7 @@ test-oracle: $(ORACLE_CHECK) $(ORACLE_SELFTEST) $(AREA_CHECK)
 	$(ORACLE_SELFTEST)
 	$(AREA_CHECK)
 	$(ORACLE_CHECK) --shared $(EF_SHARED)/data/svg --random $(ORACLE_SCENES) --seed $(ORACLE_SEED)
+	$(ORACLE_CHECK) --shared tests/data/mask_rows
 
 test-mutants:
 	@bash tests/mutants.sh

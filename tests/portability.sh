@@ -2,7 +2,8 @@
 # Same bits everywhere (`make portability`).  Builds edgeflag
 #   - natively with gcc and clang at -O0 and -O3, and with gcc -O2
 #     -DEF_NO_VECTOR (the word-at-a-time filler that builds without GCC's
-#     vector extension take),
+#     vector extension take, and the plotter without its SSE2 whole-row
+#     path, as on every non-x86-64 target),
 #   - as 32-bit x86 programs (gcc and clang -m32 -O2),
 #   - for aarch64 (little-endian) and s390x (big-endian) with clang
 #     --target=... -static against Debian's cross C libraries, at -O0 and -O3,
