@@ -60,15 +60,12 @@
 #else
 #define EF_MASK_ROWS 0
 #endif
-/* At N = 8 (about 3.5 samples an edge-row on tiger and on text) a row costs
- * more than its samples plotted one by one (measured: 18% more instructions,
- * 11% more time), so 8x keeps the sample loop. */
-#ifndef EF_MASK_MIN_N
-#define EF_MASK_MIN_N 16
-#endif
-/* Whether this plotter instance takes MASK rows: not on rows that count
- * winding overflows, which need the plots in AET order. */
-#define MASK_ROWS(NS, check) (EF_MASK_ROWS && !(check) && (NS) >= EF_MASK_MIN_N)
+/* Whether this plotter instance takes MASK rows: N = 16 and 32 (at N = 8,
+ * about 3.5 samples an edge-row on tiger and on text, a whole row measured
+ * 18% more instructions and 11% more time than its samples one by one), and
+ * not on rows that count winding overflows, which need the plots in AET
+ * order. */
+#define MASK_ROWS(NS, check) (EF_MASK_ROWS && !(check) && (NS) >= 16)
 
 /* The plot offsets of this context (spec 6.1), with the test mutations. */
 static EF_ALWAYS_INLINE void load_offsets(const ef_ctx *ctx, int32_t *off, const int NS)
@@ -298,7 +295,7 @@ static EF_ALWAYS_INLINE __m128i mask_ge16(const __m128i *p, __m128i c)
                            _mm_packs_epi32(_mm_cmpgt_epi32(p[2], c), _mm_cmpgt_epi32(p[3], c)));
 }
 
-/* One pixel row of a MASK edge (less than 1 px of movement over the row),
+/* One pixel row of a MASK edge (less than 1 px of movement over the row; N = 16, 32),
  * all its samples at once and without a branch.  (*px, *pe) is the DDA state
  * at the row's first sample row (extrapolated in the edge's first row); the
  * edge plots samples s0..s1.  Sample s's x is X_s = x + floor((e + s*step) /
@@ -332,45 +329,25 @@ static EF_ALWAYS_INLINE void plot_mask_row(ef_ctx *ctx, int32_t *px, int32_t *pe
     /* the samples s0..s1 as bits; m1, m2: the samples that reach B + 1, B + 2 */
     const uint32_t r = (~UINT32_C(0) << s0) & (~UINT32_C(0) >> (31 - s1));
     uint32_t m1 = 0, m2 = 0;
-    if (NS == 8) {
-        /* bytes 0-7: sample s reaches B + 1; bytes 8-15: B + 2 */
-        const __m128i p0 = mask_p4(pairs, 0, bl, bh), p1 = mask_p4(pairs, 1, bl, bh);
-        const __m128i g = _mm_packs_epi16(_mm_packs_epi32(_mm_cmpgt_epi32(p0, c1), _mm_cmpgt_epi32(p1, c1)),
-                                          _mm_packs_epi32(_mm_cmpgt_epi32(p0, c2), _mm_cmpgt_epi32(p1, c2)));
-        const uint32_t m = (uint32_t)_mm_movemask_epi8(g);
-        m1 = m & 0xFFu;
-        m2 = m >> 8;
-        if (NZ) {
-            const uint64_t r8 = (~UINT64_C(0) << (8 * s0)) & (~UINT64_C(0) >> (8 * (7 - s1)));
-            const __m128i rd = _mm_set1_epi64x((long long)(r8 & (UINT64_C(0x0101010101010101) * (uint8_t)E->dir)));
-            const __m128i a = _mm_andnot_si128(g, rd);                 /* [r & ~G1 | r & ~G2] */
-            const __m128i add01 = _mm_and_si128(a, _mm_or_si128(_mm_slli_si128(g, 8), _mm_set_epi64x(0, -1)));
-            const __m128i add2 = _mm_srli_si128(_mm_and_si128(g, rd), 8);
-            uint8_t *cell = (uint8_t *)ctx->nz_cells + (size_t)B * 8;
-            _mm_storeu_si128((__m128i *)cell, _mm_add_epi8(_mm_loadu_si128((const __m128i *)cell), add01));
-            _mm_storel_epi64((__m128i *)(cell + 16), _mm_add_epi8(_mm_loadl_epi64((const __m128i *)(cell + 16)), add2));
-        }
-    } else {
-        /* groups of 16 samples; the bytes of samples s0..s1 hold d8 */
-        const uint8_t *from = mask_from[E->dir < 0] + 32 - s0, *to = mask_to + 31 - s1;
-        uint8_t *cell = (uint8_t *)ctx->nz_cells + (size_t)B * (size_t)NS;
+    /* groups of 16 samples; the bytes of samples s0..s1 hold d8 */
+    const uint8_t *from = mask_from[E->dir < 0] + 32 - s0, *to = mask_to + 31 - s1;
+    uint8_t *cell = (uint8_t *)ctx->nz_cells + (size_t)B * (size_t)NS;
 #pragma GCC unroll 2
-        for (int k = 0; k < NS / 16; k++) {
-            const __m128i p[4] = { mask_p4(pairs, 4 * k, bl, bh), mask_p4(pairs, 4 * k + 1, bl, bh),
-                                   mask_p4(pairs, 4 * k + 2, bl, bh), mask_p4(pairs, 4 * k + 3, bl, bh) };
-            const __m128i G1 = mask_ge16(p, c1), G2 = mask_ge16(p, c2);
-            if (NZ) {
-                const __m128i rd = _mm_and_si128(_mm_loadu_si128((const __m128i *)(from + 16 * k)),
-                                                 _mm_loadu_si128((const __m128i *)(to + 16 * k)));
-                __m128i *v0 = (__m128i *)(cell + 16 * k), *v1 = (__m128i *)(cell + NS + 16 * k),
-                        *v2 = (__m128i *)(cell + 2 * NS + 16 * k);
-                _mm_storeu_si128(v0, _mm_add_epi8(_mm_loadu_si128(v0), _mm_andnot_si128(G1, rd)));
-                _mm_storeu_si128(v1, _mm_add_epi8(_mm_loadu_si128(v1), _mm_andnot_si128(G2, _mm_and_si128(G1, rd))));
-                _mm_storeu_si128(v2, _mm_add_epi8(_mm_loadu_si128(v2), _mm_and_si128(G2, rd)));
-            }
-            m1 |= (uint32_t)_mm_movemask_epi8(G1) << (16 * k);
-            m2 |= (uint32_t)_mm_movemask_epi8(G2) << (16 * k);
+    for (int k = 0; k < NS / 16; k++) {
+        const __m128i p[4] = { mask_p4(pairs, 4 * k, bl, bh), mask_p4(pairs, 4 * k + 1, bl, bh),
+                               mask_p4(pairs, 4 * k + 2, bl, bh), mask_p4(pairs, 4 * k + 3, bl, bh) };
+        const __m128i G1 = mask_ge16(p, c1), G2 = mask_ge16(p, c2);
+        if (NZ) {
+            const __m128i rd = _mm_and_si128(_mm_loadu_si128((const __m128i *)(from + 16 * k)),
+                                             _mm_loadu_si128((const __m128i *)(to + 16 * k)));
+            __m128i *v0 = (__m128i *)(cell + 16 * k), *v1 = (__m128i *)(cell + NS + 16 * k),
+                    *v2 = (__m128i *)(cell + 2 * NS + 16 * k);
+            _mm_storeu_si128(v0, _mm_add_epi8(_mm_loadu_si128(v0), _mm_andnot_si128(G1, rd)));
+            _mm_storeu_si128(v1, _mm_add_epi8(_mm_loadu_si128(v1), _mm_andnot_si128(G2, _mm_and_si128(G1, rd))));
+            _mm_storeu_si128(v2, _mm_add_epi8(_mm_loadu_si128(v2), _mm_and_si128(G2, rd)));
         }
+        m1 |= (uint32_t)_mm_movemask_epi8(G1) << (16 * k);
+        m2 |= (uint32_t)_mm_movemask_epi8(G2) << (16 * k);
     }
     /* the samples of each cell; even-odd: the cells' XORs */
     const uint32_t in0 = r & ~m1, in1 = r & m1 & ~m2, in2 = r & m2;
@@ -580,8 +557,6 @@ void ef_plot_nonzero(ef_ctx *ctx, int32_t row, int32_t head, int32_t *xmin, int3
         return;
     }
     if (ctx->samples == 8 || !EF_FAST_PATH) {
-        if (MASK_ROWS(8, 0))
-            mask_demote_aet(ctx);
         PLOT_NZ(1, 0);
         return;
     }
