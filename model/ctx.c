@@ -40,9 +40,8 @@ ef_status ef_ctx_create(ef_ctx **out, int32_t width, int32_t height, int samples
     ctx->c = 0;   /* test builds only: samples shifted half a sub-pixel (tests/mutants.sh) */
 #endif
     const uint8_t *k = ef_pattern(samples);
-    for (int s = 0; s < samples; s++)
-        ctx->off[s] = EF_DEV_ONE - ctx->h * k[s] - ctx->c;   /* spec 6.1: 1 <= off <= 255 */
     for (int s = 0; s < samples; s++) {
+        ctx->off[s] = EF_DEV_ONE - ctx->h * k[s] - ctx->c;   /* spec 6.1: 1 <= off <= 255 */
         ctx->mask_pairs[2 * s] = (int16_t)s;
         ctx->mask_pairs[2 * s + 1] = (int16_t)ctx->off[s];
     }

@@ -45,14 +45,12 @@ typedef struct ef_edge {
     /* DDA state (spec 5 step 5), hot in the plotter */
     int32_t x;      /* Q16.8: ceil(exact crossing of the next row) - 1 */
     int32_t e;      /* error term, 0 <= e < dy */
-    int32_t qs;     /* floor(h*dX / dY) */
-    int32_t rs;     /* (h*dX) mod dY */
+    int32_t qs;     /* floor(h*dX / dY); MASK edges: floor(256*dX / dY), the step over a pixel row */
+    int32_t rs;     /* (h*dX) mod dY; MASK edges: (256*dX) mod dY */
     int32_t dy;     /* Y1 - Y0 > 0 */
     int32_t r1;     /* last sample row (inclusive, clipped) */
     int32_t dir;    /* +1 downward, -1 upward */
     int32_t mode;   /* plotter path, EF_PLOT_* */
-    int32_t qn;     /* MASK edges: floor(256*dX / dY), the DDA's step over a pixel row */
-    int32_t rn;     /* MASK edges: (256*dX) mod dY */
     /* from edge setup (steps 2-4, 6) */
     int32_t x0, y0; /* upper end point */
     int32_t dx;     /* X1 - X0 */
@@ -152,10 +150,8 @@ static EF_ALWAYS_INLINE void ef_dda_start(ef_edge *E, int32_t h, int32_t c, int3
     const int32_t num = dx * (h + ((EF_DEV_ONE - h) & -mask));
     const int32_t q2 = num / dy, r2 = num % dy, neg2 = -(int32_t)(r2 < 0);
     const int32_t qs = q2 + neg2, rs = r2 + (dy & neg2);
-    E->qs = qs;             /* MASK edges: not their (qs, rs); ef_mask_demote computes those */
+    E->qs = qs;             /* MASK edges: (qn, rn); ef_mask_demote makes them per sample row */
     E->rs = rs;
-    E->qn = qs;
-    E->rn = rs;
     /* The path: 0 CLAMP, 1 INSIDE, 2 STEEP (|x step| <= |qs| + 1, over at
      * most last_s steps within one row, less than 6 px), 3 MASK (under 1 px).
      * |qs| + 1 for qs >= 0, -qs = ~qs + 1 for qs < 0: (qs ^ sign) + 1 (a
@@ -182,8 +178,8 @@ static EF_ALWAYS_INLINE void ef_dda_start(ef_edge *E, int32_t h, int32_t c, int3
     }
 }
 
-/* A MASK edge to STEEP, for rows plotted sample by sample: its per-sample
- * step (qs, rs), as ef_dda_start computes it for the other paths.  Its DDA
+/* A MASK edge to STEEP, for rows plotted sample by sample: (qs, rs) become
+ * its per-sample step, as ef_dda_start computes it for the other paths.  Its DDA
  * state, at the first sample row of a pixel row, is what STEEP edges carry
  * between rows. */
 static inline void ef_mask_demote(ef_edge *E, int32_t h)
