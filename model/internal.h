@@ -21,7 +21,6 @@
 #include "edgeflag.h"
 #include "ef_fixed.h"
 
-/* Packed winding constants (spec 6.3). */
 /* The hot paths' helpers: inlined where the compiler would not on its own
  * (their constant arguments select the code). */
 #if defined(__GNUC__)
@@ -30,6 +29,7 @@
 #define EF_ALWAYS_INLINE inline
 #endif
 
+/* Packed winding constants (spec 6.3). */
 #define EF_LANES7 UINT64_C(0x7F7F7F7F7F7F7F7F)
 #define EF_PADS UINT64_C(0x8080808080808080)
 #define EF_SIGN7 UINT64_C(0x4040404040404040)
@@ -136,10 +136,12 @@ static EF_ALWAYS_INLINE void ef_dda_start(ef_edge *E, int32_t h, int32_t c, int3
     const int32_t xlo = E->x0 + (dx & neg3), xhi = E->x0 + (dx & ~neg3);
     const int32_t inside = (xlo >= 1) & (xhi <= w256);
     /* MASK: |x step| <= |qs| + 1 <= K = floor(255 / last_s), qs = floor(step /
-     * dY), i.e. -K*dY <= step < K*dY (no division; K*dY < 2^27 here). */
-    const int32_t K = 255 / last_s;
+     * dY), i.e. -K*dY <= step < K*dY (no division).  dy_low is dY when it
+     * is below the bound and keeps K*dy_low < 2^27 when it is not (the test
+     * fails then anyway). */
+    const int32_t K = 255 / last_s, dy_low = dy & (EF_MASK_MAX_DY - 1);
     const int32_t mask = inside & (mask_ok != 0) & (dy < EF_MASK_MAX_DY) & (w256 >= 2 * EF_DEV_ONE) &
-                         (step >= -K * (dy & (EF_MASK_MAX_DY - 1))) & (step < K * (dy & (EF_MASK_MAX_DY - 1)));
+                         (step >= -K * dy_low) & (step < K * dy_low);
     /* One 32-bit division gives the DDA's step: per sample row, (qs, rs) =
      * floor divmod(h*dX, dY), or for a MASK edge per pixel row, (qn, rn) =
      * floor divmod(256*dX, dY) (|256*dX| < 256 * 1.15 * dY < 2^30 by the
