@@ -13,5 +13,5 @@ for p in libagg-dev libcairo2 libpixman-1-0 libfreetype6 libstb-dev; do
     printf '%-11s %s\n' "$p:" "$(dpkg-query -W -f='${Version}' "$p" 2>/dev/null || echo '?')"
 done
 git_rev=$(git -C "$(dirname "$0")/.." rev-parse --short HEAD 2>/dev/null || echo '?')
-dirty=$(git -C "$(dirname "$0")/.." status --porcelain -- model fixed bench 2>/dev/null | head -c1)
+dirty=$(git -C "$(dirname "$0")/.." status --porcelain -- model fixed bench ':!bench/results' ':!bench/RESULTS.md' 2>/dev/null | head -c1)
 echo "edgeflag:   commit $git_rev${dirty:+ + local changes}"
