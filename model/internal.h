@@ -119,6 +119,16 @@ struct ef_ctx {
  * (row_min > row_max when none). */
 ef_status ef_edges_setup(ef_ctx *ctx, const ef_polygon *poly, int32_t *row_min, int32_t *row_max);
 
+/* floor(a / d) and a - d * floor(a / d) for d > 0, in 32 bits.  C division
+ * truncates; the floor is taken without a branch (the sign of a is data and
+ * would mispredict): remainder r < 0 -> q - 1, r + d. */
+static EF_ALWAYS_INLINE void ef_divmod_floor_i32(int32_t a, int32_t d, int32_t *q, int32_t *r)
+{
+    const int32_t q0 = a / d, r0 = a % d, neg = -(int32_t)(r0 < 0);
+    *q = q0 + neg;
+    *r = r0 + (d & neg);
+}
+
 /* Spec 5 step 5, exact: the DDA of an edge set up by ef_edges_setup, at its
  * first sample row r0, and its plotter path.  h = 256/N, c = h/2, last_s =
  * N - 1.  x = floor(A / dY) = X0 + floor(B / dY) with B = (Y_r - Y0)*dX - 1,
@@ -145,13 +155,11 @@ static EF_ALWAYS_INLINE void ef_dda_start(ef_edge *E, int32_t h, int32_t c, int3
     /* One 32-bit division gives the DDA's step: per sample row, (qs, rs) =
      * floor divmod(h*dX, dY), or for a MASK edge per pixel row, (qn, rn) =
      * floor divmod(256*dX, dY) (|256*dX| < 256 * 1.15 * dY < 2^30 by the
-     * bound above).  C division truncates; floor it without a branch (the
-     * sign is data and would mispredict): remainder r < 0 -> q - 1, r + dy.
-     * (An edge crossing one sample row never steps; computing its step anyway
-     * costs less than the branch.) */
+     * bound above).  (An edge crossing one sample row never steps; computing
+     * its step anyway costs less than the branch.) */
     const int32_t num = dx * (h + ((EF_DEV_ONE - h) & -mask));
-    const int32_t q2 = num / dy, r2 = num % dy, neg2 = -(int32_t)(r2 < 0);
-    const int32_t qs = q2 + neg2, rs = r2 + (dy & neg2);
+    int32_t qs, rs;
+    ef_divmod_floor_i32(num, dy, &qs, &rs);
     E->qs = qs;             /* MASK edges: (qn, rn); ef_mask_demote makes them per sample row */
     E->rs = rs;
     /* The path: 0 CLAMP, 1 INSIDE, 2 STEEP (|x step| <= |qs| + 1, over at
@@ -168,9 +176,10 @@ static EF_ALWAYS_INLINE void ef_dda_start(ef_edge *E, int32_t h, int32_t c, int3
     const int32_t r = E->r0 & ~(last_s & -mask);
     const int32_t t = h * r + c - E->y0;              /* Y_r - Y0: >= 0 unless MASK */
     if (t <= 63) {
-        const int32_t B = t * dx - 1, q = B / dy, rem = B % dy, neg = -(int32_t)(rem < 0);
-        E->x = E->x0 + q + neg;
-        E->e = rem + (dy & neg);
+        int32_t q, rem;
+        ef_divmod_floor_i32(t * dx - 1, dy, &q, &rem);
+        E->x = E->x0 + q;
+        E->e = rem;
     } else {
         /* |A| < 2^23 * 2^24 + 2^24 * 2^24 < 2^49: exact in int64. */
         int64_t A = (int64_t)E->x0 * dy + (int64_t)t * dx - 1, q, rem;
@@ -186,9 +195,7 @@ static EF_ALWAYS_INLINE void ef_dda_start(ef_edge *E, int32_t h, int32_t c, int3
  * between rows. */
 static inline void ef_mask_demote(ef_edge *E, int32_t h)
 {
-    const int32_t step = h * E->dx, q = step / E->dy, r = step % E->dy, neg = -(int32_t)(r < 0);
-    E->qs = q + neg;
-    E->rs = r + (E->dy & neg);
+    ef_divmod_floor_i32(h * E->dx, E->dy, &E->qs, &E->rs);
     E->mode = EF_PLOT_STEEP;
 }
 _Static_assert((int64_t)63 * ((int64_t)1 << 24) < ((int64_t)1 << 30), "t*dX fits 31 bits when t <= 63");

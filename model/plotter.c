@@ -255,7 +255,7 @@ static EF_ALWAYS_INLINE void plot_mask_row(ef_ctx *ctx, int32_t *px, int32_t *pe
                                            int32_t rn, int32_t dir, int s0, int s1, int32_t *lo, int32_t *hi,
                                            const int NS, const int NZ)
 {
-    const int32_t x = *px, e = *pe;
+    int32_t x = *px, e = *pe;
     const int32_t step = dx * (EF_DEV_ONE / NS);
     const int32_t B = ef_clamp_i32(ef_asr_i32(x, EF_DEV_FRAC_BITS) - (dx < 0), 0, ctx->width - 2);
     const int32_t t1 = dy * (EF_DEV_ONE * (B + 1) - x) - e;   /* 256(B+1) - x in [-510, 511] */
@@ -304,11 +304,11 @@ static EF_ALWAYS_INLINE void plot_mask_row(ef_ctx *ctx, int32_t *px, int32_t *pe
     const uint32_t ow = (uint32_t)B >> 6, osh = (uint32_t)B & 63;
     occ[ow] |= marked << osh;
     occ[ow + 1] |= (marked >> 1) >> (63 - osh);
-    /* the DDA step over the whole row: t = e + rn - dy, as DDA_STEP */
-    const int32_t t = e + rn - dy;
-    const int32_t neg = -(int32_t)((uint32_t)t >> 31);
-    *pe = t + (dy & neg);
-    *px = x + qn + 1 + neg;
+    /* the DDA step over the whole row */
+    const int32_t rsd = rn - dy, qs1 = qn + 1;
+    DDA_STEP();
+    *px = x;
+    *pe = e;
 }
 #endif
 
