@@ -7,6 +7,9 @@ EXTRA_CFLAGS ?=
 EXTRA_LDFLAGS ?=
 PKG_CONFIG ?= pkg-config
 PREFIX   ?= /usr/local
+# The SVG illustrations every test and the bench use (tests/data/svg, in the repository).
+EF_SVG   ?= $(abspath tests/data/svg)
+export EF_SVG
 
 WARN     := -std=c11 -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wvla
 CPPFLAGS := -D_POSIX_C_SOURCE=200809L -Ifixed -Imodel
@@ -64,10 +67,10 @@ demo:
 	@$(MAKE) --no-print-directory -s all
 	@mkdir -p $(DEMO_OUT)
 	@for n in 8 16 32; do \
-	    $(EDGEFLAG) render tests/data/tiger.svg -o $(DEMO_OUT)/tiger_$$n.png --samples $$n --size 640x480 || exit 1; \
+	    $(EDGEFLAG) render tests/data/svg/tiger.svg -o $(DEMO_OUT)/tiger_$$n.png --samples $$n --size 640x480 || exit 1; \
 	    echo "edgeflag demo: wrote $(DEMO_OUT)/tiger_$$n.png ($$n samples per pixel, 640x480)"; \
 	done
-	@$(EDGEFLAG) vectors tests/data/tiger.svg -o $(DEMO_OUT)/vectors --samples 8 --size 640x480 --force 2>/dev/null
+	@$(EDGEFLAG) vectors tests/data/svg/tiger.svg -o $(DEMO_OUT)/vectors --samples 8 --size 640x480 --force 2>/dev/null
 	@$(EDGEFLAG) check $(DEMO_OUT)/vectors $(DEMO_OUT)/vectors
 	@echo "edgeflag demo: cycle-level vectors of the tiger (640x480, 8 samples) in $(DEMO_OUT)/vectors:"
 	@echo "  cmd.stim.hex drives the pipeline; IFACE.expected.hex per interface (\$$readmemh), vectors.vcd,"

@@ -5,7 +5,6 @@
 #
 #   make bench [BENCH_FRAMES=200] [BENCH_REPEAT=3] [BENCH_SIZES=320x240,640x480,1280x960]
 #   make bench-quick          (smoke test: a few frames, one size, a few scenes; no timing asserted)
-EF_SHARED ?= $(abspath ../shared)
 CXX ?= g++
 BENCH_FRAMES ?= 200
 BENCH_REPEAT ?= 3
@@ -38,12 +37,12 @@ $(BUILD)/bench/%.o: bench/%.cpp
 $(EFBENCH): $(BENCH_OBJ) $(LIB_A)
 	$(CXX) $(LDFLAGS_ALL) -o $@ $(BENCH_OBJ) $(LIB_A) $(EXPAT_LIBS) $(BENCH_PKG_LIBS) -lm
 
-$(BENCH_SCENES)/.stamp: $(EF_SHARED)/tools/peerbench/gen_scenes.py
+$(BENCH_SCENES)/.stamp: bench/paper_scenes.py
 	@mkdir -p $(BENCH_SCENES)
-	python3 $< $(BENCH_SCENES) >/dev/null
+	python3 $< $(BENCH_SCENES)
 	@touch $@
 
-SVGDIR := $(EF_SHARED)/data/svg
+SVGDIR := $(EF_SVG)
 BENCH_REAL := tiger lion burning_car human_head antiloop2 lorem_ipsum_compound lorem_ipsum_separate flag_tm
 BENCH_PAPER := star siemens_star circles random checkers square_basic square_many_edges square_long_edges \
                squares_overdraw squares_small

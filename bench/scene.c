@@ -4,7 +4,7 @@
  * Files are read by the model's own reader (ef_scene_load_file), fitted to a
  * canvas at load time, so every vertex is an exact Q16.8 device coordinate;
  * the benchmark converts each to the double v / 256.0 (exact).  Per frame,
- * peerbench's SPEC section 3 transform is applied once and its snapped
+ * the transform of bench/README.md ("Same frames") is applied once and its snapped
  * doubles are handed to every renderer.
  */
 #include <math.h>

@@ -40,15 +40,14 @@ test-build: lib cli $(UNIT_BIN) $(ORACLE_CHECK) $(ORACLE_SELFTEST) $(TOOL_BIN) $
 	bash tests/install_check.sh $(BUILD)
 
 test-unit: $(UNIT_BIN)
-	@set -e; for t in $(UNIT_BIN); do echo "== $$t"; EF_SHARED=$(EF_SHARED) $$t; done
+	@set -e; for t in $(UNIT_BIN); do echo "== $$t"; EF_SVG=$(EF_SVG) $$t; done
 
-EF_SHARED ?= $(abspath ../shared)
 ORACLE_SCENES ?= 10000
 ORACLE_SEED ?= 20070101
 test-oracle: $(ORACLE_CHECK) $(ORACLE_SELFTEST) $(AREA_CHECK)
 	$(ORACLE_SELFTEST)
 	$(AREA_CHECK)
-	$(ORACLE_CHECK) --shared $(EF_SHARED)/data/svg --random $(ORACLE_SCENES) --seed $(ORACLE_SEED)
+	$(ORACLE_CHECK) --shared $(EF_SVG) --random $(ORACLE_SCENES) --seed $(ORACLE_SEED)
 	$(ORACLE_CHECK) --shared tests/data/mask_rows
 
 test-mutants:
@@ -58,7 +57,7 @@ test-cli: cli
 	@bash tests/cli/run.sh $(BUILD)
 
 test-bitexact:
-	@bash tests/bitexact.sh $(EF_SHARED)/data/svg
+	@bash tests/bitexact.sh $(EF_SVG)
 
 test-sanitize:
 	@$(MAKE) --no-print-directory BUILD=build-san OPT=-O1 \

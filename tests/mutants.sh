@@ -6,7 +6,7 @@
 # tests/area_check, the exact-area comparison that guards the spec itself.
 set -u
 cd "$(dirname "$0")/.."
-shared=${EF_SHARED:-$(cd .. && pwd)/shared}
+svgdir=${EF_SVG:-$(pwd)/tests/data/svg}
 pass=0 fail=0
 for m in 1 2 3; do
     b=build-mutant$m
@@ -21,7 +21,7 @@ for m in 1 2 3; do
     else
         echo "mutant $m: NOT caught (exit $rc)"; fail=$((fail + 1))
     fi
-    out=$($b/tests/oracle_check --shared "$shared/data/svg" --max-report 0 2>&1 | grep -c '^MISMATCH')
+    out=$($b/tests/oracle_check --shared "$svgdir" --max-report 0 2>&1 | grep -c '^MISMATCH')
     if [ "$out" -gt 0 ]; then
         echo "mutant $m: caught on the shared SVGs too ($out mismatching cases)"
     else

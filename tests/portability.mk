@@ -3,4 +3,4 @@
 # byte-identical on the shared SVGs and the generated regressions.
 .PHONY: portability test-portability
 portability test-portability:
-	@bash tests/portability.sh $(EF_SHARED)/data/svg
+	@bash tests/portability.sh $(EF_SVG)

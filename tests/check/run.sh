@@ -111,7 +111,7 @@ where() {
 }
 
 # ------------------------------------------------------------ the vectors
-"$EFW" vectors "$root/tests/data/tiger.svg" -o V --size 160x120 >/dev/null 2>err ||
+"$EFW" vectors "$root/tests/data/svg/tiger.svg" -o V --size 160x120 >/dev/null 2>err ||
     { bad "edgeflag vectors tiger.svg failed"; echo "$pass passed, $fail failed"; exit 1; }
 "$EFW" gen -o G >/dev/null 2>err ||
     { bad "edgeflag gen failed"; echo "$pass passed, $fail failed"; exit 1; }

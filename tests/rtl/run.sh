@@ -132,7 +132,7 @@ for ns in 8 16 32; do submit "lint_$ns" lint "$ns" 16384; done
 submit lint_32_160 lint 32 160
 
 # ---------------------------------------------------------------- vectors
-tiger=$root/tests/data/tiger.svg
+tiger=$root/tests/data/svg/tiger.svg
 T=$work/vec/tiger
 if ! "$EF" vectors "$tiger" -o "$T" --size 160x120 --samples 8 >"$work/logs/vectors_tiger.log" 2>&1; then
     cat "$work/logs/vectors_tiger.log"; echo "test-rtl: edgeflag vectors failed on the tiger"; exit 1

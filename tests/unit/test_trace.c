@@ -151,12 +151,12 @@ static void check_scene(const char *name, const ef_scene *sc)
 static void shared_svgs(void **state)
 {
     (void)state;
-    const char *shared = getenv("EF_SHARED");
+    const char *svg = getenv("EF_SVG");
     char dir[1024];
-    snprintf(dir, sizeof dir, "%s/data/svg", shared ? shared : "../shared");
+    snprintf(dir, sizeof dir, "%s", svg && *svg ? svg : "tests/data/svg");
     DIR *d = opendir(dir);
     if (!d)
-        skip();
+        fail_msg("SVG folder %s not found (EF_SVG)", dir);
     struct dirent *e;
     int n = 0;
     while ((e = readdir(d)) != NULL) {

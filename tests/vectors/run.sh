@@ -26,7 +26,7 @@
 #      vcd2fst/fst2vcd: vcd2fst alone exits 0), and a binary stream with one
 #      byte flipped.
 #
-# usage: bash tests/vectors/run.sh BUILD_DIR   (`make test-vectors`; EF_SHARED,
+# usage: bash tests/vectors/run.sh BUILD_DIR   (`make test-vectors`; EF_SVG,
 #        EF_VEC_JOBS (default: the number of CPUs), EF_VEC_FULL, TMPDIR (default
 #        /dev/shm if writable, else /tmp))
 # Ends with "N passed, M failed"; exit status 0 only if nothing failed.
@@ -38,7 +38,7 @@ root=$(cd "$(dirname "$0")/../.." && pwd)
 case $build in /*) ;; *) build=$PWD/$build ;; esac
 export EF=$build/edgeflag BINCHK=$build/tests/tools/vec_bin_check VCDCMP=$build/tests/tools/vcd_compare
 CHECK=$root/tests/vectors/check_case.sh
-shared=${EF_SHARED:-$root/../shared}
+svgdir=${EF_SVG:-$root/tests/data/svg}
 JOBS=${EF_VEC_JOBS:-$(nproc 2>/dev/null || echo 2)}
 for t in "$EF" "$BINCHK" "$VCDCMP"; do
     if [ ! -x "$t" ]; then
@@ -96,12 +96,12 @@ jobs_run() {
 }
 
 # ------------------------------------------------------------ 1. the matrix
-svgs=("$root/tests/data/tiger.svg")
-if [ -d "$shared/data/svg" ]; then
-    for f in "$shared"/data/svg/*.svg; do svgs+=("$f"); done
-else
-    skipped "shared SVGs: $shared/data/svg not found (set EF_SHARED)"
-fi
+# The tiger first (the determinism checks below take it as svgs[0]), then the rest.
+svgs=("$root/tests/data/svg/tiger.svg")
+for f in "$svgdir"/*.svg; do
+    [ "$(basename "$f")" = tiger.svg ] || svgs+=("$f")
+done
+[ ${#svgs[@]} -gt 1 ] || bad "no SVGs in $svgdir"
 : >svg.jobs
 for f in "${svgs[@]}"; do
     b=$(basename "$f" .svg)
@@ -154,7 +154,7 @@ fi
 
 stage "matrix"
 # ------------------------------------------------------------ 2. determinism
-det_inputs=("$root/tests/data/tiger.svg" "${svgs[@]:1:8}" gen/case_000004.scene gen/case_000016.scene gen/case_000036.scene gen/case_000100.scene)
+det_inputs=("$root/tests/data/svg/tiger.svg" "${svgs[@]:1:8}" gen/case_000004.scene gen/case_000016.scene gen/case_000036.scene gen/case_000100.scene)
 same=1
 for f in "${det_inputs[@]}"; do
     rm -rf d1 d2
@@ -176,7 +176,7 @@ if command -v clang >/dev/null &&
         if [ "$w" -gt 96 ] || [ "$h" -gt 72 ]; then fit="--size 96x72"; fi
         echo "$f 16 nonzero $fit" >>det.list
     done
-    echo "$root/tests/data/tiger.svg 16 nonzero --size 640x480" >>det.list
+    echo "$root/tests/data/svg/tiger.svg 16 nonzero --size 640x480" >>det.list
     differ=0 count=0
     while read -r f n r extra; do
         count=$((count + 1))
@@ -363,7 +363,7 @@ run vectors "$scene" -o afile/sub --samples 8
 if [ $rc = 4 ] && [ "$(cat afile)" = notadir ]; then ok "-o below a regular file: exit 4"
 else bad "-o below a regular file" "rc=$rc (want 4)"; fi
 # The file size limit (ulimit -f, in KiB): the write fails with EFBIG, not SIGXFSZ.
-( ulimit -f 2048; exec "$EF" vectors "$root/tests/data/tiger.svg" --size 320x240 -o lim ) >out 2>err
+( ulimit -f 2048; exec "$EF" vectors "$root/tests/data/svg/tiger.svg" --size 320x240 -o lim ) >out 2>err
 rc=$?
 if [ $rc = 4 ] && grep -q "^edgeflag: cannot write 'lim/.*': File too large" err && [ ! -e lim/manifest.json ] &&
    [ -z "$(temps lim)" ] && [ ! -s out ]; then
@@ -381,9 +381,9 @@ fi
 
 stage "existing files"
 # ------------------------------------------------------------ 7. interrupted runs
-big=("$root/tests/data/tiger.svg" --size 1280x960 --samples 16)
+big=("$root/tests/data/svg/tiger.svg" --size 1280x960 --samples 16)
 "$EF" vectors "${big[@]}" -o ref >/dev/null 2>&1 || bad "reference run for the interrupt tests"
-"$EF" vectors "$root/tests/data/tiger.svg" --size 320x240 --samples 8 -o old >/dev/null 2>&1 || bad "small run for --force"
+"$EF" vectors "$root/tests/data/svg/tiger.svg" --size 320x240 --samples 8 -o old >/dev/null 2>&1 || bad "small run for --force"
 # intact DIR: no manifest, and every file present is whole: the reference
 # run's, or (--force over a complete run) the old run's
 intact() {
@@ -442,7 +442,7 @@ rm -rf int ref old
 
 stage "interrupts"
 # ------------------------------------------------------------ 8. the checkers fail when they should
-run vectors "$root/tests/data/tiger.svg" -o cv --samples 8 --size 96x72
+run vectors "$root/tests/data/svg/tiger.svg" -o cv --samples 8 --size 96x72
 v=cv/vectors.vcd
 if "$VCDCMP" "$v" "$v" >/dev/null; then ok "vcd_compare: a VCD equals itself"; else bad "vcd_compare on itself"; fi
 # one bit of one vector value flipped (the first 'b...1 ID' after the definitions)
