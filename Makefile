@@ -71,8 +71,10 @@ demo:
 	    echo "edgeflag demo: wrote $(DEMO_OUT)/tiger_$$n.png ($$n samples per pixel, 640x480)"; \
 	done
 	@$(EDGEFLAG) vectors tests/data/svg/tiger.svg -o $(DEMO_OUT)/vectors --samples 8 --size 640x480 --force 2>/dev/null
-	@$(EDGEFLAG) check $(DEMO_OUT)/vectors $(DEMO_OUT)/vectors
+	@$(EDGEFLAG) vectors tests/data/svg/tiger.svg -o $(DEMO_OUT)/model_dumps --samples 8 --size 640x480 --force --dump --formats hex,bin >/dev/null
+	@$(EDGEFLAG) check $(DEMO_OUT)/vectors $(DEMO_OUT)/model_dumps
 	@echo "edgeflag demo: cycle-level vectors of the tiger (640x480, 8 samples) in $(DEMO_OUT)/vectors:"
 	@echo "  cmd.stim.hex drives the pipeline; IFACE.expected.hex per interface (\$$readmemh), vectors.vcd,"
-	@echo "  vectors.bin, manifest.json (docs/vectors.md). 'edgeflag check' read every file back and passed;"
+	@echo "  vectors.bin, manifest.json (docs/vectors.md). 'edgeflag check' compared them with a second run of the"
+	@echo "  model written as a DUT's dumps ($(DEMO_OUT)/model_dumps, 'vectors --dump') and passed;"
 	@echo "  check an RTL's dumps with: $(EDGEFLAG) check $(DEMO_OUT)/vectors DUMP_DIR (IFACE.actual.hex files)"

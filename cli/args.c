@@ -139,3 +139,38 @@ int ef_cli_scene_option(const char *cmd, int argc, char **argv, int *i, int32_t 
     }
     return 1;
 }
+
+/* The position in the list does not matter. */
+int ef_cli_parse_list(const char *cmd, const char *opt, const char *v, const char *const *names, int n,
+                      uint32_t *out)
+{
+    uint32_t bits = 0;
+    const char *p = v;
+    for (;;) {
+        const char *comma = strchr(p, ',');
+        size_t len = comma ? (size_t)(comma - p) : strlen(p);
+        int k;
+        for (k = 0; k < n; k++)
+            if (strlen(names[k]) == len && strncmp(names[k], p, len) == 0)
+                break;
+        if (k == n) {
+            char all[96] = "";
+            for (int i = 0; i < n; i++) {
+                strcat(all, i ? "," : "");
+                strcat(all, names[i]);
+            }
+            ef_cli_usage_error(cmd, "%s must be a comma-separated list of %s, not '%s'", opt, all, v);
+            return 0;
+        }
+        if (bits >> k & 1u) {
+            ef_cli_usage_error(cmd, "%s names '%s' twice", opt, names[k]);
+            return 0;
+        }
+        bits |= 1u << k;
+        if (!comma)
+            break;
+        p = comma + 1;
+    }
+    *out = bits;
+    return 1;
+}

@@ -23,6 +23,8 @@ typedef struct chk_case {
     char *text;             /* the reported mismatch lines (a failure's body) */
     size_t text_len, text_cap;
     char *error;            /* malformed or unreadable input (an <error>), or NULL */
+    int missing;            /* a required interface without an actual dump (a <failure>) */
+    int skipped;            /* an interface left out by --interfaces or --allow-missing */
     uint64_t ns;            /* time taken */
 } chk_case;
 
@@ -39,6 +41,10 @@ typedef struct chk_run {
     int oom;                /* an allocation failed: exit 70 */
     chk_case *cases;
     size_t ncases, capcases;
+    uint32_t held;          /* interfaces the EXPECTED side holds */
+    uint32_t compared;      /* interfaces compared at least once */
+    uint64_t seed;          /* the expected vectors' seed (JUnit's default name), 0 if none */
+    uint64_t missing;       /* required interfaces without a dump */
     /* --diff-image */
     int32_t width, height;  /* frame size from a header or the manifest, 0 if none yet */
     chk_mark *marks;

@@ -2,9 +2,11 @@
  * check_dir.c - `edgeflag check` on two directories (docs/vectors.md section
  * 7): which expected files there are (the manifest's, or without one every
  * *.expected.hex and vectors.bin, with a warning) and which file of ACTUAL
- * each is compared with (IFACE.actual.hex, else IFACE.expected.hex;
- * vectors.bin).  A manifest's names were checked to be plain file names by
- * its reader, so nothing outside EXPECTED is ever opened.
+ * each is compared with: STEM.expected.hex with STEM.actual.hex, STEM.bin
+ * with STEM.actual.bin, never an expected file (a dump folder that holds
+ * copies of the expected vectors must not pass).  A manifest's names were
+ * checked to be plain file names by its reader, so nothing outside EXPECTED
+ * is ever opened.
  */
 #include "check.h"
 
@@ -20,33 +22,25 @@ static int ends_with(const char *s, const char *suffix)
     return n >= k && strcmp(s + n - k, suffix) == 0;
 }
 
-/* ACTUAL's counterpart of EXPECTED's file `name`: vectors.bin, or for
- * STEM.expected.hex STEM.actual.hex, else STEM.expected.hex.  NULL if none. */
+/* The dump in ACTUAL of EXPECTED's file `name`: STEM.actual.hex for
+ * STEM.expected.hex, STEM.actual.bin for STEM.bin.  NULL if there is none. */
 static char *counterpart(const char *adir, const char *name)
 {
-    if (ends_with(name, ".bin")) {
-        char *p = chk_join(adir, name);
-        if (p && !chk_is_file(p)) {
-            free(p);
-            p = NULL;
-        }
-        return p;
-    }
-    size_t stem = ends_with(name, ".expected.hex") ? strlen(name) - strlen(".expected.hex") : strlen(name);
-    static const char *const suffix[2] = { ".actual.hex", ".expected.hex" };
-    for (int k = 0; k < 2; k++) {
-        char *nm = malloc(stem + strlen(suffix[k]) + 1);
-        if (!nm)
-            return NULL;
-        memcpy(nm, name, stem);
-        strcpy(nm + stem, suffix[k]);
-        char *p = chk_join(adir, nm);
-        free(nm);
-        if (p && chk_is_file(p))
-            return p;
+    const char *from = ends_with(name, ".bin") ? ".bin" : ".expected.hex";
+    const char *to = ends_with(name, ".bin") ? ".actual.bin" : ".actual.hex";
+    size_t stem = ends_with(name, from) ? strlen(name) - strlen(from) : strlen(name);
+    char *nm = malloc(stem + strlen(to) + 1);
+    if (!nm)
+        return NULL;
+    memcpy(nm, name, stem);
+    strcpy(nm + stem, to);
+    char *p = chk_join(adir, nm);
+    free(nm);
+    if (p && !chk_is_file(p)) {
         free(p);
+        p = NULL;
     }
-    return NULL;
+    return p;
 }
 
 static int cmp_names(const void *x, const void *y)
@@ -108,10 +102,9 @@ static int dir_entry(chk_run *r, const char *name, const ef_vec_manifest_file *m
         rc = chk_pair(r, ep, ap, mf, mname);
         ++*compared;
     } else {
-        fprintf(stderr, "edgeflag check: %s: no counterpart in %s, not compared\n", ep, A);
-        /* Still the picture under the marks of --diff-image. */
-        if (r->a->diff_image && !r->have_bg && ef_vec_iface_from_name(name) == EF_IF_PIX)
-            rc = chk_pair(r, ep, NULL, mf, mname);
+        /* Read anyway: the interfaces it holds are required (a missing dump
+         * fails at the end), and the pix are the picture of --diff-image. */
+        rc = chk_pair(r, ep, NULL, mf, mname);
     }
     free(ep);
     free(ap);
@@ -165,9 +158,12 @@ int chk_dirs(chk_run *r)
         free(names);
     }
     if (rc == 0 && compared == 0) {
-        char buf[1024];
-        snprintf(buf, sizeof buf, "%s: nothing to compare: no IFACE.actual.hex, IFACE.expected.hex or vectors.bin "
-                 "matching an expected file of %s", r->a->actual, E);
+        char buf[1024], *pix = chk_join(r->a->actual, "pix.expected.hex");
+        snprintf(buf, sizeof buf, "%s: nothing to compare: no IFACE.actual.hex or vectors.actual.bin matching an "
+                 "expected file of %s%s", r->a->actual, E,
+                 pix && chk_is_file(pix) ? " (it holds expected files: the DUT's dumps are named IFACE.actual.hex, "
+                                           "and an expected file is never taken for one)" : "");
+        free(pix);
         rc = chk_input_error(r, EF_ERR_SYNTAX, buf, E, r->a->actual);
     }
     ef_vec_manifest_free(&m);

@@ -2,8 +2,10 @@
  * check_junit.c - `edgeflag check --junit FILE`: the comparison as JUnit XML
  * for CI (Jenkins, GitLab, GitHub annotators all read this shape): one
  * <testcase> per interface of each pair of files, a <failure> holding the
- * mismatch lines that were reported, an <error> for an input that could not
- * be read.  File names and messages are escaped so the document is always
+ * mismatch lines that were reported (or saying that the dump is missing), a
+ * <skipped/> for an interface --interfaces or --allow-missing left out, an
+ * <error> for an input that could not be read.  The suite is named by
+ * --name, else by EXPECTED's base name and the vectors' seed.  File names and messages are escaped so the document is always
  * well-formed XML 1.0: markup characters as entities, valid UTF-8 as is,
  * control characters and stray bytes (which XML 1.0 cannot hold at all) as
  * the text "\xNN".  Times are integer nanoseconds printed as seconds with
@@ -83,32 +85,65 @@ static void put_time(FILE *f, uint64_t ns)
     fprintf(f, "%" PRIu64 ".%03" PRIu64, ms / 1000u, ms % 1000u);
 }
 
+/* --name, else "BASE seed S" (BASE: EXPECTED's last path component). */
+static void suite_name(FILE *f, const chk_run *r)
+{
+    if (r->a->name) {
+        esc(f, r->a->name, 1);
+        return;
+    }
+    const char *e = r->a->expected;
+    size_t n = strlen(e);
+    while (n > 1 && e[n - 1] == '/')
+        n--;
+    size_t b = n;
+    while (b > 0 && e[b - 1] != '/')
+        b--;
+    char base[512];
+    snprintf(base, sizeof base, "%.*s", (int)(n - b < 500 ? n - b : 500), e + b);
+    esc(f, base, 1);
+    if (r->seed)
+        fprintf(f, " seed %" PRIu64, r->seed);
+}
+
 static void write_cases(FILE *f, const chk_run *r)
 {
-    uint64_t failures = 0, errors = 0, ns = 0;
+    uint64_t failures = 0, errors = 0, skipped = 0, ns = 0;
     for (size_t k = 0; k < r->ncases; k++) {
-        failures += !r->cases[k].error && r->cases[k].mismatches;
+        failures += !r->cases[k].error && (r->cases[k].mismatches || r->cases[k].missing);
         errors += r->cases[k].error != NULL;
+        skipped += r->cases[k].skipped;
         ns += r->cases[k].ns;
     }
-    fputs("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n", f);
-    fprintf(f, "<testsuites name=\"edgeflag check\" tests=\"%zu\" failures=\"%" PRIu64 "\" errors=\"%" PRIu64 "\" time=\"",
-            r->ncases, failures, errors);
+    fputs("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"", f);
+    suite_name(f, r);
+    fprintf(f, "\" tests=\"%zu\" failures=\"%" PRIu64 "\" errors=\"%" PRIu64 "\" skipped=\"%" PRIu64 "\" time=\"",
+            r->ncases, failures, errors, skipped);
     put_time(f, ns);
-    fprintf(f, "\">\n  <testsuite name=\"edgeflag check\" tests=\"%zu\" failures=\"%" PRIu64 "\" errors=\"%" PRIu64
-               "\" skipped=\"0\" time=\"",
-            r->ncases, failures, errors);
+    fputs("\">\n  <testsuite name=\"", f);
+    suite_name(f, r);
+    fprintf(f, "\" tests=\"%zu\" failures=\"%" PRIu64 "\" errors=\"%" PRIu64 "\" skipped=\"%" PRIu64 "\" time=\"",
+            r->ncases, failures, errors, skipped);
     put_time(f, ns);
     fputs("\">\n", f);
     for (size_t k = 0; k < r->ncases; k++) {
         const chk_case *c = &r->cases[k];
         fputs("    <testcase classname=\"", f);
-        esc(f, c->classname, 1);
+        suite_name(f, r);
         fputs("\" name=\"", f);
         esc(f, c->name, 1);
+        fputs(": ", f);
+        esc(f, c->classname, 1);
         fputs("\" time=\"", f);
         put_time(f, c->ns);
-        if (c->error) {
+        if (c->skipped) {
+            fputs("\">\n      <skipped message=\"not compared (--interfaces or --allow-missing)\"/>\n    </testcase>\n",
+                  f);
+        } else if (c->missing) {
+            fputs("\">\n      <failure type=\"missing dump\" message=\"no dump of ", f);
+            esc(f, c->name, 1);
+            fputs(" in ACTUAL: a bench that does not write it cannot pass\"/>\n    </testcase>\n", f);
+        } else if (c->error) {
             fputs("\">\n      <error type=\"unreadable input\" message=\"", f);
             esc(f, c->error, 1);
             fputs("\"/>\n    </testcase>\n", f);

@@ -54,6 +54,9 @@ typedef struct ef_cli_check_args {
     const char *junit;          /* --junit FILE, or NULL */
     const char *diff_image;     /* --diff-image FILE, or NULL */
     ef_cli_format diff_fmt;     /* its format (.png, or .pam without libpng) */
+    uint32_t only;              /* --interfaces: interfaces to compare (default all) */
+    uint32_t allow_missing;     /* --allow-missing: interfaces whose dump may be absent */
+    const char *name;           /* --name: the JUnit suite and class name, or NULL */
 } ef_cli_check_args;
 int ef_cli_check_parse(int argc, char **argv, ef_cli_check_args *a);
 
@@ -67,6 +70,7 @@ typedef struct ef_cli_vectors_args {
     unsigned formats;           /* default EF_CLI_VEC_ALL */
     uint32_t ifaces;            /* default every interface */
     int force;
+    int dump;                   /* --dump: the model's output named as a DUT's dumps */
 } ef_cli_vectors_args;
 int ef_cli_vectors_parse(int argc, char **argv, ef_cli_vectors_args *a);
 
@@ -94,6 +98,11 @@ int ef_cli_option_value(const char *cmd, int argc, char **argv, int *i, const ch
  * another argument, -1 after a usage error (reported under cmd). */
 int ef_cli_scene_option(const char *cmd, int argc, char **argv, int *i, int32_t *samples, int *rule,
                         int32_t *fit_w, int32_t *fit_h, int seen[3]);
+
+/* A comma-separated list of names[0..n-1], each at most once, as bits
+ * (1 << k); 1, or 0 after a usage error naming opt and the valid names. */
+int ef_cli_parse_list(const char *cmd, const char *opt, const char *v, const char *const *names, int n,
+                      uint32_t *out);
 
 int ef_cli_usage_error(const char *cmd, const char *fmt, ...)
 #if defined(__GNUC__)

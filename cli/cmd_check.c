@@ -9,8 +9,13 @@
  * EXPECTED and ACTUAL are two files (hex or binary, in any combination: the
  * interfaces both hold are compared) or two directories (the manifest's
  * expected files, else every *.expected.hex and vectors.bin, each against
- * its counterpart in ACTUAL: check_dir.c).  One pair of files is in memory at
- * a time.
+ * its dump in ACTUAL: check_dir.c).  One pair of files is in memory at a
+ * time.
+ *
+ * Strict by default, so that no verification passes by accident: every
+ * interface the expected side holds must be compared (or be named by
+ * --interfaces or --allow-missing, never pix); an expected file, or EXPECTED
+ * itself, is never taken for the dump.
  */
 #include "check.h"
 
@@ -25,13 +30,16 @@ static const char *const CMD = "check";
 static void usage(FILE *f)
 {
     fputs("usage: edgeflag check EXPECTED ACTUAL [--errors N] [--cycles|--transactions]\n"
+          "                      [--interfaces LIST] [--allow-missing LIST] [--name NAME]\n"
           "                      [--junit FILE] [--diff-image FILE.png]\n"
           "\n"
           "Compares an RTL's vector dumps (ACTUAL) with the expected vectors of `edgeflag\n"
-          "vectors` (EXPECTED): two hex files of one interface, two binary streams\n"
-          "(vectors.bin), or two directories (each expected file against IFACE.actual.hex,\n"
-          "else IFACE.expected.hex, and vectors.bin against vectors.bin).  See\n"
-          "docs/vectors.md section 7.\n"
+          "vectors` (EXPECTED): two hex files of one interface, two binary streams, or two\n"
+          "directories (each IFACE.expected.hex against IFACE.actual.hex, vectors.bin\n"
+          "against vectors.actual.bin).  Every interface EXPECTED holds must be compared:\n"
+          "one without a dump fails unless --interfaces leaves it out or --allow-missing\n"
+          "names it, and pix (the DUT's output) is always required.  An expected file is\n"
+          "never taken for a dump.  See docs/vectors.md section 7.\n"
           "\n"
           "Each mismatch is one line on standard output: file and line (or record),\n"
           "interface, cycle, scanline and pixel, and the decoded fields expected against\n"
@@ -44,24 +52,35 @@ static void usage(FILE *f)
           "  --cycles             equal payloads at equal cycles (the default)\n"
           "  --transactions       only the order and content of each interface's\n"
           "                       transactions (an RTL with other timing)\n"
-          "  --junit FILE         write JUnit XML, one test case per interface compared\n"
+          "  --interfaces LIST    compare only these interfaces (comma-separated; must\n"
+          "                       include pix); the others are reported as skipped\n"
+          "  --allow-missing LIST these interfaces may lack a dump (skipped, not failed);\n"
+          "                       never pix\n"
+          "  --name NAME          the JUnit suite and class name (default: EXPECTED's\n"
+          "                       base name and the vectors' seed)\n"
+          "  --junit FILE         write JUnit XML, one test case per interface\n"
           "  --diff-image FILE    draw the expected frame with every pixel of a mismatching\n"
           "                       pix or span transaction in magenta (.png; .pam too)\n"
           "  -h, --help           show this text\n"
           "  --                   end of options\n"
           "\n"
-          "exit codes: 0 pass, 1 mismatch, 2 usage or unreadable/malformed input,\n"
+          "exit codes: 0 pass, 1 mismatch or a missing dump, 2 usage or unreadable/\n"
+          "            malformed input (or ACTUAL is an expected file or EXPECTED itself),\n"
           "            4 --junit or --diff-image not written, 70 internal error\n",
           f);
 }
 
 int ef_cli_check_parse(int argc, char **argv, ef_cli_check_args *a)
 {
-    int i, only_positional = 0, seen_errors = 0, seen_cycles = 0, seen_txn = 0;
+    int i, only_positional = 0, seen_errors = 0, seen_cycles = 0, seen_txn = 0, seen_only = 0, seen_allow = 0;
+    const char *iface_names[EF_IF_COUNT];
 
     memset(a, 0, sizeof *a);
     a->errors = 20;
     a->cycles = 1;
+    a->only = EF_IF_ALL;
+    for (int k = 0; k < EF_IF_COUNT; k++)
+        iface_names[k] = ef_iface_get(k)->name;
     for (i = 1; i < argc && strcmp(argv[i], "--") != 0; i++)
         if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
             usage(stdout);
@@ -101,6 +120,32 @@ int ef_cli_check_parse(int argc, char **argv, ef_cli_check_args *a)
                 return ef_cli_usage_error(CMD, "--errors given twice");
             if (!ef_cli_parse_int(v, 0, INT32_MAX, &a->errors))
                 return ef_cli_usage_error(CMD, "--errors must be a number 0..%d (0 = all), not '%s'", INT32_MAX, v);
+        } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "--interfaces", &v)) != 0) {
+            if (r < 0)
+                return EF_CLI_EXIT_USAGE;
+            if (seen_only++)
+                return ef_cli_usage_error(CMD, "--interfaces given twice");
+            if (!ef_cli_parse_list(CMD, "--interfaces", v, iface_names, EF_IF_COUNT, &a->only))
+                return EF_CLI_EXIT_USAGE;
+            if (!(a->only >> EF_IF_PIX & 1u))
+                return ef_cli_usage_error(CMD, "--interfaces must include pix (the DUT's output is always checked)");
+        } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "--allow-missing", &v)) != 0) {
+            if (r < 0)
+                return EF_CLI_EXIT_USAGE;
+            if (seen_allow++)
+                return ef_cli_usage_error(CMD, "--allow-missing given twice");
+            if (!ef_cli_parse_list(CMD, "--allow-missing", v, iface_names, EF_IF_COUNT, &a->allow_missing))
+                return EF_CLI_EXIT_USAGE;
+            if (a->allow_missing >> EF_IF_PIX & 1u)
+                return ef_cli_usage_error(CMD, "--allow-missing cannot name pix (the DUT's output is always checked)");
+        } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "--name", &v)) != 0) {
+            if (r < 0)
+                return EF_CLI_EXIT_USAGE;
+            if (a->name)
+                return ef_cli_usage_error(CMD, "--name given twice");
+            if (!*v)
+                return ef_cli_usage_error(CMD, "empty --name");
+            a->name = v;
         } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "--junit", &v)) != 0) {
             if (r < 0)
                 return EF_CLI_EXIT_USAGE;
@@ -224,6 +269,11 @@ int chk_pair(chk_run *r, const char *ep, const char *ap, const ef_vec_manifest_f
         r->width = e.width;
         r->height = e.height;
     }
+    if (!r->seed)
+        r->seed = e.seed;
+    /* Every interface the expected side holds must be compared, but for the
+     * command stream: the DUT's input, compared when a bench dumps it. */
+    r->held |= e.mask & ~(1u << EF_IF_CMD);
     if (!ap)
         goto out;
     int want = -1;
@@ -245,12 +295,13 @@ int chk_pair(chk_run *r, const char *ep, const char *ap, const ef_vec_manifest_f
                 (int)a.width, (int)a.height);
     for (int i = 0; i < EF_IF_COUNT; i++) {
         const char *name = ef_iface_get(i)->name;
-        if (!(e.mask >> i & 1u))
+        if (!(e.mask >> i & 1u) || !(r->a->only >> i & 1u))
             continue;
         if (!(a.mask >> i & 1u)) {
-            fprintf(stderr, "edgeflag check: %s: not recorded in %s, not compared\n", name, ap);
+            fprintf(stderr, "edgeflag check: %s: not recorded in %s\n", name, ap);
             continue;
         }
+        r->compared |= 1u << i;
         const uint64_t t0 = chk_now_ns(), before = r->mismatches;
         chk_case *tc = chk_case_add(r, ep, ap, name);
         if (!tc)
@@ -269,6 +320,45 @@ out:
 }
 
 /* ---------------------------------------------------------------- the command */
+
+/* Whether two paths are one file or directory (then ACTUAL would be EXPECTED). */
+static int same_node(const struct stat *x, const struct stat *y)
+{
+    return x->st_dev == y->st_dev && x->st_ino == y->st_ino;
+}
+
+static int ends_with(const char *s, const char *suffix)
+{
+    size_t n = strlen(s), k = strlen(suffix);
+    return n >= k && strcmp(s + n - k, suffix) == 0;
+}
+
+/* After the comparison: every interface the expected side holds and no pair
+ * compared becomes a test case, skipped when --interfaces or --allow-missing
+ * excuses it, else failed (a dump the bench never wrote is no pass). */
+static void close_unchecked(chk_run *r)
+{
+    const ef_cli_check_args *a = r->a;
+    for (int i = 0; i < EF_IF_COUNT; i++) {
+        if (!(r->held >> i & 1u) || (r->compared >> i & 1u))
+            continue;
+        const char *name = ef_iface_get(i)->name;
+        chk_case *tc = chk_case_add(r, a->expected, a->actual, name);
+        if (!tc)
+            return;
+        if (!(a->only >> i & 1u) || (a->allow_missing >> i & 1u)) {
+            tc->skipped = 1;
+            fprintf(stderr, "edgeflag check: %s: skipped (%s)\n", name,
+                    !(a->only >> i & 1u) ? "not in --interfaces" : "--allow-missing, and no dump in ACTUAL");
+        } else {
+            tc->missing = 1;
+            r->missing++;
+            fprintf(stderr, "edgeflag check: %s: FAIL: %s holds no dump of it (%s.actual.hex, or a binary stream "
+                            "recording it); name it in --allow-missing if the bench does not dump it\n",
+                    name, a->actual, name);
+        }
+    }
+}
 
 static void run_free(chk_run *r)
 {
@@ -299,8 +389,16 @@ int ef_cli_check(int argc, char **argv)
         const char *bad = stat(a.expected, &se) != 0 ? a.expected : a.actual;
         ef_cli_error("%s: cannot open: %s", bad, strerror(errno));
         rc = EF_CLI_EXIT_USAGE;
+    } else if (same_node(&se, &sa)) {
+        ef_cli_error("%s and %s are the same %s: ACTUAL must be the DUT's dumps, not the expected vectors",
+                     a.expected, a.actual, S_ISDIR(se.st_mode) ? "directory" : "file");
+        rc = EF_CLI_EXIT_USAGE;
     } else if (S_ISDIR(se.st_mode) && S_ISDIR(sa.st_mode)) {
         rc = chk_dirs(&r);
+    } else if (!S_ISDIR(se.st_mode) && !S_ISDIR(sa.st_mode) && ends_with(a.actual, ".expected.hex")) {
+        ef_cli_error("%s is an expected file (*.expected.hex), never a dump: an RTL's dump of an interface is "
+                     "IFACE.actual.hex", a.actual);
+        rc = EF_CLI_EXIT_USAGE;
     } else if (!S_ISDIR(se.st_mode) && !S_ISDIR(sa.st_mode)) {
         rc = chk_pair(&r, a.expected, a.actual, NULL, NULL);
     } else {
@@ -308,22 +406,24 @@ int ef_cli_check(int argc, char **argv)
                      S_ISDIR(se.st_mode) ? a.expected : a.actual, S_ISDIR(se.st_mode) ? a.actual : a.expected);
         rc = EF_CLI_EXIT_USAGE;
     }
+    if (rc == 0)
+        close_unchecked(&r);
     if (r.oom)
         rc = EF_CLI_EXIT_INTERNAL;
     fflush(stdout);
 
     uint64_t compared = 0, txns = 0, failing = 0;
     for (size_t k = 0; k < r.ncases; k++)
-        if (!r.cases[k].error) {
+        if (!r.cases[k].error && !r.cases[k].missing && !r.cases[k].skipped) {
             compared++;
             txns += r.cases[k].expected;
             failing += r.cases[k].mismatches > 0;
         }
-    if (rc == 0 && r.mismatches)
+    if (rc == 0 && (r.mismatches || r.missing))
         fprintf(stderr, "edgeflag check: FAIL: %" PRIu64 " mismatch%s in %" PRIu64 " of %" PRIu64
-                " comparison%s (%" PRIu64 " reported)%s\n",
+                " comparison%s (%" PRIu64 " reported)%s, %" PRIu64 " interface%s without a dump\n",
                 r.mismatches, r.mismatches == 1 ? "" : "es", failing, compared, compared == 1 ? "" : "s", r.reported,
-                a.cycles ? "" : ", transactions only (cycles not compared)");
+                a.cycles ? "" : ", transactions only (cycles not compared)", r.missing, r.missing == 1 ? "" : "s");
     else if (rc == 0)
         fprintf(stderr, "edgeflag check: PASS: %" PRIu64 " comparison%s, %" PRIu64 " transactions, %s\n", compared,
                 compared == 1 ? "" : "s", txns, a.cycles ? "cycle-exact" : "transactions only (cycles not compared)");
@@ -348,5 +448,5 @@ int ef_cli_check(int argc, char **argv)
         return rc;
     if (out_rc != 0)
         return out_rc;
-    return r.mismatches ? 1 : EF_CLI_EXIT_OK;
+    return r.mismatches || r.missing ? 1 : EF_CLI_EXIT_OK;
 }

@@ -29,6 +29,7 @@ static void usage(FILE *f)
 {
     fputs("usage: edgeflag vectors INPUT -o DIR [--samples 8|16|32] [--rule nonzero|evenodd]\n"
           "                        [--size WxH] [--formats hex,vcd,bin] [--interfaces LIST] [--force]\n"
+          "                        [--dump]\n"
           "\n"
           "Renders INPUT (.svg, .scene/.txt) with the timing model of the reference\n"
           "microarchitecture and writes every transfer at every interface, stamped with\n"
@@ -49,6 +50,10 @@ static void usage(FILE *f)
           "  --interfaces LIST  comma-separated subset of cmd,edge,et_wr,et_rd,plot,span,pix\n"
           "                     (default all)\n"
           "  --force            replace existing files of the same names\n"
+          "  --dump             write the model's transactions as a DUT's dumps would be\n"
+          "                     named (IFACE.actual.hex, vectors.actual.bin; no manifest):\n"
+          "                     the model standing in for the DUT, to try a bench's or a\n"
+          "                     regression's plumbing with `edgeflag check`\n"
           "  -h, --help         show this text\n"
           "  --                 end of options (for an INPUT starting with '-')\n"
           "\n"
@@ -56,42 +61,6 @@ static void usage(FILE *f)
           "exit codes: 0 ok, 2 usage, 3 bad input or over a limit, 4 output not written\n"
           "            (or a file exists), 70 internal error\n",
           f);
-}
-
-/* A comma-separated list of names, each known and given once: the bits of
- * their indices in names[] (the position in the list does not matter).
- * Returns 1, or 0 after reporting. */
-static int parse_list(const char *opt, const char *v, const char *const *names, int n, uint32_t *out)
-{
-    uint32_t bits = 0;
-    const char *p = v;
-    for (;;) {
-        const char *comma = strchr(p, ',');
-        size_t len = comma ? (size_t)(comma - p) : strlen(p);
-        int k;
-        for (k = 0; k < n; k++)
-            if (strlen(names[k]) == len && strncmp(names[k], p, len) == 0)
-                break;
-        if (k == n) {
-            char all[96] = "";
-            for (int i = 0; i < n; i++) {
-                strcat(all, i ? "," : "");
-                strcat(all, names[i]);
-            }
-            ef_cli_usage_error(CMD, "%s must be a comma-separated list of %s, not '%s'", opt, all, v);
-            return 0;
-        }
-        if (bits >> k & 1u) {
-            ef_cli_usage_error(CMD, "%s names '%s' twice", opt, names[k]);
-            return 0;
-        }
-        bits |= 1u << k;
-        if (!comma)
-            break;
-        p = comma + 1;
-    }
-    *out = bits;
-    return 1;
 }
 
 static const char *const FORMAT_NAMES[] = { "hex", "vcd", "bin" };
@@ -137,7 +106,11 @@ int ef_cli_vectors_parse(int argc, char **argv, ef_cli_vectors_args *a)
             i++;
             continue;
         }
-        if (strcmp(arg, "--force") == 0) {
+        if (strcmp(arg, "--dump") == 0) {
+            if (a->dump++)
+                return ef_cli_usage_error(CMD, "--dump given twice");
+            i++;
+        } else if (strcmp(arg, "--force") == 0) {
             if (a->force++)
                 return ef_cli_usage_error(CMD, "--force given twice");
             i++;
@@ -159,7 +132,7 @@ int ef_cli_vectors_parse(int argc, char **argv, ef_cli_vectors_args *a)
                 return EF_CLI_EXIT_USAGE;
             if (seen_formats++)
                 return ef_cli_usage_error(CMD, "--formats given twice");
-            if (!parse_list("--formats", v, FORMAT_NAMES, 3, &bits))
+            if (!ef_cli_parse_list(CMD, "--formats", v, FORMAT_NAMES, 3, &bits))
                 return EF_CLI_EXIT_USAGE;
             a->formats = bits;
         } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "--interfaces", &v)) != 0) {
@@ -167,7 +140,7 @@ int ef_cli_vectors_parse(int argc, char **argv, ef_cli_vectors_args *a)
                 return EF_CLI_EXIT_USAGE;
             if (seen_ifaces++)
                 return ef_cli_usage_error(CMD, "--interfaces given twice");
-            if (!parse_list("--interfaces", v, iface_names, EF_IF_COUNT, &bits))
+            if (!ef_cli_parse_list(CMD, "--interfaces", v, iface_names, EF_IF_COUNT, &bits))
                 return EF_CLI_EXIT_USAGE;
             a->ifaces = bits;
         } else {
@@ -279,6 +252,7 @@ int ef_cli_vectors(int argc, char **argv)
     job.formats = a.formats;
     job.ifaces = a.ifaces;
     job.force = a.force;
+    job.dump = a.dump;
     /* Before the long part: an existing file (without --force) or a DIR that
      * cannot be one stops the run with nothing written. */
     if ((rc = ef_cli_vec_check_dir(&job)) >= 0)
@@ -303,6 +277,7 @@ int ef_cli_vectors(int argc, char **argv)
     info.samples = (int)a.samples;
     info.rule = a.rule;
     info.mask = a.ifaces;
+    info.dump = a.dump;
     if (!ef_vec_file_seed(a.input, &info.seed))
         info.seed = 0;
     if ((rc = trace_frame(&a, &scene, ctx, &img, c, &info)) >= 0)

@@ -7,6 +7,7 @@
  * reading anything back.  manifest.json comes last and, with --force, the
  * old one is removed first: a directory without a manifest is incomplete,
  * and an interrupted run never leaves an old manifest beside new files.
+ * A --dump run writes no manifest (it is not a set of expected vectors).
  */
 #include "vectors_files.h"
 
@@ -30,16 +31,22 @@ static ef_cli_format frame_format(void)
     return ef_cli_format_available(EF_CLI_FMT_PNG) ? EF_CLI_FMT_PNG : EF_CLI_FMT_PAM;
 }
 
-/* The files of this run in writing order, without the manifest. */
+/* The files of this run in writing order, without the manifest.  With
+ * --dump the names are a DUT's dump set (docs/vectors.md section 7):
+ * IFACE.actual.hex, vectors.actual.bin, ... */
 static size_t plan(const ef_cli_vec_job *job, ef_vec_file *f)
 {
     size_t n = 0;
+    const char *tag = job->dump ? ".actual" : "";
     memset(f, 0, MAX_FILES * sizeof *f);
     if (job->formats & EF_CLI_VEC_HEX) {
         for (int i = 0; i < EF_IF_COUNT; i++) {
             if (!(job->ifaces >> i & 1u))
                 continue;
-            ef_vec_hex_name(i, f[n].name, sizeof f[n].name);
+            if (job->dump)
+                snprintf(f[n].name, sizeof f[n].name, "%s.actual.hex", ef_iface_get(i)->name);
+            else
+                ef_vec_hex_name(i, f[n].name, sizeof f[n].name);
             f[n].format = "hex";
             f[n].iface = i;
             f[n].role = ef_vec_role(i);
@@ -47,20 +54,20 @@ static size_t plan(const ef_cli_vec_job *job, ef_vec_file *f)
         }
     }
     if (job->formats & EF_CLI_VEC_VCD) {
-        strcpy(f[n].name, "vectors.vcd");
+        snprintf(f[n].name, sizeof f[n].name, "vectors%s.vcd", tag);
         f[n].format = "vcd";
         f[n].iface = -1;
         f[n].role = "all";
         n++;
     }
     if (job->formats & EF_CLI_VEC_BIN) {
-        strcpy(f[n].name, "vectors.bin");
+        snprintf(f[n].name, sizeof f[n].name, "vectors%s.bin", tag);
         f[n].format = "bin";
         f[n].iface = -1;
         f[n].role = "all";
         n++;
     }
-    strcpy(f[n].name, frame_format() == EF_CLI_FMT_PNG ? "frame.png" : "frame.pam");
+    snprintf(f[n].name, sizeof f[n].name, "frame%s.%s", tag, frame_format() == EF_CLI_FMT_PNG ? "png" : "pam");
     f[n].format = frame_format() == EF_CLI_FMT_PNG ? "png" : "pam";
     f[n].iface = -1;
     f[n].role = "expected";
@@ -234,7 +241,7 @@ int ef_cli_vec_write(const ef_cli_vec_job *job, size_t *nfiles)
         if (rc == EF_CLI_EXIT_OK)
             (*nfiles)++;
     }
-    if (rc == EF_CLI_EXIT_OK) {
+    if (rc == EF_CLI_EXIT_OK && !job->dump) {
         ef_vec_file m;
         memset(&m, 0, sizeof m);
         strcpy(m.name, MANIFEST);

@@ -17,6 +17,7 @@ typedef struct ef_cli_vec_job {
     unsigned formats;            /* EF_CLI_VEC_* bits (cli.h) */
     uint32_t ifaces;             /* interfaces recorded */
     int force;
+    int dump;                    /* IFACE.actual.hex, vectors.actual.*, frame.actual.*, no manifest */
     const ef_vec_info *info;     /* for ef_cli_vec_write */
     const ef_vec_collect *collect;
     const ef_image *img;

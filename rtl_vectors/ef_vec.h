@@ -78,6 +78,7 @@ typedef struct ef_vec_info {
     uint64_t seed;         /* `# seed N` of an edgeflag gen scene, else 0 */
     uint64_t cycles;       /* the frame's length (ef_trace_frame_end) */
     uint32_t mask;         /* interfaces recorded, bit i = ef_iface i */
+    int dump;              /* 1: written as a DUT's dumps (role "actual"), not as expected vectors */
 } ef_vec_info;
 
 /* "nonzero", "evenodd" or "scene". */

@@ -74,7 +74,7 @@ void ef_vec_hex_write(ef_vec_out *o, const ef_vec_info *info, const ef_vec_colle
     ef_vec_out_puts(o, " -> ");
     ef_vec_out_puts(o, d->to);
     ef_vec_out_puts(o, "), role ");
-    ef_vec_out_puts(o, ef_vec_role(iface));
+    ef_vec_out_puts(o, info->dump ? "actual" : ef_vec_role(iface));
     ef_vec_out_puts(o, "\n// ");
     ef_vec_out_run_line(o, info);
     ef_vec_out_puts(o, "\n// word ");

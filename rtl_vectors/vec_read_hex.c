@@ -246,9 +246,14 @@ static ef_status word_start(hex_state *h)
 static ef_status word_digit(hex_state *h, int c)
 {
     const ef_iface_desc *d = ef_iface_get(h->iface);
+    /* Leading zeros do not count: a wider register dumped with %h (a 128-bit
+     * word as 32 digits) holds the same value. */
+    if (h->nd == 0 && c == '0')
+        return EF_OK;
     if (++h->nd > h->maxd)
         return ef_vr_err_line(h->err, EF_ERR_RANGE, h->name, h->wline, h->wcol,
-                              "too many digits: a %s word has at most %u hex digits (%u-bit cycle + %u-bit payload)",
+                              "too many digits: a %s word has at most %u significant hex digits (%u-bit cycle + "
+                              "%u-bit payload)",
                               d->name, h->maxd, EF_CYCLE_BITS, (unsigned)d->width);
     const uint64_t low60 = (UINT64_C(1) << 60) - 1u;
     for (unsigned k = 3; k > 0; k--)

@@ -15,6 +15,10 @@
 #     --errors caps the lines and keeps the count exact; --junit is valid XML
 #     (xmllint) with one case per interface; --diff-image is a PNG of the
 #     frame's size and (as PAM) has exactly the mutated pixel in magenta;
+#   - it cannot pass by accident: a dump folder of copies of the expected
+#     files, EXPECTED given as ACTUAL, an expected file as the dump (exit 2);
+#     a missing pix or internal dump (exit 1, named, a JUnit failure) unless
+#     --allow-missing/--interfaces excuse it (JUnit <skipped/>, never pix);
 #   - usage errors (exit 2), unwritable outputs (exit 4, nothing left).
 # Malformed dumps are in the bad-input catalogue (tests/bad/CATALOGUE.tsv).
 #
@@ -131,7 +135,7 @@ rtl_dir V A
 rtl_dir VG AG
 
 # ------------------------------------------------------------ identical data
-for pair in "V V" "V A" "VG VG" "VG AG"; do
+for pair in "V A" "VG AG"; do
     set -- $pair
     run check "$1" "$2"
     if [ $rc = 0 ] && [ ! -s out ] && grep -q '^edgeflag check: PASS' err; then
@@ -145,19 +149,67 @@ for f in V/*.expected.hex VG/*.expected.hex; do
     n=$((n + 1))
     d=${f%%/*}
     a=A${d#V}/$(basename "$f" .expected.hex).actual.hex     # V -> A, VG -> AG
-    "$EF" check "$f" "$f" >out 2>err && [ ! -s out ] && "$EF" check "$f" "$a" >out 2>err && [ ! -s out ] && good=$((good + 1))
+    "$EF" check "$f" "$a" >out 2>err && [ ! -s out ] && good=$((good + 1))
 done
-[ $good = $n ] && ok "each hex file passes against itself and its header-less dump ($n files)" ||
-    bad "hex files against themselves" "$good of $n passed"
+[ $good = $n ] && ok "each hex file passes against its header-less dump ($n files)" ||
+    bad "hex files against their dumps" "$good of $n passed"
 for b in V VG; do
-    run check $b/vectors.bin $b/vectors.bin
-    [ $rc = 0 ] && [ ! -s out ] && ok "$b/vectors.bin passes against itself" || bad "$b/vectors.bin against itself" "exit $rc"
-    run check $b/vectors.bin A/pix.actual.hex
-    if [ $b = V ]; then
-        [ $rc = 0 ] && grep -q '^edgeflag check: pix: ' err && ok "vectors.bin against a pix hex dump compares pix and passes" ||
-            bad "bin vs hex" "exit $rc"
-    fi
+    mkdir -p "B$b" && cp "$b/vectors.bin" "B$b/vectors.actual.bin"
+    run check $b/vectors.bin "B$b/vectors.actual.bin"
+    [ $rc = 0 ] && [ ! -s out ] && ok "$b/vectors.bin passes against a copy of it" || bad "$b/vectors.bin against a copy" "exit $rc"
 done
+run check V/vectors.bin A/pix.actual.hex --interfaces pix
+[ $rc = 0 ] && grep -q '^edgeflag check: pix: ' err && grep -q '^edgeflag check: span: skipped (not in --interfaces)' err &&
+    ok "vectors.bin against a pix hex dump with --interfaces pix: pix compared, the rest skipped, pass" ||
+    bad "bin vs hex --interfaces pix" "exit $rc"
+
+# The model standing in for the DUT: `vectors --dump` names its files as dumps.
+"$EFW" vectors "$root/tests/data/svg/tiger.svg" -o MD --size 160x120 --dump >/dev/null 2>err || bad "vectors --dump" "$(head -c 300 err)"
+run check V MD
+[ $rc = 0 ] && [ ! -e MD/manifest.json ] && [ -s MD/vectors.actual.bin ] && [ "$(grep -c ' 0 mismatches$' err)" = 13 ] &&
+    head -n 1 MD/pix.actual.hex | grep -q 'role actual$' &&
+    ok "vectors --dump: IFACE.actual.hex and vectors.actual.bin, no manifest; check passes on all 13 comparisons" ||
+    bad "vectors --dump" "exit $rc"
+
+# ------------------------------------------------------------ cannot pass by accident
+# Each of these once passed: a dump folder holding copies of the expected files, the
+# expected folder or file given twice, a bench that never wrote pix.actual.hex.
+rm -rf C && cp -R V C
+run check V C
+[ $rc = 2 ] && grep -q 'nothing to compare.*it holds expected files' err && ! grep -q PASS err &&
+    ok "a dump folder of copies of the expected files: exit 2, never taken for dumps" || bad "copies of expected" "exit $rc"
+run check V V
+[ $rc = 2 ] && grep -q '^edgeflag: V and V are the same directory' err && ok "EXPECTED given as ACTUAL: exit 2" ||
+    bad "V V" "exit $rc"
+run check V/pix.expected.hex V/pix.expected.hex
+[ $rc = 2 ] && grep -q 'are the same file' err && ok "an expected file against itself: exit 2" || bad "file against itself" "exit $rc"
+run check V/pix.expected.hex C/pix.expected.hex
+[ $rc = 2 ] && grep -q 'is an expected file (\*.expected.hex), never a dump' err &&
+    ok "an expected file given as the dump: exit 2" || bad "expected file as dump" "exit $rc"
+rm -rf NP && cp -R A NP && rm NP/pix.actual.hex
+run check V NP --junit jnp.xml
+if [ $rc = 1 ] && grep -q '^edgeflag check: pix: FAIL: NP holds no dump of it' err && grep -q 'FAIL: .*1 interface without a dump' err &&
+    xmllint --noout jnp.xml && grep -q '<failure type="missing dump" message="no dump of pix' jnp.xml &&
+    grep -q 'failures="1"' jnp.xml; then
+    ok "a bench that never wrote pix.actual.hex fails (exit 1, a JUnit failure)"
+else
+    bad "missing pix dump" "exit $rc"
+fi
+rm -rf NQ && cp -R A NQ && rm NQ/plot.actual.hex NQ/et_rd.actual.hex
+run check V NQ
+[ $rc = 1 ] && [ "$(grep -c ': FAIL: NQ holds no dump of it' err)" = 2 ] && ok "two internal dumps missing: both named, exit 1" ||
+    bad "missing internal dumps" "exit $rc"
+run check V NQ --allow-missing plot,et_rd --junit jnq.xml --name "case 7 seed 42"
+if [ $rc = 0 ] && grep -q '^edgeflag check: plot: skipped' err && xmllint --noout jnq.xml &&
+    grep -q '<testsuite name="case 7 seed 42" tests="6" failures="0" errors="0" skipped="2"' jnq.xml &&
+    [ "$(grep -c '<skipped ' jnq.xml)" = 2 ] && grep -q 'classname="case 7 seed 42" name="pix: ' jnq.xml; then
+    ok "--allow-missing plot,et_rd: pass, both listed as skipped in JUnit under --name"
+else
+    bad "--allow-missing" "exit $rc"
+fi
+run check V A --interfaces pix,span --junit jif.xml
+[ $rc = 0 ] && [ "$(grep -c '<skipped ' jif.xml)" = 4 ] && grep -q '<testsuite name="V"' jif.xml &&
+    ok "--interfaces pix,span: two compared, four skipped; the suite named after EXPECTED" || bad "--interfaces" "exit $rc"
 run check V/span.expected.hex V/vectors.bin
 [ $rc = 0 ] && ok "a span hex file against vectors.bin passes" || bad "hex vs bin" "exit $rc"
 
@@ -182,16 +234,16 @@ run check N A
 # copy M of V; the single report must name M's line, the cycle and place.
 mutate_hex() {
     local iface=$1 k=$2 bit=$3 ln w nw want
-    rm -rf M && cp -R V M
+    rm -rf M && cp -R A M
     layout V/$iface.expected.hex
     read -r ln w < <(nth_data V/$iface.expected.hex "$k")
     nw=$(flip_word "$w" "$bit")
-    set_line M/$iface.expected.hex "$ln" "$nw"
-    want="M/$iface.expected.hex:$ln: $(where "$iface" "$w"): fields differ: "
+    set_line M/$iface.actual.hex "$k" "$nw"
+    want="M/$iface.actual.hex:$k: $(where "$iface" "$w"): fields differ: "
     run check V M
     if [ $rc = 1 ] && [ "$(wc -l <out)" = 1 ] && [[ "$(cat out)" == "$want"* ]] && grep -q '\*' out &&
         grep -q "(expected at V/$iface.expected.hex:$ln)" out; then
-        ok "flipped bit $bit of $iface word $k: one report at line $ln, ${want#*: }"
+        ok "flipped bit $bit of $iface word $k: one report at line $k, ${want#*: }"
     else
         bad "flipped bit $bit of $iface word $k" "exit $rc, want 1 and one line starting '$want'"
     fi
@@ -302,7 +354,7 @@ cp A/pix.actual.hex "$weird"
 run check V/pix.expected.hex "$weird" --junit "j&.xml"
 [ $rc = 0 ] && xmllint --noout "j&.xml" 2>/dev/null && grep -q 'q&amp;&lt;&gt;&quot;&apos;\\x01\\xffx.hex' "j&.xml" &&
     ok "--junit escapes a file name with & < > \" ' and control bytes" || bad "--junit escaping" "exit $rc"
-run check V V --junit j2.xml
+run check V A --junit j2.xml
 [ $rc = 0 ] && xmllint --noout j2.xml && grep -q 'failures="0" errors="0"' j2.xml && ok "--junit of a pass: no failure" ||
     bad "--junit pass" "exit $rc"
 printf 'zz\n' >Z.hex
@@ -361,6 +413,10 @@ usage_case "unknown option '--frob'" V V --frob
 usage_case "--diff-image must name a .png" V V --diff-image d.jpg
 usage_case "option '--junit' needs a value" V V --junit
 usage_case "--junit and --diff-image name the same file" V V --junit x.png --diff-image x.png
+usage_case "--allow-missing cannot name pix" V A --allow-missing plot,pix
+usage_case "--interfaces must include pix" V A --interfaces span
+usage_case "--interfaces must be a comma-separated list of" V A --interfaces pix,frob
+usage_case "empty --name" V A --name ""
 run check --help
 [ $rc = 0 ] && grep -q '^usage: edgeflag check EXPECTED ACTUAL' out && ok "check --help" || bad "check --help" "exit $rc"
 run help check
