@@ -73,5 +73,6 @@ include tests/bad/module.mk
 include tests/vectors/module.mk
 include tests/check/module.mk
 include tests/rtl/module.mk
+include tests/regress/module.mk
 include tests/sanitize/module.mk
 include tests/portability.mk

@@ -6,6 +6,7 @@
 #                                  aarch64/s390x cross C libraries and qemu-user (best effort)
 #   tools/install-deps.sh portability   the same (what `make portability` needs)
 #   tools/install-deps.sh bench    + the peers and plotting for `make bench` (bench/README.md)
+#   tools/install-deps.sh farm     + GNU parallel, Slurm and munge for `make farm-test` (docs/regress.md)
 set -euo pipefail
 
 pkgs=(gcc make pkg-config libexpat1-dev libpng-dev)
@@ -15,12 +16,17 @@ if [ "${1:-}" = test ] || [ "${1:-}" = portability ]; then
     # the vectors' real readers: Icarus and Verilator ($readmemh testbenches), GTKWave's
     # vcd2fst/fst2vcd (VCD round trip), xmllint (JUnit XML well-formedness)
     pkgs+=(iverilog verilator gtkwave libxml2-utils)
+    # the regression flow's shards run under GNU parallel in make test (docs/regress.md)
+    pkgs+=(parallel)
     # `make portability` builds static aarch64 and s390x (big-endian) programs
     # with clang --target and runs them under qemu-user.  gcc-aarch64-linux-gnu
     # cannot be installed beside gcc-multilib in Debian 12; these can.  Best
     # effort: without them that stage skips those targets and says why.
     optional+=(qemu-user-static libc6-dev-arm64-cross libgcc-12-dev-arm64-cross binutils-aarch64-linux-gnu
                libc6-dev-s390x-cross libgcc-12-dev-s390x-cross binutils-s390x-linux-gnu)
+fi
+if [ "${1:-}" = farm ]; then
+    pkgs+=(parallel libxml2-utils slurm-wlm munge)
 fi
 if [ "${1:-}" = bench ]; then
     pkgs+=(g++ libagg-dev libcairo2-dev libfreetype-dev libstb-dev fonts-dejavu-core gnuplot-nox python3)
