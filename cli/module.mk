@@ -4,4 +4,4 @@ EDGEFLAG := $(BUILD)/edgeflag
 
 cli: $(EDGEFLAG)
 $(EDGEFLAG): $(CLI_OBJ) $(LIB_A)
-	$(CC) $(LDFLAGS_ALL) -o $@ $(CLI_OBJ) $(LIB_A) $(PNG_LIBS) $(EXPAT_LIBS)
+	$(CC) $(LDFLAGS_ALL) -o $@ $(CLI_OBJ) $(LIB_A) $(PNG_LIBS) $(EXPAT_LIBS) $(VEC_LIBS)

@@ -28,16 +28,21 @@
  * crc = 0 and pass each result back in; the CRC of "123456789" is 0xCBF43926. */
 uint32_t ef_vec_crc32(uint32_t crc, const void *data, size_t n);
 
-/* SHA-256 (FIPS 180-4). */
+/* SHA-256 (FIPS 180-4), by GNU Nettle.  Builds without the manifest
+ * (WITH_MANIFEST=0: no Nettle, no JSON library) have no hashing. */
+#ifndef EF_NO_MANIFEST
+#include <nettle/sha2.h>
 typedef struct ef_vec_sha256 {
-    uint32_t h[8];
-    uint64_t len;          /* bytes hashed so far */
-    uint8_t block[64];
-    unsigned used;         /* bytes waiting in block */
+    struct sha256_ctx ctx;
 } ef_vec_sha256;
 void ef_vec_sha256_init(ef_vec_sha256 *s);
 void ef_vec_sha256_update(ef_vec_sha256 *s, const void *data, size_t n);
 void ef_vec_sha256_final(ef_vec_sha256 *s, uint8_t digest[32]);
+#else
+typedef struct ef_vec_sha256 {
+    int unused;
+} ef_vec_sha256;
+#endif
 /* 64 lower-case hex digits and a NUL. */
 void ef_vec_sha256_hex(const uint8_t digest[32], char out[65]);
 

@@ -12,8 +12,12 @@
 void ef_vec_out_init(ef_vec_out *o, FILE *fp, unsigned flags)
 {
     o->fp = fp;
+#ifndef EF_NO_MANIFEST
     o->flags = flags;
     ef_vec_sha256_init(&o->sha);
+#else
+    o->flags = flags & ~(unsigned)EF_VEC_OUT_SHA;   /* no hashing in this build */
+#endif
     o->crc = 0;
     o->bytes = 0;
     o->err = 0;
@@ -25,8 +29,10 @@ static void drain(ef_vec_out *o)
 {
     if (!o->used)
         return;
+#ifndef EF_NO_MANIFEST
     if (o->flags & EF_VEC_OUT_SHA)
         ef_vec_sha256_update(&o->sha, o->buf, o->used);
+#endif
     if (o->flags & EF_VEC_OUT_CRC)
         o->crc = ef_vec_crc32(o->crc, o->buf, o->used);
     if (o->fp && !o->err && fwrite(o->buf, 1, o->used, o->fp) != o->used)
@@ -79,8 +85,13 @@ void ef_vec_out_u64(ef_vec_out *o, uint64_t v)
 int ef_vec_out_finish(ef_vec_out *o, uint8_t digest[32])
 {
     drain(o);
+#ifndef EF_NO_MANIFEST
     if (digest)
         ef_vec_sha256_final(&o->sha, digest);
+#else
+    if (digest)
+        memset(digest, 0, 32);
+#endif
     if (o->err) {
         errno = o->err;
         return -1;

@@ -33,7 +33,7 @@ for b in "${full[@]}"; do
 done
 for b in "${m32[@]}"; do
     read -r cc opt <<<"$b"; name="build-bx-$cc$opt-m32"
-    build "$name" "$cc" "$opt" EXTRA_CFLAGS=-m32 EXTRA_LDFLAGS=-m32 WITH_SVG=0 WITH_PNG=0
+    build "$name" "$cc" "$opt" EXTRA_CFLAGS=-m32 EXTRA_LDFLAGS=-m32 WITH_SVG=0 WITH_PNG=0 WITH_MANIFEST=0
     # ELF header byte 4 (EI_CLASS) is 1 for a 32-bit program (no dependency on file(1)).
     [ "$(od -An -tu1 -j4 -N1 "$name/edgeflag" | tr -d ' ')" = 1 ] ||
         { echo "bitexact: $name/edgeflag is not a 32-bit program"; exit 1; }

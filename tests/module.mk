@@ -6,7 +6,7 @@ ORACLE_SRC := $(filter-out tests/oracle/oracle_selftest.c,$(wildcard tests/oracl
 ORACLE_OBJ := $(ORACLE_SRC:%.c=$(BUILD)/%.o)
 ORACLE_CHECK := $(BUILD)/tests/oracle_check
 ORACLE_SELFTEST := $(BUILD)/tests/oracle_selftest
-TEST_LIBS = $(LIB_A) $(PNG_LIBS) $(EXPAT_LIBS) $(CMOCKA_LIBS)
+TEST_LIBS = $(LIB_A) $(PNG_LIBS) $(EXPAT_LIBS) $(VEC_LIBS) $(CMOCKA_LIBS)
 
 .PHONY: test test-build test-unit test-oracle test-mutants test-cli test-bitexact test-sanitize deps-test
 

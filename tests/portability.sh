@@ -21,7 +21,7 @@
 #     16 evenodd, 32 nonzero) and of two shared SVG dumps;
 # and runs the fixed-point unit tests (tests/unit/test_fixed.c, without
 # cmocka) as aarch64 and s390x programs.  The 32-bit and foreign builds are
-# WITH_SVG=0 WITH_PNG=0 (no target expat/libpng) and render the dumps; the
+# WITH_SVG=0 WITH_PNG=0 WITH_MANIFEST=0 (no target expat, libpng, Nettle) and render the dumps; the
 # native builds render the SVGs too, which must agree with their dumps.
 #
 # A foreign architecture whose tools are missing and cannot be installed
@@ -72,8 +72,8 @@ build build-bx-gcc-O3 "" "2 1 62" CC=gcc OPT=-O3
 build build-bx-clang-O0 "" "2 1 62" CC=clang OPT=-O0
 build build-bx-clang-O3 "" "2 1 62" CC=clang OPT=-O3
 build build-bx-gcc-O2-novector "" "2 1 62" CC=gcc OPT=-O2 EXTRA_CFLAGS=-DEF_NO_VECTOR
-build build-bx-gcc-O2-m32 "" "1 1 3" CC=gcc OPT=-O2 EXTRA_CFLAGS=-m32 EXTRA_LDFLAGS=-m32 WITH_SVG=0 WITH_PNG=0
-build build-bx-clang-O2-m32 "" "1 1 3" CC=clang OPT=-O2 EXTRA_CFLAGS=-m32 EXTRA_LDFLAGS=-m32 WITH_SVG=0 WITH_PNG=0
+build build-bx-gcc-O2-m32 "" "1 1 3" CC=gcc OPT=-O2 EXTRA_CFLAGS=-m32 EXTRA_LDFLAGS=-m32 WITH_SVG=0 WITH_PNG=0 WITH_MANIFEST=0
+build build-bx-clang-O2-m32 "" "1 1 3" CC=clang OPT=-O2 EXTRA_CFLAGS=-m32 EXTRA_LDFLAGS=-m32 WITH_SVG=0 WITH_PNG=0 WITH_MANIFEST=0
 foreign=()
 for arch in "aarch64 aarch64-linux-gnu qemu-aarch64-static 183 1" "s390x s390x-linux-gnu qemu-s390x-static 22 2"; do
     read -r a triple qemu mach data <<<"$arch"
@@ -84,7 +84,7 @@ for arch in "aarch64 aarch64-linux-gnu qemu-aarch64-static 183 1" "s390x s390x-l
     foreign+=("$triple $qemu")
     for opt in O0 O3; do
         build "build-px-$a-$opt" "$qemu" "2 $data $mach" "CC=clang --target=$triple" OPT=-$opt EXTRA_LDFLAGS=-static \
-            WITH_SVG=0 WITH_PNG=0
+            WITH_SVG=0 WITH_PNG=0 WITH_MANIFEST=0
     done
 done
 [ ${#names[@]} -gt 0 ] || die "nothing built"

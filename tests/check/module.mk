@@ -11,7 +11,7 @@ CHECK_TOOLS := $(BUILD)/tests/check/vec_mutate $(BUILD)/tests/check/vec_load
 
 $(BUILD)/tests/check/%: tests/check/%.c $(RTLV_OBJ) $(LIB_A)
 	@mkdir -p $(dir $@)
-	$(CC) $(CPPFLAGS) $(CFLAGS_ALL) $< $(RTLV_OBJ) -o $@ $(LDFLAGS_ALL) $(LIB_A) $(EXPAT_LIBS)
+	$(CC) $(CPPFLAGS) $(CFLAGS_ALL) $< $(RTLV_OBJ) -o $@ $(LDFLAGS_ALL) $(LIB_A) $(EXPAT_LIBS) $(VEC_LIBS)
 
 .PHONY: test-check
 test-check: cli $(CHECK_TOOLS) $(BUILD)/tests/tools/vec_bin_check
