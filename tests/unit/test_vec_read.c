@@ -111,6 +111,7 @@ static void test_readmemh_leniency(void **state)
         "\n\n  /* a comment */ 000000000005000c0028011223344 // trailing\n",
         "/* multi\n line */\n000000000005000c0028011223344",
         "5000c0028011223344\n",   /* leading zeros may be left out */
+        "00000000000000000005000c0028011223344\n",   /* or added: a 128-bit register's %h */
     };
     (void)state;
     for (size_t k = 0; k < sizeof forms / sizeof forms[0]; k++) {
@@ -132,7 +133,7 @@ static void test_hex_refusals(void **state)
     (void)state;
     expect_error("000000000005000c00280112233x4\n", EF_IF_PIX, -1, EF_ERR_SYNTAX, 1, 28, "unknown value");
     expect_error("\n  00000000000z\n", EF_IF_PIX, -1, EF_ERR_SYNTAX, 2, 14, "unknown value");
-    expect_error("0000000000005000c0028011223344\n", EF_IF_PIX, -1, EF_ERR_RANGE, 1, 1, "too many digits");
+    expect_error("1000000000005000c0028011223344\n", EF_IF_PIX, -1, EF_ERR_RANGE, 1, 1, "too many digits");
     expect_error("8000000001f4000e0060005000000ff\n", EF_IF_SPAN, -1, EF_ERR_RANGE, 1, 1, "value too wide");
     expect_error("@0\n", EF_IF_PIX, -1, EF_ERR_UNSUPPORTED, 1, 1, "address specifiers");
     expect_error("0 /* open\n\n", EF_IF_PIX, -1, EF_ERR_SYNTAX, 1, 3, "unterminated /* comment");
