@@ -74,6 +74,7 @@ clean:
 DEMO_OUT ?= out/demo
 demo:
 	@bash tools/install-deps.sh
+	@echo "edgeflag demo: building the library and the edgeflag command (make all, about 20 s the first time)"
 	@$(MAKE) --no-print-directory -s all
 	@mkdir -p $(DEMO_OUT)
 	@for n in 8 16 32; do \

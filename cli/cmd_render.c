@@ -14,7 +14,9 @@
 #include <errno.h>
 #include <inttypes.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 static const char *const CMD = "render";
 
@@ -101,6 +103,11 @@ int ef_cli_render_parse(int argc, char **argv, render_args *a)
         return ef_cli_usage_error(CMD, "no input file");
     if (!a->output)
         return ef_cli_usage_error(CMD, "no output file (-o OUTPUT)");
+    struct stat st;
+    if (stat(a->output, &st) == 0 && S_ISDIR(st.st_mode)) {   /* docs/cli.md: a directory is exit 4 */
+        ef_cli_error("cannot write '%s': %s", a->output, strerror(EISDIR));
+        return EF_CLI_EXIT_OUTPUT;
+    }
     a->fmt = ef_cli_format_from_path(a->output);
     if (a->fmt == EF_CLI_FMT_UNKNOWN)
         return ef_cli_usage_error(CMD, "cannot tell the format of '%s': use .png, .pam or .pgm",
@@ -146,6 +153,31 @@ static int write_output(const render_args *a, const ef_image *img)
     return EF_CLI_EXIT_OK;
 }
 
+/* OUTPUT's folder must exist before the render, not only when the file is
+ * written after it (a long render would be wasted): 0, or the exit code. */
+static int output_dir_ok(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    struct stat st;
+    if (!slash)
+        return 0;
+    size_t n = slash == path ? 1 : (size_t)(slash - path);
+    char *dir = malloc(n + 1);
+    if (!dir) {
+        ef_cli_error("out of memory");
+        return EF_CLI_EXIT_INTERNAL;
+    }
+    memcpy(dir, path, n);
+    dir[n] = '\0';
+    int rc = 0;
+    if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode)) {
+        ef_cli_error("cannot write '%s': %s", path, strerror(stat(dir, &st) != 0 ? errno : ENOTDIR));
+        rc = EF_CLI_EXIT_OUTPUT;
+    }
+    free(dir);
+    return rc;
+}
+
 int ef_cli_render(int argc, char **argv)
 {
     render_args a;
@@ -160,6 +192,8 @@ int ef_cli_render(int argc, char **argv)
 
     rc = ef_cli_render_parse(argc, argv, &a);
     if (rc >= 0)
+        return rc;
+    if ((rc = output_dir_ok(a.output)) != 0)
         return rc;
 
     memset(&opts, 0, sizeof opts);

@@ -34,7 +34,7 @@ static void usage(FILE *f)
           "Renders INPUT (.svg, .scene/.txt) with the timing model of the reference\n"
           "microarchitecture and writes every transfer at every interface, stamped with\n"
           "its cycle, as test vectors into DIR (docs/vectors.md):\n"
-          "  IFACE.stim.hex, IFACE.expected.hex   $readmemh words {cycle[47:0], payload}\n"
+          "  cmd.stim.hex, IFACE.expected.hex     $readmemh words {cycle[47:0], payload}\n"
           "  vectors.vcd                          every interface signal, one clock\n"
           "  vectors.bin                          binary stream for the host tool\n"
           "  frame.png                            the expected image\n"

@@ -19,10 +19,13 @@ $(LIB_PC): model/edgeflag.pc.in
 	@mkdir -p $(dir $@)
 	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|0.1.0|' $< > $@
 
-# make install [PREFIX=/usr/local] [DESTDIR=]: headers, both libraries, pkg-config file.
+# make install [PREFIX=/usr/local] [DESTDIR=]: the edgeflag command, the regression scripts,
+# headers, both libraries, pkg-config file.
 .PHONY: install
-install: lib
-	install -d $(DESTDIR)$(PREFIX)/include/edgeflag $(DESTDIR)$(PREFIX)/lib/pkgconfig
+install: lib cli
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/include/edgeflag $(DESTDIR)$(PREFIX)/lib/pkgconfig
+	install -m 755 $(EDGEFLAG) rtl_vectors/regress/ef-regress-shard rtl_vectors/regress/ef-regress-merge \
+	    $(DESTDIR)$(PREFIX)/bin/
 	install -m 644 model/edgeflag.h model/ef_scene.h model/ef_trace.h $(DESTDIR)$(PREFIX)/include/edgeflag/
 	install -m 644 $(LIB_A) $(DESTDIR)$(PREFIX)/lib/
 	install -m 755 $(LIB_SO) $(DESTDIR)$(PREFIX)/lib/libedgeflag.so.0

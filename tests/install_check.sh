@@ -31,4 +31,7 @@ cc -std=c11 "$pre/use.c" -o "$pre/use_shared" $(pkg-config --cflags --libs edgef
 cc -std=c11 "$pre/use.c" -o "$pre/use_static" $(pkg-config --cflags edgeflag) "$pre/lib/libedgeflag.a" $(pkg-config --libs-only-l --static expat)
 LD_LIBRARY_PATH="$pre/lib" "$pre/use_shared" >/dev/null
 "$pre/use_static" >/dev/null
-echo "install: pkg-config, shared and static linking work"
+# The command is installed too, and runs from there.
+"$pre/bin/edgeflag" patterns --samples 8 >/dev/null
+[ -x "$pre/bin/ef-regress-shard" ] && [ -x "$pre/bin/ef-regress-merge" ]
+echo "install: pkg-config, shared and static linking work; bin/edgeflag and the regression scripts installed"

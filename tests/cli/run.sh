@@ -213,12 +213,20 @@ for out in "nonexistent-dir/x.pgm" "notadir/x.pam" "/nonexistent-root-dir/x.pgm"
         bad "unwritable output: -o $out" "rc=$rc (want 4)"
     fi
 done
-# Names that cannot be an image file at all are usage errors (2).
+# The output folder is checked before the input is even read: a missing one is 4, not the
+# input's 3 (and a long render is not wasted).
+printf 'scene 4 4\nshape nonzero 0 0 0 255\ncontour 0 0 1\n' >broken.scene
+run render broken.scene -o nonexistent-dir/x.png
+[ $rc -eq 4 ] && grep -q "^edgeflag: cannot write 'nonexistent-dir/x.png'" err && ok "a missing output folder is found before the input is read (4)" ||
+    bad "output folder checked first" "rc=$rc (want 4)"
+# An existing directory is exit 4 (docs/cli.md); a name that cannot be an image file is 2.
 mkdir outdir
-for out in "outdir" "outdir/" "outdir.pgm/"; do
+for out in "outdir" "outdir/"; do
     run render ok.scene -o "$out"
-    if [ $rc -eq 2 ] && [ -d outdir ] && [ ! -e outdir.pgm ]; then ok "-o '$out' -> 2"; else bad "-o '$out'" "rc=$rc (want 2)"; fi
+    if [ $rc -eq 4 ] && [ -d outdir ] && grep -q "Is a directory" err; then ok "-o '$out' (a directory) -> 4"; else bad "-o '$out'" "rc=$rc (want 4)"; fi
 done
+run render ok.scene -o "outdir.pgm/"
+if [ $rc -eq 2 ] && [ ! -e outdir.pgm ]; then ok "-o 'outdir.pgm/' -> 2"; else bad "-o 'outdir.pgm/'" "rc=$rc (want 2)"; fi
 mkdir isdir.pgm
 run render ok.scene -o isdir.pgm
 if [ $rc -eq 4 ] && [ -d isdir.pgm ] && ! has_temp isdir.pgm; then
