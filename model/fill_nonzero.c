@@ -11,17 +11,9 @@
  */
 #include "internal.h"
 
-/* Pad bits (bit 8L+7) of a word -> bits 0..7 in lane order: the multiply moves
- * bit 8L to bit 56+L with no carries into the top byte (checked exhaustively
- * in tests/unit/test_model.c). */
-static inline uint32_t gather_pads(uint64_t pads)
-{
-    return (uint32_t)(((pads >> 7) * UINT64_C(0x0102040810204080)) >> 56);
-}
-
 static inline uint32_t lanes_nonzero(uint64_t acc)
 {
-    return gather_pads(((acc & EF_LANES7) + EF_LANES7) & EF_PADS);
+    return ef_gather_pads(((acc & EF_LANES7) + EF_LANES7) & EF_PADS);
 }
 
 /* For N = 16 and 32 with compositing, the lanes are added as 16-byte
@@ -141,7 +133,7 @@ static EF_ALWAYS_INLINE void fill_nonzero(ef_ctx *ctx, int32_t y, int32_t xmin, 
                     /* Signed 7-bit overflow per lane: operands agree in sign, result not. */
                     uint64_t ov = ~(a ^ b) & (a ^ sum) & EF_SIGN7;
                     if (ov)
-                        overflows += ef_popcount32(gather_pads(ov << 1));  /* bit 8L+6 -> 8L+7 */
+                        overflows += ef_popcount32(ef_gather_pads(ov << 1));  /* bit 8L+6 -> 8L+7 */
                 }
                 acc[w] = sum;
                 if (by_count)

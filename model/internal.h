@@ -296,6 +296,14 @@ static inline unsigned ef_ctz64(uint64_t v)
 #endif
 }
 
+/* Pad bits (bit 8L+7, nothing else set) of a word -> bits 0..7 in lane
+ * order: the multiply moves bit 8L to bit 56+L with no carries into the top
+ * byte (checked for all 256 patterns in tests/unit/test_model.c). */
+static inline uint32_t ef_gather_pads(uint64_t pads)
+{
+    return (uint32_t)(((pads >> 7) * UINT64_C(0x0102040810204080)) >> 56);
+}
+
 /* Population count, the coverage block's core (portable; compilers fold it). */
 static inline unsigned ef_popcount32(uint32_t v)
 {

@@ -12,6 +12,7 @@
 #include <cmocka.h>
 
 #include "edgeflag.h"
+#include "internal.h"   /* ef_gather_pads, tested exhaustively below */
 
 #define PX(v) ((int32_t)((v) * 256))
 
@@ -290,9 +291,26 @@ static void test_composite(void **state)
     ef_ctx_destroy(ctx);
 }
 
+/* The non-zero filler's pad-bit gather: every one of the 256 patterns of the
+ * eight pad bits comes out as the lane bitmap, lane L at bit L. */
+static void test_gather_pads_exhaustive(void **state)
+{
+    (void)state;
+    for (uint32_t b = 0; b < 256; b++) {
+        uint64_t pads = 0;
+        for (int lane = 0; lane < 8; lane++)
+            if (b >> lane & 1u)
+                pads |= UINT64_C(1) << (8 * lane + 7);
+        if (ef_gather_pads(pads) != b)
+            fail_msg("pads 0x%016llx gathered as 0x%02x, want 0x%02x", (unsigned long long)pads,
+                     (unsigned)ef_gather_pads(pads), (unsigned)b);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_gather_pads_exhaustive),
         cmocka_unit_test(test_aligned_rect),
         cmocka_unit_test(test_half_pixel_rect),
         cmocka_unit_test(test_clamp_exact),
