@@ -75,7 +75,7 @@ clean:
 DEMO_OUT ?= out/demo
 demo:
 	@bash tools/install-deps.sh
-	@echo "edgeflag demo: building the library and the edgeflag command (make all, about 20 s the first time)"
+	@echo "edgeflag demo: building the library, edgeflag and edgeflag-host (make all, about 30 s the first time)"
 	@$(MAKE) --no-print-directory -s all
 	@mkdir -p $(DEMO_OUT)
 	@for n in 8 16 32; do \
@@ -90,3 +90,7 @@ demo:
 	@echo "  vectors.bin, manifest.json (docs/vectors.md). 'edgeflag check' compared them with a second run of the"
 	@echo "  model written as a DUT's dumps ($(DEMO_OUT)/model_dumps, 'vectors --dump') and passed;"
 	@echo "  check an RTL's dumps with: $(EDGEFLAG) check $(DEMO_OUT)/vectors DUMP_DIR (IFACE.actual.hex files)"
+	@$(EDGEFLAG_HOST) verify $(DEMO_OUT)/vectors/vectors.bin --transport sim --results $(DEMO_OUT)/board
+	@echo "edgeflag demo: streamed the tiger's command stream to the simulated board (edgeflag-host, docs/board.md)"
+	@echo "  and checked every interface it returned ($(DEMO_OUT)/board/vectors.actual.bin) against the vectors;"
+	@echo "  with a board attached: $(EDGEFLAG_HOST) list, then $(EDGEFLAG_HOST) verify $(DEMO_OUT)/vectors/vectors.bin"

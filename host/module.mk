@@ -7,7 +7,7 @@ HOST_BOARD_SRC := $(wildcard host/board/*.c)
 HOST_SRC := host/main.c host/host_link.c host/bench_link.c host/transport.c host/transport_sim.c \
             host/transport_null.c host/transport_absent.c
 HOST_CPPFLAGS := -Ihost -Ihost/board -Icli
-HOST_LIBS :=
+HOST_LIBS := $(shell $(PKG_CONFIG) --libs zlib 2>/dev/null || echo -lz)
 -include host/usb.mk
 -include host/gpio.mk
 ifeq ($(wildcard host/usb.mk),)
@@ -31,3 +31,14 @@ host: $(EDGEFLAG_HOST)
 $(EDGEFLAG_HOST): $(HOST_OBJ) $(HOST_BOARD_OBJ) $(HOST_CLI_OBJ) $(LIB_A)
 	$(CC) $(LDFLAGS_ALL) -o $@ $(HOST_OBJ) $(HOST_BOARD_OBJ) $(HOST_CLI_OBJ) $(LIB_A) $(HOST_LIBS) $(PNG_LIBS) \
 	    $(EXPAT_LIBS) $(VEC_LIBS)
+
+# make install puts edgeflag-host beside edgeflag, and the udev rule (docs/board-usb.md) under
+# $(PREFIX)/lib/udev/rules.d; on a system, /etc/udev/rules.d (or the distribution's
+# /usr/lib/udev/rules.d) is where udev reads it.
+.PHONY: install-host
+install: install-host
+install-host: host
+	install -d $(DESTDIR)$(PREFIX)/bin
+	install -m 755 $(EDGEFLAG_HOST) $(DESTDIR)$(PREFIX)/bin/
+	if [ -f host/60-edgeflag.rules ]; then install -d $(DESTDIR)$(PREFIX)/lib/udev/rules.d && \
+	    install -m 644 host/60-edgeflag.rules $(DESTDIR)$(PREFIX)/lib/udev/rules.d/; fi

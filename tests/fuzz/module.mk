@@ -57,7 +57,7 @@ $(BUILD)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/fuzz_common.h $(LIB_A)
 	    $(if $(filter fuzz_vec_read,$(notdir $@)),$(RTLV_OBJ)) \
 	    $(if $(filter fuzz_board,$(notdir $@)),$(HOST_BOARD_OBJ) $(RTLV_OBJ)) \
 	    $(if $(filter fuzz_host_results,$(notdir $@)),$(FUZZ_HOST_OBJ) $(FUZZ_CLI_OBJ)) \
-	    -o $@ $(LDFLAGS_ALL) $(LIB_A) $(PNG_LIBS) $(EXPAT_LIBS) $(VEC_LIBS)
+	    -o $@ $(LDFLAGS_ALL) $(LIB_A) $(PNG_LIBS) $(EXPAT_LIBS) $(VEC_LIBS) $(HOST_LIBS)
 
 fuzz: fuzz-build
 	@bash tests/fuzz/run.sh $(FUZZ_BUILD) fuzz $(FUZZ_SECONDS) $(FUZZ_TARGETS)
