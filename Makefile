@@ -47,7 +47,7 @@ VEC_LIBS     :=
 endif
 
 .PHONY: all lib cli clean deps demo test check
-all: lib cli
+all: lib cli host
 
 # Compile rule shared by every fragment.
 $(BUILD)/%.o: %.c
@@ -58,6 +58,7 @@ include fixed/module.mk
 include model/module.mk
 include rtl_vectors/module.mk
 include cli/module.mk
+include host/module.mk
 include tests/module.mk
 include bench/module.mk
 

@@ -161,6 +161,15 @@ void ef_vec_vcd_write(ef_vec_out *o, const ef_vec_info *info, const ef_vec_colle
 /* vectors.bin: the 104-byte header (two CRCs), then the merged records. */
 void ef_vec_bin_write(ef_vec_out *o, const ef_vec_info *info, const ef_vec_collect *c);
 /* The header alone (records_crc = the CRC-32 of the records). */
+/* Record of t into r (docs/vectors.md section 4): interface, payload length
+ * L = ceil(P/8), 48-bit cycle in 8 bytes, L payload bytes least significant
+ * first.  Returns its size.  The board protocol's RESULT frames carry these. */
+#define EF_VEC_BIN_RECORD_MAX (10 + 8 * EF_TXN_WORDS)
+size_t ef_vec_bin_record(const ef_txn *t, uint8_t r[EF_VEC_BIN_RECORD_MAX]);
+/* The header from per-interface counts (a receiver that counted the records
+ * itself, as edgeflag-host does, has no ef_vec_collect). */
+void ef_vec_bin_header_counts(uint8_t h[EF_VEC_BIN_HEADER], const ef_vec_info *info,
+                              const uint64_t counts[EF_IF_COUNT], uint32_t records_crc);
 void ef_vec_bin_header(uint8_t h[EF_VEC_BIN_HEADER], const ef_vec_info *info, const ef_vec_collect *c,
                        uint32_t records_crc);
 

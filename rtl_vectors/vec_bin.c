@@ -29,9 +29,7 @@ static void put64(uint8_t *p, uint64_t v)
         p[i] = (uint8_t)(v >> (8 * i));
 }
 
-/* Record of t into r: interface, payload length L = ceil(P/8), cycle, L
- * payload bytes least significant first.  Returns its size. */
-static size_t record(const ef_txn *t, uint8_t *r)
+size_t ef_vec_bin_record(const ef_txn *t, uint8_t r[EF_VEC_BIN_RECORD_MAX])
 {
     const unsigned len = (ef_iface_get(t->iface)->width + 7u) / 8u;
     r[0] = t->iface;
@@ -45,6 +43,15 @@ static size_t record(const ef_txn *t, uint8_t *r)
 void ef_vec_bin_header(uint8_t h[EF_VEC_BIN_HEADER], const ef_vec_info *info, const ef_vec_collect *c,
                        uint32_t records_crc)
 {
+    uint64_t counts[EF_IF_COUNT];
+    for (int i = 0; i < EF_IF_COUNT; i++)
+        counts[i] = ef_vec_collect_count(c, i);
+    ef_vec_bin_header_counts(h, info, counts, records_crc);
+}
+
+void ef_vec_bin_header_counts(uint8_t h[EF_VEC_BIN_HEADER], const ef_vec_info *info,
+                              const uint64_t counts[EF_IF_COUNT], uint32_t records_crc)
+{
     static const uint8_t magic[8] = { 0x89, 'E', 'F', 'V', '\r', '\n', 0x1a, '\n' };
     memset(h, 0, EF_VEC_BIN_HEADER);
     memcpy(h, magic, sizeof magic);
@@ -57,24 +64,24 @@ void ef_vec_bin_header(uint8_t h[EF_VEC_BIN_HEADER], const ef_vec_info *info, co
     put64(h + 24, info->seed);
     put32(h + 32, info->mask);
     for (int i = 0; i < EF_IF_COUNT; i++)
-        put64(h + 40 + 8 * i, (info->mask >> i & 1u) ? ef_vec_collect_count(c, i) : 0);
+        put64(h + 40 + 8 * i, (info->mask >> i & 1u) ? counts[i] : 0);
     put32(h + 96, records_crc);
     put32(h + 100, ef_vec_crc32(0, h, 100));
 }
 
 void ef_vec_bin_write(ef_vec_out *o, const ef_vec_info *info, const ef_vec_collect *c)
 {
-    uint8_t h[EF_VEC_BIN_HEADER], r[10 + 8 * EF_TXN_WORDS];
+    uint8_t h[EF_VEC_BIN_HEADER], r[EF_VEC_BIN_RECORD_MAX];
     uint32_t crc = 0;
     ef_vec_merge m;
     ef_txn t;
 
     ef_vec_merge_init(&m, c, info->mask);
     while (ef_vec_merge_next(&m, &t))
-        crc = ef_vec_crc32(crc, r, record(&t, r));
+        crc = ef_vec_crc32(crc, r, ef_vec_bin_record(&t, r));
     ef_vec_bin_header(h, info, c, crc);
     ef_vec_out_write(o, h, sizeof h);
     ef_vec_merge_init(&m, c, info->mask);
     while (ef_vec_merge_next(&m, &t))
-        ef_vec_out_write(o, r, record(&t, r));
+        ef_vec_out_write(o, r, ef_vec_bin_record(&t, r));
 }

@@ -43,11 +43,34 @@ enum {
 
 typedef struct ef_board ef_board;
 
+/* Bit of a sample count in samples_mask: 8 -> 3, 16 -> 4, 32 -> 5, other -> 31 (never set). */
+static inline unsigned ef_board_samples_bit(unsigned n)
+{
+    return n == 8 ? 3u : n == 16 ? 4u : n == 32 ? 5u : 31u;
+}
+
+/* START payload (docs/board.md section 3.2), EF_BOARD_START_LEN bytes:
+ * iface_mask u32, samples u32, mode u32, source_kib u32, cmd_count u64. */
+#define EF_BOARD_START_LEN 24
+enum {
+    EF_MODE_DUT = 0,      /* commands to the DUT, its transactions back */
+    EF_MODE_SINK = 1,     /* link test: DATA accepted and dropped */
+    EF_MODE_LOOPBACK = 2, /* link test: each DATA payload comes back as a RESULT payload */
+    EF_MODE_SOURCE = 3    /* link test: source_kib KiB of RESULT payload, no DATA needed */
+};
+/* ACKR flags */
+enum { EF_ACKR_RESEND = 1 };
+/* DONE payload, EF_BOARD_DONE_LEN bytes: records u64, result_bytes u64,
+ * cmds u64, input_crc u32, results_crc u32. */
+#define EF_BOARD_DONE_LEN 32
+/* Board states in status. */
+enum { EF_BS_IDLE = 0, EF_BS_RUNNING = 1, EF_BS_DONE = 2, EF_BS_ERROR = 3 };
+
 /* What the board reports in identify (docs/board.md section 3). */
 typedef struct ef_board_info {
     char serial[17];         /* NUL-terminated, at most 16 characters */
     uint32_t capabilities;   /* EF_BOARD_CAP_* */
-    uint32_t samples_mask;   /* bit n: n samples supported (8, 16, 32) */
+    uint32_t samples_mask;   /* bit k: 2^k samples supported (bits 3, 4, 5: 8, 16, 32) */
     uint32_t width_max, height_max, edges_max;
     uint32_t window;         /* frames the host may have unacknowledged */
     uint32_t iface_mask;     /* interfaces the board can return */
@@ -60,9 +83,10 @@ enum { EF_BOARD_CAP_RESULTS = 1, EF_BOARD_CAP_RESUME = 2, EF_BOARD_CAP_INTERNAL 
  * order.  finish() is called at END.  Return 0 or a negative error. */
 typedef struct ef_board_dut {
     void *self;
-    int (*start)(void *self, uint32_t iface_mask);
+    int (*start)(void *self, ef_board *b, uint32_t iface_mask, int samples);
     int (*push)(void *self, const uint8_t cmd[EF_BOARD_CMD_BYTES]);
     int (*finish)(void *self);
+    void (*stop)(void *self);       /* ends the run (reset, or after DONE/ERROR is acknowledged) */
     void (*destroy)(void *self);
 } ef_board_dut;
 
@@ -84,5 +108,19 @@ void ef_board_reset(ef_board *b);
 
 /* Called by the DUT for every output record (vectors.bin layout). */
 int ef_board_emit(ef_board *b, const uint8_t *record, size_t len);
+/* Called by the DUT when it fails: the run stops with an ERROR frame. */
+void ef_board_fail(ef_board *b, uint32_t code, const char *why);
+
+/* The C model's timing model as the DUT (dut_model.c). */
+ef_board_dut ef_board_dut_model(void);
+
+/* Counters for tests and the simulated board's --sim-state. */
+typedef struct ef_board_stats {
+    uint64_t frames_ok, frames_bad, frames_dup, frames_gap, naks, cmds, records;
+    uint32_t input_crc;        /* CRC-32 of every accepted DATA payload, in order */
+    uint32_t rx_seq, res_next, res_acked;
+    int state;
+} ef_board_stats;
+void ef_board_get_stats(const ef_board *b, ef_board_stats *s);
 
 #endif /* EF_BOARD_H */

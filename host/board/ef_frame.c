@@ -1,0 +1,74 @@
+/*
+ * ef_frame.c - frame layout of the board protocol (ef_frame.h).  The parser
+ * trusts nothing: a frame is accepted only with the magic, a zero reserved
+ * field, a length within EF_BOARD_PAYLOAD_MAX and a matching CRC; anything
+ * else is "not a frame here" and the caller skips to the next magic.
+ */
+#include "ef_frame.h"
+
+#include <string.h>
+
+#include "ef_vec.h"
+
+uint32_t ef_frame_crc32(uint32_t crc, const void *data, size_t n)
+{
+    return ef_vec_crc32(crc, data, n);
+}
+
+size_t ef_frame_seal(uint8_t *out, uint8_t type, uint8_t flags, uint32_t seq, uint32_t len)
+{
+    memcpy(out, EF_BOARD_MAGIC, 4);
+    out[4] = type;
+    out[5] = flags;
+    out[6] = out[7] = 0;
+    ef_put32(out + 8, seq);
+    ef_put32(out + 12, len);
+    ef_put32(out + EF_BOARD_HEADER + len, ef_frame_crc32(0, out, EF_BOARD_HEADER + (size_t)len));
+    return EF_BOARD_HEADER + (size_t)len + EF_BOARD_TRAILER;
+}
+
+size_t ef_frame_put(uint8_t *out, uint8_t type, uint8_t flags, uint32_t seq, const void *payload, uint32_t len)
+{
+    if (len)
+        memmove(out + EF_BOARD_HEADER, payload, len);
+    return ef_frame_seal(out, type, flags, seq, len);
+}
+
+int ef_frame_parse(const uint8_t *buf, size_t n, ef_frame *f, size_t *used)
+{
+    static const uint8_t magic[4] = { 'E', 'F', 'B', '1' };
+    const size_t m = n < 4 ? n : 4;
+    if (memcmp(buf, magic, m) != 0)
+        return EF_FRAME_BAD;
+    if (n < EF_BOARD_HEADER)
+        return EF_FRAME_MORE;
+    const uint32_t len = ef_get32(buf + 12);
+    if (buf[6] != 0 || buf[7] != 0 || len > EF_BOARD_PAYLOAD_MAX)
+        return EF_FRAME_BAD;
+    const size_t total = EF_BOARD_HEADER + (size_t)len + EF_BOARD_TRAILER;
+    if (n < total)
+        return EF_FRAME_MORE;
+    if (ef_frame_crc32(0, buf, EF_BOARD_HEADER + (size_t)len) != ef_get32(buf + EF_BOARD_HEADER + len))
+        return EF_FRAME_BAD;
+    f->type = buf[4];
+    f->flags = buf[5];
+    f->seq = ef_get32(buf + 8);
+    f->len = len;
+    f->payload = buf + EF_BOARD_HEADER;
+    *used = total;
+    return EF_FRAME_OK;
+}
+
+size_t ef_frame_resync(const uint8_t *buf, size_t n)
+{
+    for (size_t i = 1; i < n; i++) {
+        const uint8_t *p = memchr(buf + i, 'E', n - i);
+        if (!p)
+            return n;
+        i = (size_t)(p - buf);
+        const size_t m = n - i < 4 ? n - i : 4;
+        if (memcmp(p, EF_BOARD_MAGIC, m) == 0)
+            return i;
+    }
+    return n;
+}

@@ -1,0 +1,690 @@
+/*
+ * host_link.c - edgeflag-host's side of the board protocol (docs/board.md
+ * sections 3 and 4), the same for every transport.
+ *
+ * Sending: frame 0 is START, frames 1..n carry the commands (frame_cmds of
+ * them each, the last one fewer), frame n+1 is END.  At most `window` frames
+ * are unacknowledged; a NAK rewinds to the frame it names, and a timeout with
+ * no progress rewinds to the oldest unacknowledged frame (go-back-N), so every
+ * frame reaches the board exactly once however many copies are sent.
+ *
+ * Receiving: RESULT frames are appended to RESULTS/.results.part strictly in
+ * sequence; a gap or damage asks the board to resend (ACKR with RESEND).  The
+ * state needed to resume (how many result frames and bytes are safely on
+ * disk, which vectors file, how the stream was cut) is written to
+ * RESULTS/.resume before each ACKR, so a result the board forgets has always
+ * reached the disk first.  At DONE the counts and CRCs both sides kept are
+ * compared and vectors.actual.bin is written whole (header from the records'
+ * own counts and CRC), or not at all.
+ */
+#include "host_link.h"
+
+#include <errno.h>
+#include <inttypes.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "atomic_file.h"
+#include "ef_frame.h"
+#include "ef_trace.h"
+#include "ef_vec.h"
+#include "ef_vec_read.h"
+
+#define MAX_TRIES 4             /* timeouts in a row before giving up */
+#define ACKR_EVERY 4            /* result frames between two ACKRs */
+
+typedef struct hl {
+    const ef_transport_ops *ops;
+    ef_link *l;
+    const ef_host_stream_opts *o;
+    ef_host_stream_report *rep;
+
+    /* what goes out */
+    uint8_t *cmds;              /* packed 13-byte commands */
+    uint64_t ncmds;
+    uint32_t per_frame, last_seq;  /* last_seq = END */
+    uint32_t base, next, window;
+    uint32_t input_crc;
+    uint8_t *fbuf;
+    uint32_t start_payload_mask;
+    int samples;
+
+    /* what comes back */
+    uint8_t *rbuf;
+    size_t rlen, rcap;
+    uint32_t res_next;
+    int resend_asked, unacked;
+    FILE *part;
+    uint64_t part_bytes, records, counts[EF_IF_COUNT];
+    uint32_t results_crc;
+    int done;
+    uint8_t done_payload[EF_BOARD_DONE_LEN];
+
+    char dir[4096], part_path[4200], state_path[4200];
+    uint32_t vec_crc;           /* identifies the vectors file for --resume */
+    uint64_t vec_size;
+    ef_vec_info info;
+} hl;
+
+static double now_s(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
+}
+
+static int hx_of(int err)
+{
+    switch (err) {
+    case EF_HOST_ENODEV:
+    case EF_HOST_ETIMEDOUT:
+        return EF_HX_LOST;
+    case EF_HOST_EACCESS:
+        return EF_HX_ACCESS;
+    case EF_HOST_ENOTFOUND:
+    case EF_HOST_EAMBIGUOUS:
+        return EF_HX_NOBOARD;
+    case EF_HOST_ENOMEM:
+        return EF_HX_INTERNAL;
+    default:
+        return EF_HX_BOARD;
+    }
+}
+
+/* ------------------------------------------------------------- identify */
+int ef_host_ident_parse(const uint8_t r[EF_BOARD_IDENTIFY_LEN], ef_host_ident *id)
+{
+    if (memcmp(r, EF_BOARD_MAGIC, 4) != 0)
+        return EF_HOST_EPROTO;
+    id->protocol = r[4] | (unsigned)r[5] << 8;
+    id->window = r[6] | (unsigned)r[7] << 8;
+    id->caps = ef_get32(r + 8);
+    id->iface_mask = ef_get32(r + 12);
+    id->samples_mask = ef_get32(r + 16);
+    id->width_max = ef_get32(r + 20);
+    id->height_max = ef_get32(r + 24);
+    id->edges_max = ef_get32(r + 28);
+    memcpy(id->serial, r + 32, 16);
+    id->serial[16] = 0;
+    for (char *p = id->serial; *p; p++)
+        if (*p < 0x20 || *p > 0x7e)
+            *p = '?';
+    return id->protocol == EF_BOARD_PROTOCOL ? 0 : EF_HOST_EPROTO;
+}
+
+void ef_host_ident_describe(const ef_host_ident *id, char *buf, size_t size)
+{
+    char s[32] = "";
+    size_t k = 0;
+    for (unsigned n = 8; n <= 32; n *= 2)
+        if (id->samples_mask >> ef_board_samples_bit(n) & 1u)
+            k += (size_t)snprintf(s + k, sizeof s - k, "%s%u", k ? "/" : "", n);
+    snprintf(buf, size, "serial %s, protocol %u, samples %s, canvas up to %" PRIu32 "x%" PRIu32 ", %" PRIu32
+             " edges, window %u",
+             id->serial[0] ? id->serial : "(none)", id->protocol, k ? s : "none", id->width_max, id->height_max,
+             id->edges_max, id->window);
+}
+
+/* --------------------------------------------------------------- output */
+static int fail(hl *h, int code, const char *fmt, const char *detail)
+{
+    fprintf(stderr, "edgeflag-host: ");
+    fprintf(stderr, fmt, detail ? detail : "");
+    fputc('\n', stderr);
+    (void)h;
+    return code;
+}
+
+static int lost(hl *h, int err)
+{
+    fprintf(stderr,
+            "edgeflag-host: %s after %" PRIu32 " of %" PRIu32 " frames acknowledged and %" PRIu32
+            " result frames kept in %s; run the same command with --resume to continue\n",
+            err == EF_HOST_ENODEV ? "the board went away (unplugged?)" : "the board stopped answering",
+            h->base, h->last_seq + 1, h->res_next, h->dir);
+    return EF_HX_LOST;
+}
+
+/* The resume state, one "key value" per line.  Written to a temporary and
+ * renamed, so it is always whole. */
+static int save_state(hl *h)
+{
+    char tmp[4300];
+    snprintf(tmp, sizeof tmp, "%s.tmp", h->state_path);
+    FILE *f = fopen(tmp, "w");
+    if (!f)
+        return -1;
+    fprintf(f, "edgeflag-host resume 1\nvectors_size %" PRIu64 "\nvectors_crc %08" PRIx32
+               "\nper_frame %" PRIu32 "\nmask %" PRIu32 "\nres_next %" PRIu32 "\npart_bytes %" PRIu64
+               "\nrecords %" PRIu64 "\nresults_crc %08" PRIx32 "\ncounts",
+            h->vec_size, h->vec_crc, h->per_frame, h->start_payload_mask, h->res_next, h->part_bytes, h->records,
+            h->results_crc);
+    for (int i = 0; i < EF_IF_COUNT; i++)
+        fprintf(f, " %" PRIu64, h->counts[i]);
+    fputc('\n', f);
+    const int bad = ferror(f) | (fclose(f) != 0);
+    if (bad || rename(tmp, h->state_path) != 0) {
+        unlink(tmp);
+        return -1;
+    }
+    return 0;
+}
+
+static int load_state(hl *h)
+{
+    FILE *f = fopen(h->state_path, "r");
+    if (!f)
+        return -1;
+    unsigned v = 0;
+    uint32_t crc = 0, rcrc = 0;
+    uint64_t size = 0;
+    int ok = fscanf(f,
+                    "edgeflag-host resume %u vectors_size %" SCNu64 " vectors_crc %" SCNx32 " per_frame %" SCNu32
+                    " mask %" SCNu32 " res_next %" SCNu32 " part_bytes %" SCNu64 " records %" SCNu64
+                    " results_crc %" SCNx32 " counts",
+                    &v, &size, &crc, &h->per_frame, &h->start_payload_mask, &h->res_next, &h->part_bytes,
+                    &h->records, &rcrc) == 9;
+    for (int i = 0; ok && i < EF_IF_COUNT; i++)
+        ok = fscanf(f, "%" SCNu64, &h->counts[i]) == 1;
+    fclose(f);
+    if (!ok || v != 1 || size != h->vec_size || crc != h->vec_crc)
+        return -2;
+    h->results_crc = rcrc;
+    return 0;
+}
+
+/* ---------------------------------------------------------------- frames */
+static int put_frame(hl *h, uint32_t seq)
+{
+    size_t n;
+    if (seq == 0) {
+        uint8_t p[EF_BOARD_START_LEN];
+        ef_put32(p, h->start_payload_mask);
+        ef_put32(p + 4, (uint32_t)h->samples);
+        ef_put32(p + 8, EF_MODE_DUT);
+        ef_put32(p + 12, 0);
+        ef_put64(p + 16, h->ncmds);
+        n = ef_frame_put(h->fbuf, EF_FT_START, 0, 0, p, sizeof p);
+    } else if (seq == h->last_seq) {
+        n = ef_frame_put(h->fbuf, EF_FT_END, 0, seq, NULL, 0);
+    } else {
+        const uint64_t first = (uint64_t)(seq - 1) * h->per_frame;
+        const uint64_t k = h->ncmds - first < h->per_frame ? h->ncmds - first : h->per_frame;
+        n = ef_frame_put(h->fbuf, EF_FT_DATA, 0, seq, h->cmds + first * EF_BOARD_CMD_BYTES,
+                         (uint32_t)(k * EF_BOARD_CMD_BYTES));
+    }
+    h->rep->frames_sent++;
+    return h->ops->write(h->l, h->fbuf, n, h->o->timeout_ms);
+}
+
+static int send_ackr(hl *h, int resend)
+{
+    if (h->part && fflush(h->part) != 0)
+        return fail(h, EF_HX_OUTPUT, "cannot write the results: %s", strerror(errno));
+    if (save_state(h) != 0)
+        return fail(h, EF_HX_OUTPUT, "cannot write the resume state: %s", strerror(errno));
+    uint8_t p[4], f[EF_BOARD_HEADER + 4 + EF_BOARD_TRAILER];
+    ef_put32(p, h->res_next);
+    const int r = h->ops->write(h->l, f, ef_frame_put(f, EF_FT_ACKR, resend ? EF_ACKR_RESEND : 0, 0, p, 4),
+                                h->o->timeout_ms);
+    h->unacked = 0;
+    if (resend)
+        h->resend_asked = 1;
+    return r < 0 ? -r + 1000 : 0;   /* transport errors come back as 1000 + -err */
+}
+
+/* Checks the records of a RESULT payload and counts them. */
+static int take_records(hl *h, const uint8_t *p, uint32_t n)
+{
+    uint32_t o = 0;
+    while (o < n) {
+        if (n - o < 10 || p[o] >= EF_IF_COUNT || !(h->start_payload_mask >> p[o] & 1u) ||
+            p[o + 1] != (ef_iface_get(p[o])->width + 7u) / 8u || n - o < 10u + p[o + 1]) {
+            return -1;
+        }
+        h->counts[p[o]]++;
+        h->records++;
+        o += 10u + p[o + 1];
+    }
+    return 0;
+}
+
+static void describe_error(const ef_frame *f, char *buf, size_t size)
+{
+    const uint32_t code = f->len >= 4 ? ef_get32(f->payload) : 0;
+    int n = f->len > 4 ? (int)(f->len - 4) : 0;
+    snprintf(buf, size, "code %" PRIu32 ": %.*s", code, n, (const char *)f->payload + 4);
+    for (char *c = buf; *c; c++)
+        if (*c < 0x20 || *c > 0x7e)
+            *c = '?';
+}
+
+/* One good frame from the board.  Returns 0, or an EF_HX_* code to stop. */
+static int take(hl *h, const ef_frame *f, int *progress)
+{
+    char why[300];
+    switch (f->type) {
+    case EF_FT_ACK: {
+        if (f->len < 12)
+            return fail(h, EF_HX_BOARD, "the board sent a malformed ACK%s", "");
+        const uint32_t next = ef_get32(f->payload), credits = ef_get32(f->payload + 4);
+        if (next > h->last_seq + 1)
+            return fail(h, EF_HX_BOARD, "the board acknowledged frames that were never sent%s", "");
+        if (next > h->base) {
+            h->base = next;
+            *progress = 1;
+        }
+        if (h->next < h->base)
+            h->next = h->base;
+        if (credits && credits < h->window)
+            h->window = credits;
+        return 0;
+    }
+    case EF_FT_NAK: {
+        if (f->len < 8)
+            return fail(h, EF_HX_BOARD, "the board sent a malformed NAK%s", "");
+        const uint32_t want = ef_get32(f->payload);
+        h->rep->naks++;
+        if (want < h->base)
+            return fail(h, EF_HX_BOARD,
+                        "the board asks again for frames it had acknowledged: it was reset or lost its state "
+                        "during the run; run again without --resume%s", "");
+        if (want < h->next) {
+            h->rep->retransmits += h->next - want;
+            h->next = want;                    /* go back */
+        }
+        return 0;
+    }
+    case EF_FT_RESULT:
+    case EF_FT_DONE:
+    case EF_FT_ERROR:
+        if (f->seq < h->res_next)
+            return 0;                          /* a copy of one already kept */
+        if (f->seq > h->res_next) {            /* one was lost: ask again, once */
+            if (!h->resend_asked) {
+                const int r = send_ackr(h, 1);
+                if (r >= 1000)
+                    return hx_of(-(r - 1000)) == EF_HX_LOST ? lost(h, -(r - 1000)) : EF_HX_BOARD;
+                if (r)
+                    return r;
+            }
+            return 0;
+        }
+        h->resend_asked = 0;
+        *progress = 1;
+        if (f->type == EF_FT_ERROR) {
+            describe_error(f, why, sizeof why);
+            return fail(h, EF_HX_BOARD, "the board reports an error: %s", why);
+        }
+        h->res_next++;
+        h->unacked++;
+        if (f->type == EF_FT_DONE) {
+            if (f->len != EF_BOARD_DONE_LEN)
+                return fail(h, EF_HX_BOARD, "the board sent a malformed DONE%s", "");
+            memcpy(h->done_payload, f->payload, EF_BOARD_DONE_LEN);
+            h->done = 1;
+            return 0;
+        }
+        h->rep->result_frames++;
+        if (take_records(h, f->payload, f->len) != 0) {
+            snprintf(why, sizeof why, "result frame %" PRIu32 " holds a record that is not a vectors.bin record "
+                     "of an interface asked for", f->seq);
+            return fail(h, EF_HX_BOARD, "%s", why);
+        }
+        if (fwrite(f->payload, 1, f->len, h->part) != f->len)
+            return fail(h, EF_HX_OUTPUT, "cannot write the results: %s", strerror(errno));
+        h->part_bytes += f->len;
+        h->results_crc = ef_frame_crc32(h->results_crc, f->payload, f->len);
+        return 0;
+    default:
+        snprintf(why, sizeof why, "the board sent a frame of unknown type 0x%02x", f->type);
+        return fail(h, EF_HX_BOARD, "%s", why);
+    }
+}
+
+/* Parses what arrived; returns 0 or an EF_HX_* code. */
+static int take_bytes(hl *h, int *progress)
+{
+    size_t pos = 0;
+    int code = 0;
+    while (pos < h->rlen && !code) {
+        ef_frame f;
+        size_t used;
+        const int r = ef_frame_parse(h->rbuf + pos, h->rlen - pos, &f, &used);
+        if (r == EF_FRAME_MORE)
+            break;
+        if (r == EF_FRAME_BAD) {               /* damaged on the way: resync, the timeout recovers */
+            pos += ef_frame_resync(h->rbuf + pos, h->rlen - pos);
+            continue;
+        }
+        code = take(h, &f, progress);
+        pos += used;
+    }
+    memmove(h->rbuf, h->rbuf + pos, h->rlen - pos);
+    h->rlen -= pos;
+    return code;
+}
+
+static void draw_progress(hl *h, double t0, int final)
+{
+    static double last;
+    const double t = now_s();
+    if (!final && t - last < 0.2)
+        return;
+    last = t;
+    const double frac = h->last_seq ? (double)h->base / (h->last_seq + 1) : 1.0;
+    const double mb = (double)h->base * h->per_frame * EF_BOARD_CMD_BYTES / 1e6;
+    const double el = t - t0, rate = el > 0 ? mb / el : 0, eta = frac > 0 ? el / frac - el : 0;
+    char bar[31];
+    int k = (int)(frac * 30);
+    for (int i = 0; i < 30; i++)
+        bar[i] = i < k ? '#' : '.';
+    bar[30] = 0;
+    fprintf(stderr, "\r[%s] %3d%% %8.1f MB/s  ETA %5.1f s  results %" PRIu64 " records%s", bar, (int)(frac * 100),
+            rate, eta, h->records, final ? "\n" : "");
+}
+
+/* Writes RESULTS/vectors.actual.bin from the header and .results.part. */
+static int write_results(hl *h)
+{
+    char path[4200];
+    snprintf(path, sizeof path, "%s/vectors.actual.bin", h->dir);
+    ef_cli_atomic af;
+    if (ef_cli_atomic_open(&af, path) != 0)
+        return fail(h, EF_HX_OUTPUT, "cannot write vectors.actual.bin: %s", strerror(errno));
+    uint8_t hd[EF_VEC_BIN_HEADER];
+    ef_vec_info info = h->info;
+    info.mask = h->start_payload_mask;
+    ef_vec_bin_header_counts(hd, &info, h->counts, h->results_crc);
+    int bad = fwrite(hd, 1, sizeof hd, af.fp) != sizeof hd;
+    rewind(h->part);
+    uint8_t buf[65536];
+    size_t n;
+    uint64_t left = h->part_bytes;
+    while (!bad && left && (n = fread(buf, 1, left < sizeof buf ? left : sizeof buf, h->part)) > 0) {
+        bad = fwrite(buf, 1, n, af.fp) != n;
+        left -= n;
+    }
+    if (bad || left) {
+        ef_cli_atomic_abort(&af);
+        return fail(h, EF_HX_OUTPUT, "cannot write vectors.actual.bin: %s", strerror(errno));
+    }
+    if (ef_cli_atomic_commit(&af) != 0)
+        return fail(h, EF_HX_OUTPUT, "cannot write vectors.actual.bin: %s", strerror(errno));
+    return 0;
+}
+
+static int check_done(hl *h)
+{
+    const uint8_t *d = h->done_payload;
+    char why[200];
+    if (ef_get64(d + 16) != h->ncmds || ef_get32(d + 24) != h->input_crc) {
+        snprintf(why, sizeof why, "the board took %" PRIu64 " commands with CRC %08" PRIx32 ", %" PRIu64
+                 " with CRC %08" PRIx32 " were sent", ef_get64(d + 16), ef_get32(d + 24), h->ncmds, h->input_crc);
+        return fail(h, EF_HX_BOARD, "input differs: %s", why);
+    }
+    if (ef_get64(d) != h->records || ef_get64(d + 8) != h->part_bytes || ef_get32(d + 28) != h->results_crc) {
+        snprintf(why, sizeof why, "the board sent %" PRIu64 " records (%" PRIu64 " bytes, CRC %08" PRIx32
+                 "), %" PRIu64 " (%" PRIu64 " bytes, CRC %08" PRIx32 ") arrived", ef_get64(d), ef_get64(d + 8),
+                 ef_get32(d + 28), h->records, h->part_bytes, h->results_crc);
+        return fail(h, EF_HX_BOARD, "results differ: %s", why);
+    }
+    return 0;
+}
+
+/* ------------------------------------------------------------ the stream */
+static int load_vectors(hl *h)
+{
+    const char *path = h->o->vectors;
+    struct stat sb;
+    if (stat(path, &sb) != 0) {
+        fprintf(stderr, "edgeflag-host: %s: %s\n", path, strerror(errno));
+        return EF_HX_INPUT;
+    }
+    const size_t L = strlen(path);
+    if (L < 4 || strcmp(path + L - 4, ".bin") != 0) {
+        fprintf(stderr, "edgeflag-host: %s: not a binary vector stream (vectors.bin, docs/vectors.md section 4)\n",
+                path);
+        return EF_HX_INPUT;
+    }
+    ef_vec_dump d;
+    ef_vec_read_error err;
+    memset(&d, 0, sizeof d);
+    if (ef_vec_read_path(path, NULL, -1, -1, &d, &err) != EF_OK) {
+        char buf[900];
+        ef_vec_read_error_format(&err, buf, sizeof buf);
+        fprintf(stderr, "edgeflag-host: %s\n", buf);
+        ef_vec_dump_free(&d);
+        return err.status == EF_ERR_NOMEM ? EF_HX_INTERNAL : EF_HX_INPUT;
+    }
+    if (!(d.mask & 1u << EF_IF_CMD) || d.seq[EF_IF_CMD].n == 0) {
+        fprintf(stderr, "edgeflag-host: %s: records no cmd transactions: nothing to send (write it with "
+                        "edgeflag vectors, whose default records every interface)\n", path);
+        ef_vec_dump_free(&d);
+        return EF_HX_INPUT;
+    }
+    const ef_vec_seq *s = &d.seq[EF_IF_CMD];
+    h->ncmds = s->n;
+    h->cmds = malloc(s->n * EF_BOARD_CMD_BYTES);
+    if (!h->cmds) {
+        ef_vec_dump_free(&d);
+        return fail(h, EF_HX_INTERNAL, "out of memory%s", "");
+    }
+    for (size_t k = 0; k < s->n; k++) {
+        uint8_t *c = h->cmds + k * EF_BOARD_CMD_BYTES;
+        const uint64_t w0 = s->pay[k * s->nw], w1 = s->pay[k * s->nw + 1];
+        for (int i = 0; i < 8; i++)
+            c[i] = (uint8_t)(w0 >> (8 * i));
+        for (int i = 0; i < 5; i++)
+            c[8 + i] = (uint8_t)(w1 >> (8 * i));
+    }
+    h->input_crc = ef_frame_crc32(0, h->cmds, s->n * EF_BOARD_CMD_BYTES);
+    h->vec_size = (uint64_t)sb.st_size;
+    h->vec_crc = h->input_crc;
+    memset(&h->info, 0, sizeof h->info);
+    h->info.width = d.width;
+    h->info.height = d.height;
+    h->info.samples = d.samples;
+    h->info.rule = d.rule == 0 ? EF_RULE_NONZERO : d.rule == 1 ? EF_RULE_EVENODD : -1;
+    h->info.seed = d.seed;
+    h->samples = d.samples;
+    h->rep->samples = d.samples;
+    h->rep->width = d.width;
+    h->rep->height = d.height;
+    ef_vec_dump_free(&d);
+    return 0;
+}
+
+static int prepare_dir(hl *h)
+{
+    snprintf(h->dir, sizeof h->dir, "%s", h->o->results);
+    if (ef_cli_make_dirs(h->dir) != 0) {
+        fprintf(stderr, "edgeflag-host: %s: cannot create the results folder: %s\n", h->dir, strerror(errno));
+        return EF_HX_OUTPUT;
+    }
+    snprintf(h->part_path, sizeof h->part_path, "%s/.results.part", h->dir);
+    snprintf(h->state_path, sizeof h->state_path, "%s/.resume", h->dir);
+    return 0;
+}
+
+static int run(hl *h)
+{
+    const ef_host_stream_opts *o = h->o;
+    int code = load_vectors(h);
+    if (code)
+        return code;
+    if ((code = prepare_dir(h)) != 0)
+        return code;
+
+    uint8_t raw[EF_BOARD_IDENTIFY_LEN];
+    int r = h->ops->identify(h->l, raw);
+    ef_host_ident id;
+    if (r < 0)
+        return r == EF_HOST_ENODEV || r == EF_HOST_ETIMEDOUT ? lost(h, r)
+                                                               : fail(h, hx_of(r), "identify failed: %s",
+                                                                      ef_host_strerror(r));
+    if ((r = ef_host_ident_parse(raw, &id)) != 0) {
+        if (memcmp(raw, EF_BOARD_MAGIC, 4) == 0) {
+            char b[64];
+            snprintf(b, sizeof b, "%u", id.protocol);
+            return fail(h, EF_HX_BOARD, "the board speaks protocol version %s; this edgeflag-host speaks 1", b);
+        }
+        return fail(h, EF_HX_BOARD, "the device did not answer identify as an edgeflag board (no \"EFB1\")%s", "");
+    }
+    if (!(id.samples_mask >> ef_board_samples_bit((unsigned)h->samples) & 1u) || (uint32_t)h->info.width > id.width_max ||
+        (uint32_t)h->info.height > id.height_max) {
+        char b[300], d[200];
+        ef_host_ident_describe(&id, d, sizeof d);
+        snprintf(b, sizeof b, "%s: %d samples at %" PRId32 "x%" PRId32 " does not fit this board (%s)", o->vectors,
+                 h->samples, h->info.width, h->info.height, d);
+        return fail(h, EF_HX_INPUT, "%s", b);
+    }
+    h->window = id.window ? id.window : 1;
+    if (o->iface_mask & ~id.iface_mask)
+        return fail(h, EF_HX_BOARD, "the board cannot return the internal interfaces asked for (it returns "
+                                    "only what identify lists); use --interfaces pix%s", "");
+
+    if (o->resume) {
+        const int s = load_state(h);
+        if (s != 0)
+            return fail(h, EF_HX_USAGE,
+                        s == -1 ? "--resume: no resume state in the results folder (nothing was interrupted)%s"
+                                : "--resume: the resume state belongs to another vectors file or is damaged%s",
+                        "");
+        uint8_t st[EF_BOARD_STATUS_LEN];
+        if ((r = h->ops->status(h->l, st)) < 0)
+            return r == EF_HOST_ENODEV || r == EF_HOST_ETIMEDOUT ? lost(h, r)
+                                                                   : fail(h, hx_of(r), "status failed: %s",
+                                                                          ef_host_strerror(r));
+        if (memcmp(st, EF_BOARD_MAGIC, 4) != 0)
+            return fail(h, EF_HX_BOARD, "the board's status answer is malformed%s", "");
+        const uint32_t rx_seq = ef_get32(st + 8), res_made = ef_get32(st + 12);
+        if (st[6] == EF_BS_IDLE || rx_seq == 0)
+            return fail(h, EF_HX_BOARD, "the board has no run to resume (it was reset or power-cycled); run "
+                                        "again without --resume%s", "");
+        uint64_t taken = (uint64_t)(rx_seq - 1) * h->per_frame;   /* commands in the DATA frames it took */
+        if (taken > h->ncmds)
+            taken = h->ncmds;
+        if (ef_get32(st + 20) != ef_frame_crc32(0, h->cmds, (size_t)taken * EF_BOARD_CMD_BYTES))
+            return fail(h, EF_HX_BOARD, "the board's run is not this vectors file (its input CRC differs); run "
+                                        "again without --resume%s", "");
+        if (res_made < h->res_next)
+            return fail(h, EF_HX_BOARD, "the board made fewer result frames than were kept: not the same run%s",
+                        "");
+        h->last_seq = (uint32_t)((h->ncmds + h->per_frame - 1) / h->per_frame) + 1;
+        h->base = h->next = rx_seq;
+        h->rep->resumed_from = rx_seq;
+        h->part = fopen(h->part_path, "r+b");
+        if (!h->part || ftruncate(fileno(h->part), (off_t)h->part_bytes) != 0 ||
+            fseeko(h->part, (off_t)h->part_bytes, SEEK_SET) != 0)
+            return fail(h, EF_HX_OUTPUT, "--resume: cannot reopen the kept results: %s", strerror(errno));
+        if ((r = send_ackr(h, 1)) != 0)
+            return r >= 1000 ? lost(h, -(r - 1000)) : r;
+    } else {
+        unsigned per = o->frame_cmds ? o->frame_cmds : EF_BOARD_PAYLOAD_MAX / EF_BOARD_CMD_BYTES;
+        if (per > EF_BOARD_PAYLOAD_MAX / EF_BOARD_CMD_BYTES)
+            per = EF_BOARD_PAYLOAD_MAX / EF_BOARD_CMD_BYTES;
+        h->per_frame = per;
+        h->start_payload_mask = o->iface_mask ? o->iface_mask : 1u << EF_IF_PIX;
+        h->last_seq = (uint32_t)((h->ncmds + per - 1) / per) + 1;
+        if ((r = h->ops->reset(h->l)) < 0)
+            return r == EF_HOST_ENODEV || r == EF_HOST_ETIMEDOUT ? lost(h, r)
+                                                                   : fail(h, hx_of(r), "reset failed: %s",
+                                                                          ef_host_strerror(r));
+        h->part = fopen(h->part_path, "w+b");
+        if (!h->part)
+            return fail(h, EF_HX_OUTPUT, "cannot create the results: %s", strerror(errno));
+        if (save_state(h) != 0)
+            return fail(h, EF_HX_OUTPUT, "cannot write the resume state: %s", strerror(errno));
+    }
+
+    h->fbuf = malloc(EF_BOARD_FRAME_MAX);
+    h->rcap = 4 * EF_BOARD_FRAME_MAX;
+    h->rbuf = malloc(h->rcap);
+    if (!h->fbuf || !h->rbuf)
+        return fail(h, EF_HX_INTERNAL, "out of memory%s", "");
+
+    const int timeout = o->timeout_ms > 0 ? o->timeout_ms : 2000;
+    const double t0 = now_s();
+    double last_progress = t0;
+    int tries = 0;
+    while (!h->done) {
+        while (h->next <= h->last_seq && h->next - h->base < h->window) {
+            if ((r = put_frame(h, h->next)) < 0)
+                return hx_of(r) == EF_HX_LOST ? lost(h, r) : fail(h, hx_of(r), "sending failed: %s",
+                                                                   ef_host_strerror(r));
+            h->next++;
+        }
+        const int can_send = h->next <= h->last_seq && h->next - h->base < h->window;
+        size_t got = 0;
+        if (h->rlen == h->rcap)
+            h->rlen = 0;                       /* cannot happen with frames <= FRAME_MAX; be safe */
+        r = h->ops->read(h->l, h->rbuf + h->rlen, h->rcap - h->rlen, &got, can_send ? 0 : 10);
+        if (r < 0 && r != EF_HOST_ETIMEDOUT)
+            return hx_of(r) == EF_HX_LOST ? lost(h, r) : fail(h, hx_of(r), "receiving failed: %s",
+                                                               ef_host_strerror(r));
+        h->rlen += got;
+        int progress = 0;
+        if ((code = take_bytes(h, &progress)) != 0)
+            return code;
+        if (h->unacked >= ACKR_EVERY || (h->done && h->unacked)) {
+            if ((r = send_ackr(h, 0)) != 0)
+                return r >= 1000 ? lost(h, -(r - 1000)) : r;
+        }
+        const double t = now_s();
+        if (progress) {
+            last_progress = t;
+            tries = 0;
+        } else if ((t - last_progress) * 1000 >= timeout) {
+            h->rep->timeouts++;
+            if (++tries >= MAX_TRIES)
+                return lost(h, EF_HOST_ETIMEDOUT);
+            /* go back: resend every unacknowledged frame, ask for every result again */
+            h->rep->retransmits += h->next - h->base;
+            h->next = h->base;
+            if ((r = send_ackr(h, 1)) != 0)
+                return r >= 1000 ? lost(h, -(r - 1000)) : r;
+            last_progress = t;
+        }
+        if (o->progress)
+            draw_progress(h, t0, 0);
+    }
+    if (o->progress)
+        draw_progress(h, t0, 1);
+    h->rep->seconds = now_s() - t0;
+    h->rep->cmds = h->ncmds;
+    h->rep->records = h->records;
+    h->rep->result_bytes = h->part_bytes;
+    if ((code = check_done(h)) != 0)
+        return code;
+    if ((code = write_results(h)) != 0)
+        return code;
+    fclose(h->part);
+    h->part = NULL;
+    unlink(h->part_path);
+    unlink(h->state_path);
+    return EF_HX_OK;
+}
+
+int ef_host_stream(const ef_transport_ops *ops, ef_link *link, const ef_host_stream_opts *opts,
+                   ef_host_stream_report *rep)
+{
+    hl *h = calloc(1, sizeof *h);
+    if (!h) {
+        fprintf(stderr, "edgeflag-host: out of memory\n");
+        return EF_HX_INTERNAL;
+    }
+    memset(rep, 0, sizeof *rep);
+    h->ops = ops, h->l = link, h->o = opts, h->rep = rep;
+    const int code = run(h);
+    if (h->part)
+        fclose(h->part);
+    free(h->cmds);
+    free(h->fbuf);
+    free(h->rbuf);
+    free(h);
+    return code;
+}

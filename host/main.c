@@ -1,0 +1,460 @@
+/*
+ * main.c - `edgeflag-host`: drives an edgeflag board (docs/board.md section 7
+ * is its user documentation).  list / stream / verify / bench; everything
+ * protocol-shaped lives in host_link.c and bench_link.c, everything
+ * link-shaped in the transports.
+ */
+#include <getopt.h>
+#include <inttypes.h>
+#include <libgen.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "bench_link.h"
+#include "cli.h"
+#include "edgeflag.h"
+#include "ef_trace.h"
+#include "host_link.h"
+#include "transport.h"
+
+static const ef_transport_ops *const TRANSPORTS[] = { &ef_transport_usb, &ef_transport_gpio, &ef_transport_sim,
+                                                      &ef_transport_null };
+#define NTRANSPORTS (sizeof TRANSPORTS / sizeof TRANSPORTS[0])
+
+typedef struct args {
+    const char *cmd, *vectors, *transport, *results, *junit, *diff_image, *interfaces, *errors;
+    ef_host_opts link;
+    int resume, quiet, json, transactions;
+    unsigned frame_cmds;
+    uint64_t bench_bytes;
+} args;
+
+static void usage(FILE *f)
+{
+    fputs("usage: edgeflag-host list [--json] [--chip NAME] [--vid-pid VVVV:PPPP]\n"
+          "       edgeflag-host stream VECTORS.bin [LINK OPTIONS] [--results DIR] [--resume]\n"
+          "       edgeflag-host verify VECTORS.bin [LINK OPTIONS] [--results DIR] [--resume]\n"
+          "                     [--interfaces LIST] [--junit FILE] [--diff-image FILE.png] [--errors N]\n"
+          "                     [--transactions]\n"
+          "       edgeflag-host bench [LINK OPTIONS] [--mib N]\n"
+          "       edgeflag-host --version | --help\n"
+          "\n"
+          "Streams an edgeflag vectors.bin's command stream to a board (docs/board.md), collects\n"
+          "the board's results as vectors.actual.bin and (verify) checks them as `edgeflag check`.\n"
+          "\n"
+          "link options:\n"
+          "  --transport T        usb, gpio, sim, null or auto (default auto: the one board present;\n"
+          "                       none or several is an error, never the simulated board)\n"
+          "  --device SEL         usb: SERIAL, BUS:DEV or #INDEX (as `list` prints)\n"
+          "  --vid-pid V:P        usb: vendor and product id in hex (default 1209:0001)\n"
+          "  --transfer-size N    usb: bytes per bulk transfer     --in-flight N  transfers in flight\n"
+          "  --chip NAME          gpio: chip (gpiochip0 or /dev/gpiochip0)\n"
+          "  --lines MAP          gpio: line map, docs/board-gpio.md\n"
+          "  --timeout MS         no progress for MS ms: retransmit; 4 times: give up (default 2000)\n"
+          "  --sim-state DIR      sim: keep the simulated board's state in DIR (it outlives the process)\n"
+          "  --sim-faults LIST    sim: play faults, KIND=N,... (docs/board.md section 6)\n"
+          "other options:\n"
+          "  --results DIR        where results and resume state go (default: VECTORS.bin's folder/board)\n"
+          "  --resume             continue an interrupted run from its last acknowledged frame\n"
+          "  --frame-cmds N       commands per DATA frame (default 5041, 65533 bytes)\n"
+          "  --interfaces LIST    verify: interfaces to ask back and check (must include pix;\n"
+          "                       default pix and every internal one the file and the board have)\n"
+          "  --junit FILE, --diff-image FILE.png, --errors N, --transactions: as edgeflag check\n"
+          "  --mib N              bench: MiB per throughput test (default 64)\n"
+          "  --quiet              no progress bar and no summary     --json  summary as JSON on stdout\n"
+          "\n"
+          "exit codes: 0 ok, 1 verify found mismatches, 2 usage, 3 bad vectors file, 4 results not\n"
+          "written, 5 link lost (unplugged or not answering: --resume continues), 6 board error or\n"
+          "protocol violation, 7 no board or several, 8 permission denied, 70 internal error.\n",
+          f);
+}
+
+static int usage_error(const char *fmt, const char *what)
+{
+    fputs("edgeflag-host: ", stderr);
+    fprintf(stderr, fmt, what);
+    fputs("\n(edgeflag-host --help shows the usage)\n", stderr);
+    return EF_HX_USAGE;
+}
+
+static const ef_transport_ops *find_transport(const char *name)
+{
+    for (size_t i = 0; i < NTRANSPORTS; i++)
+        if (strcmp(TRANSPORTS[i]->name, name) == 0)
+            return TRANSPORTS[i];
+    return NULL;
+}
+
+static int parse_uint(const char *s, unsigned long long max, unsigned long long *v)
+{
+    char *end;
+    if (!s || !*s || *s == '-' || *s == '+')
+        return -1;
+    *v = strtoull(s, &end, 10);
+    return *end || *v > max ? -1 : 0;
+}
+
+static int parse(int argc, char **argv, args *a)
+{
+    enum { O_TRANSPORT = 256, O_DEVICE, O_VIDPID, O_TSIZE, O_INFLIGHT, O_CHIP, O_LINES, O_TIMEOUT, O_SIMSTATE,
+           O_SIMFAULTS, O_RESULTS, O_RESUME, O_FRAMECMDS, O_IFACES, O_JUNIT, O_DIFF, O_ERRORS, O_TRANS, O_MIB,
+           O_QUIET, O_JSON, O_HELP };
+    static const struct option opts[] = {
+        { "transport", required_argument, 0, O_TRANSPORT }, { "device", required_argument, 0, O_DEVICE },
+        { "vid-pid", required_argument, 0, O_VIDPID },      { "transfer-size", required_argument, 0, O_TSIZE },
+        { "in-flight", required_argument, 0, O_INFLIGHT },  { "chip", required_argument, 0, O_CHIP },
+        { "lines", required_argument, 0, O_LINES },         { "timeout", required_argument, 0, O_TIMEOUT },
+        { "sim-state", required_argument, 0, O_SIMSTATE },  { "sim-faults", required_argument, 0, O_SIMFAULTS },
+        { "results", required_argument, 0, O_RESULTS },     { "resume", no_argument, 0, O_RESUME },
+        { "frame-cmds", required_argument, 0, O_FRAMECMDS }, { "interfaces", required_argument, 0, O_IFACES },
+        { "junit", required_argument, 0, O_JUNIT },         { "diff-image", required_argument, 0, O_DIFF },
+        { "errors", required_argument, 0, O_ERRORS },       { "transactions", no_argument, 0, O_TRANS },
+        { "mib", required_argument, 0, O_MIB },             { "quiet", no_argument, 0, O_QUIET },
+        { "json", no_argument, 0, O_JSON },                 { "help", no_argument, 0, O_HELP },
+        { 0, 0, 0, 0 }
+    };
+    unsigned long long v;
+    opterr = 0;
+    optind = 1;
+    int c;
+    while ((c = getopt_long(argc, argv, ":h", opts, NULL)) != -1) {
+        switch (c) {
+        case O_TRANSPORT:
+            if (strcmp(optarg, "auto") != 0 && !find_transport(optarg))
+                return usage_error("--transport must be usb, gpio, sim, null or auto, not '%s'", optarg);
+            a->transport = optarg;
+            break;
+        case O_DEVICE: a->link.device = optarg; break;
+        case O_VIDPID: {
+            unsigned vid, pid;
+            char extra;
+            if (sscanf(optarg, "%4x:%4x%c", &vid, &pid, &extra) != 2)
+                return usage_error("--vid-pid must be VVVV:PPPP in hex, not '%s'", optarg);
+            a->link.vid = (uint16_t)vid, a->link.pid = (uint16_t)pid;
+            break;
+        }
+        case O_TSIZE:
+            if (parse_uint(optarg, 1u << 24, &v) || v < 512 || v % 512)
+                return usage_error("--transfer-size must be a multiple of 512 up to 16 MiB, not '%s'", optarg);
+            a->link.transfer_size = (unsigned)v;
+            break;
+        case O_INFLIGHT:
+            if (parse_uint(optarg, 256, &v) || v < 1)
+                return usage_error("--in-flight must be 1..256, not '%s'", optarg);
+            a->link.in_flight = (unsigned)v;
+            break;
+        case O_CHIP: a->link.chip = optarg; break;
+        case O_LINES: a->link.lines = optarg; break;
+        case O_TIMEOUT:
+            if (parse_uint(optarg, 3600000, &v) || v < 1)
+                return usage_error("--timeout must be 1..3600000 ms, not '%s'", optarg);
+            a->link.timeout_ms = (int)v;
+            break;
+        case O_SIMSTATE: a->link.sim_state = optarg; break;
+        case O_SIMFAULTS: a->link.sim_faults = optarg; break;
+        case O_RESULTS: a->results = optarg; break;
+        case O_RESUME: a->resume = 1; break;
+        case O_FRAMECMDS:
+            if (parse_uint(optarg, EF_BOARD_PAYLOAD_MAX / EF_BOARD_CMD_BYTES, &v) || v < 1)
+                return usage_error("--frame-cmds must be 1..5041, not '%s'", optarg);
+            a->frame_cmds = (unsigned)v;
+            break;
+        case O_IFACES: a->interfaces = optarg; break;
+        case O_JUNIT: a->junit = optarg; break;
+        case O_DIFF: a->diff_image = optarg; break;
+        case O_ERRORS: a->errors = optarg; break;
+        case O_TRANS: a->transactions = 1; break;
+        case O_MIB:
+            if (parse_uint(optarg, 65536, &v) || v < 1)
+                return usage_error("--mib must be 1..65536, not '%s'", optarg);
+            a->bench_bytes = v << 20;
+            break;
+        case O_QUIET: a->quiet = 1; break;
+        case O_JSON: a->json = 1; break;
+        case O_HELP:
+        case 'h':
+            usage(stdout);
+            exit(0);
+        case ':':
+            return usage_error("option %s needs a value", argv[optind - 1]);
+        default:
+            return usage_error("unknown option '%s'", argv[optind - 1]);
+        }
+    }
+    for (int i = optind; i < argc; i++) {
+        if (a->vectors)
+            return usage_error("one vectors file only ('%s' is one too many)", argv[i]);
+        a->vectors = argv[i];
+    }
+    return 0;
+}
+
+/* Opens the named transport, or for auto the one board present. */
+static int open_link(const args *a, const ef_transport_ops **ops, ef_link **l)
+{
+    char err[512] = "";
+    const char *name = a->transport ? a->transport : "auto";
+    if (strcmp(name, "auto") == 0) {
+        ef_found found[16];
+        int total = 0;
+        const ef_transport_ops *which = NULL;
+        for (size_t i = 0; i < 2; i++) {      /* usb and gpio: real boards only */
+            if (i == 1 && !a->link.chip)
+                continue;                      /* a GPIO bus cannot be told from other GPIO use by looking */
+            const int n = TRANSPORTS[i]->probe(&a->link, found + total, 16 - total);
+            if (n < 0 && n != EF_HOST_EUNSUPPORTED && n != EF_HOST_ENOTFOUND) {
+                fprintf(stderr, "edgeflag-host: looking for %s boards: %s\n", TRANSPORTS[i]->name,
+                        ef_host_strerror(n));
+                return n == EF_HOST_EACCESS ? EF_HX_ACCESS : EF_HX_NOBOARD;
+            }
+            for (int k = 0; k < n && total < 16; k++)
+                if (found[total].ok)
+                    which = TRANSPORTS[i], total++;
+        }
+        if (total != 1) {
+            fprintf(stderr, "edgeflag-host: --transport auto: %s\n",
+                    total ? "several boards answer; choose one with --transport and --device (edgeflag-host list)"
+                          : "no board found (no USB device answers identify; GPIO needs --chip and --lines); "
+                            "use --transport sim for the simulated board");
+            return EF_HX_NOBOARD;
+        }
+        *ops = which;
+    } else {
+        *ops = find_transport(name);
+    }
+    const int r = (*ops)->open(l, &a->link, err, sizeof err);
+    if (r < 0) {
+        fprintf(stderr, "edgeflag-host: %s: %s%s%s\n", (*ops)->name, ef_host_strerror(r), err[0] ? ": " : "", err);
+        switch (r) {
+        case EF_HOST_EINVAL: return EF_HX_USAGE;
+        case EF_HOST_EACCESS: return EF_HX_ACCESS;
+        case EF_HOST_ENOTFOUND: case EF_HOST_EAMBIGUOUS: case EF_HOST_EUNSUPPORTED: return EF_HX_NOBOARD;
+        case EF_HOST_ENODEV: return EF_HX_LOST;
+        case EF_HOST_ENOMEM: return EF_HX_INTERNAL;
+        default: return EF_HX_BOARD;
+        }
+    }
+    return 0;
+}
+
+static int cmd_list(const args *a)
+{
+    ef_found found[32];
+    int total = 0;
+    if (a->json)
+        fputs("{\"boards\": [", stdout);
+    for (size_t i = 0; i < 2; i++) {
+        const int n = TRANSPORTS[i]->probe(&a->link, found, 32);
+        if (n == EF_HOST_EUNSUPPORTED) {
+            if (!a->json)
+                printf("%s: %s\n", TRANSPORTS[i]->name, TRANSPORTS[i]->version());
+            continue;
+        }
+        if (n < 0) {
+            fprintf(stderr, "edgeflag-host: list: %s: %s\n", TRANSPORTS[i]->name, ef_host_strerror(n));
+            continue;
+        }
+        for (int k = 0; k < n && k < 32; k++, total++) {
+            if (a->json)
+                printf("%s{\"transport\": \"%s\", \"where\": \"%s\", \"ours\": %s, \"description\": \"%s\"}",
+                       total ? ", " : "", found[k].transport, found[k].where, found[k].ok ? "true" : "false",
+                       found[k].desc);
+            else
+                printf("%-5s %-14s %s%s\n", found[k].transport, found[k].where, found[k].ok ? "" : "(not ours) ",
+                       found[k].desc);
+        }
+    }
+    if (a->json)
+        printf("], \"count\": %d}\n", total);
+    else if (total == 0)
+        puts("no board found");
+    return EF_HX_OK;
+}
+
+static uint32_t parse_ifaces(const char *list, int *bad)
+{
+    uint32_t m = 0;
+    char buf[256];
+    snprintf(buf, sizeof buf, "%s", list);
+    for (char *save, *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
+        const int i = ef_iface_find(t);
+        if (i < 0)
+            *bad = 1;
+        else
+            m |= 1u << i;
+    }
+    return m;
+}
+
+static void mask_names(uint32_t m, char *buf, size_t size)
+{
+    size_t k = 0;
+    buf[0] = 0;
+    for (int i = 0; i < EF_IF_COUNT; i++)
+        if (m >> i & 1u)
+            k += (size_t)snprintf(buf + k, size - k, "%s%s", k ? "," : "", ef_iface_get(i)->name);
+}
+
+static uint32_t file_mask(const char *path)
+{
+    uint8_t h[36];
+    FILE *f = fopen(path, "rb");
+    uint32_t m = 0;
+    if (f && fread(h, 1, sizeof h, f) == sizeof h)
+        m = (uint32_t)h[32] | (uint32_t)h[33] << 8 | (uint32_t)h[34] << 16 | (uint32_t)h[35] << 24;
+    if (f)
+        fclose(f);
+    return m;
+}
+
+static int cmd_stream(args *a, int verify)
+{
+    if (!a->vectors)
+        return usage_error("%s needs a VECTORS.bin", a->cmd);
+    char results[4096];
+    if (a->results) {
+        snprintf(results, sizeof results, "%s", a->results);
+    } else {
+        char tmp[4096];
+        snprintf(tmp, sizeof tmp, "%s", a->vectors);
+        snprintf(results, sizeof results, "%s/board", dirname(tmp));
+    }
+    uint32_t mask = 1u << EF_IF_PIX;
+    if (a->interfaces) {
+        int bad = 0;
+        mask = parse_ifaces(a->interfaces, &bad);
+        if (bad || !(mask >> EF_IF_PIX & 1u))
+            return usage_error("--interfaces must be a comma-separated list of interfaces including pix, not '%s'",
+                               a->interfaces);
+    }
+    const ef_transport_ops *ops;
+    ef_link *l;
+    int code = open_link(a, &ops, &l);
+    if (code)
+        return code;
+    if (verify && !a->interfaces) {          /* every interface both the file and the board have, but cmd */
+        uint8_t raw[EF_BOARD_IDENTIFY_LEN];
+        ef_host_ident id;
+        if (ops->identify(l, raw) == 0 && ef_host_ident_parse(raw, &id) == 0)
+            mask |= file_mask(a->vectors) & id.iface_mask & ~(1u << EF_IF_CMD);
+    }
+    ef_host_stream_opts so = { a->vectors, results, mask, a->resume, a->frame_cmds, a->link.timeout_ms,
+                               !a->quiet && isatty(2), a->quiet };
+    ef_host_stream_report rep;
+    code = ef_host_stream(ops, l, &so, &rep);
+    ops->close(l);
+    char names[128];
+    mask_names(mask, names, sizeof names);
+    if (code == EF_HX_OK && !a->quiet && !a->json)
+        fprintf(stderr,
+                "edgeflag-host: %s: %" PRIu64 " commands in %" PRIu64 " frames (%" PRIu64 " sent again) to the %s "
+                "board in %.3f s; %" PRIu64 " result records (%s) in %s/vectors.actual.bin\n",
+                a->vectors, rep.cmds, rep.frames_sent - rep.retransmits, rep.retransmits, ops->name, rep.seconds,
+                rep.records, names, results);
+    int check = -1;
+    if (code == EF_HX_OK && verify) {
+        char actual[4200];
+        snprintf(actual, sizeof actual, "%s/vectors.actual.bin", results);
+        char *cv[16];
+        int n = 0;
+        cv[n++] = "check";
+        cv[n++] = (char *)a->vectors;
+        cv[n++] = actual;
+        cv[n++] = "--interfaces";
+        cv[n++] = names;
+        if (a->junit)
+            cv[n++] = "--junit", cv[n++] = (char *)a->junit;
+        if (a->diff_image)
+            cv[n++] = "--diff-image", cv[n++] = (char *)a->diff_image;
+        if (a->errors)
+            cv[n++] = "--errors", cv[n++] = (char *)a->errors;
+        if (a->transactions)
+            cv[n++] = "--transactions";
+        cv[n] = NULL;
+        fflush(stdout);
+        check = ef_cli_check(n, cv);
+        code = check == 0 ? EF_HX_OK : check == 1 ? EF_HX_MISMATCH : check == 4 ? EF_HX_OUTPUT : EF_HX_INTERNAL;
+    }
+    if (a->json)
+        printf("{\"command\": \"%s\", \"transport\": \"%s\", \"exit\": %d, \"vectors\": \"%s\", \"results\": \"%s\", "
+               "\"interfaces\": \"%s\", \"commands\": %" PRIu64 ", \"frames_sent\": %" PRIu64 ", \"retransmits\": %"
+               PRIu64 ", \"naks\": %" PRIu64 ", \"timeouts\": %" PRIu64 ", \"resumed_from_frame\": %" PRIu64
+               ", \"result_records\": %" PRIu64 ", \"result_bytes\": %" PRIu64 ", \"seconds\": %.6f, "
+               "\"check\": %s}\n",
+               a->cmd, ops->name, code, a->vectors, results, names, rep.cmds, rep.frames_sent, rep.retransmits,
+               rep.naks, rep.timeouts, rep.resumed_from, rep.records, rep.result_bytes, rep.seconds,
+               check < 0 ? "null" : check == 0 ? "\"pass\"" : "\"fail\"");
+    return code;
+}
+
+static int cmd_bench(args *a)
+{
+    const ef_transport_ops *ops;
+    ef_link *l;
+    int code = open_link(a, &ops, &l);
+    if (code)
+        return code;
+    ef_bench_result r[4];
+    const int e = ef_bench_link(ops, l, a->bench_bytes ? a->bench_bytes : 64u << 20, a->link.timeout_ms, r);
+    ops->close(l);
+    if (e < 0) {
+        fprintf(stderr, "edgeflag-host: bench over %s: %s\n", ops->name, ef_host_strerror(e));
+        return e == EF_HOST_ENODEV || e == EF_HOST_ETIMEDOUT ? EF_HX_LOST : EF_HX_BOARD;
+    }
+    if (a->json)
+        printf("{\"transport\": \"%s\"", ops->name);
+    for (int i = 0; i < 4; i++) {
+        if (a->json) {
+            if (i < 3)
+                printf(", \"%s\": {\"ran\": %s, \"bytes\": %" PRIu64 ", \"seconds\": %.6f, \"mb_s\": %.1f}",
+                       r[i].name, r[i].ran ? "true" : "false", r[i].bytes, r[i].seconds, r[i].mb_s);
+            else
+                printf(", \"latency\": {\"usec_median\": %.1f, \"usec_min\": %.1f}}\n", r[i].usec_median,
+                       r[i].usec_min);
+        } else if (!r[i].ran) {
+            printf("%-8s %-9s n/a (%s)\n", ops->name, r[i].name, r[i].note);
+        } else if (i < 3) {
+            printf("%-8s %-9s %10.1f MB/s  (%" PRIu64 " bytes in %.3f s)\n", ops->name, r[i].name, r[i].mb_s,
+                   r[i].bytes, r[i].seconds);
+        } else {
+            printf("%-8s %-9s %10.1f us median, %.1f us min (%s)\n", ops->name, r[i].name, r[i].usec_median,
+                   r[i].usec_min, r[i].note);
+        }
+    }
+    return EF_HX_OK;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        usage(stderr);
+        return EF_HX_USAGE;
+    }
+    if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0 || strcmp(argv[1], "help") == 0) {
+        usage(stdout);
+        return EF_HX_OK;
+    }
+    if (strcmp(argv[1], "--version") == 0) {
+        printf("edgeflag-host %s (board protocol %d)\n", EF_VERSION_STRING, EF_BOARD_PROTOCOL);
+        for (size_t i = 0; i < NTRANSPORTS; i++)
+            printf("  %-5s %s\n", TRANSPORTS[i]->name, TRANSPORTS[i]->version());
+        return EF_HX_OK;
+    }
+    args a;
+    memset(&a, 0, sizeof a);
+    a.cmd = argv[1];
+    const int r = parse(argc - 1, argv + 1, &a);
+    if (r)
+        return r;
+    if (strcmp(a.cmd, "list") == 0)
+        return a.vectors ? usage_error("list takes no file ('%s')", a.vectors) : cmd_list(&a);
+    if (strcmp(a.cmd, "stream") == 0)
+        return cmd_stream(&a, 0);
+    if (strcmp(a.cmd, "verify") == 0)
+        return cmd_stream(&a, 1);
+    if (strcmp(a.cmd, "bench") == 0)
+        return a.vectors ? usage_error("bench takes no file ('%s')", a.vectors) : cmd_bench(&a);
+    return usage_error("unknown command '%s' (list, stream, verify, bench)", a.cmd);
+}

@@ -1,0 +1,33 @@
+# host/: edgeflag-host, the board protocol's host side, its transports and the
+# board engine (host/board/) that the simulated and emulated boards run.
+# docs/board.md.  USB and GPIO come from host/usb.mk and host/gpio.mk, which
+# build their transport when libusb-1.0 / libgpiod is installed and a table
+# saying "absent" otherwise; without those files both are absent.
+HOST_BOARD_SRC := $(wildcard host/board/*.c)
+HOST_SRC := host/main.c host/host_link.c host/bench_link.c host/transport.c host/transport_sim.c \
+            host/transport_null.c host/transport_absent.c
+HOST_CPPFLAGS := -Ihost -Ihost/board -Icli
+HOST_LIBS :=
+-include host/usb.mk
+-include host/gpio.mk
+ifeq ($(wildcard host/usb.mk),)
+HOST_CPPFLAGS += -DEF_ABSENT_USB
+endif
+ifeq ($(wildcard host/gpio.mk),)
+HOST_CPPFLAGS += -DEF_ABSENT_GPIO
+endif
+HOST_BOARD_OBJ := $(HOST_BOARD_SRC:%.c=$(BUILD)/%.o)
+HOST_OBJ := $(HOST_SRC:%.c=$(BUILD)/%.o) $(HOST_USB_OBJS) $(HOST_GPIO_OBJS)
+# the edgeflag CLI's objects but its main: verify runs `edgeflag check` in-process
+HOST_CLI_OBJ := $(filter-out $(BUILD)/cli/main.o,$(CLI_OBJ))
+EDGEFLAG_HOST := $(BUILD)/edgeflag-host
+
+$(BUILD)/host/%.o: host/%.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(HOST_CPPFLAGS) $(CFLAGS_ALL) -c $< -o $@
+
+.PHONY: host
+host: $(EDGEFLAG_HOST)
+$(EDGEFLAG_HOST): $(HOST_OBJ) $(HOST_BOARD_OBJ) $(HOST_CLI_OBJ) $(LIB_A)
+	$(CC) $(LDFLAGS_ALL) -o $@ $(HOST_OBJ) $(HOST_BOARD_OBJ) $(HOST_CLI_OBJ) $(LIB_A) $(HOST_LIBS) $(PNG_LIBS) \
+	    $(EXPAT_LIBS) $(VEC_LIBS)
