@@ -35,10 +35,10 @@
  * scheduling hiccup of a few ms, small enough for any board's FIFO. */
 #define USB_XFER_DEFAULT (64u * 1024u)
 #define USB_XFER_MIN 512u               /* one High-Speed packet */
-#define USB_XFER_MAX (4u * 1024u * 1024u)
+#define USB_XFER_MAX (16u * 1024u * 1024u)
 #define USB_INFLIGHT_DEFAULT 8u
 #define USB_INFLIGHT_MIN 1u             /* 1 is allowed for measuring; default >= 4 */
-#define USB_INFLIGHT_MAX 64u
+#define USB_INFLIGHT_MAX 256u
 #define USB_TIMEOUT_DEFAULT 2000        /* ms, every bulk transfer */
 #define USB_CTRL_TIMEOUT 1000           /* ms, every control transfer */
 #define USB_IDENTIFY_RETRY_MS 1500      /* re-enumeration after plug-in */
@@ -131,10 +131,10 @@ static const char *xfer_status_name(enum libusb_transfer_status s)
 static void access_msg(char *err, size_t errlen, const char *where, const char *sel)
 {
     snprintf(err, errlen,
-             "usb %s%s%s: permission denied opening the device; install the udev rule shipped as "
-             "host/60-edgeflag.rules (`make install` puts it in $(PREFIX)/lib/udev/rules.d; on a system: "
-             "/etc/udev/rules.d/60-edgeflag.rules), then run `udevadm control --reload && udevadm trigger` "
-             "as root and replug the board (docs/board-usb.md section 8)",
+             "device %s%s%s: install the udev rule shipped as "
+             "host/60-edgeflag.rules (`make install` puts a copy in PREFIX/lib/udev/rules.d) as "
+             "/etc/udev/rules.d/60-edgeflag.rules, then as root run "
+             "`udevadm control --reload && udevadm trigger` (docs/board-usb.md section 8)",
              where, sel && *sel ? " --device " : "", sel && *sel ? sel : "");
 }
 
@@ -394,7 +394,7 @@ static int parse_sel(const char *spec, usb_sel *s, char *err, size_t errlen)
         p = e + 1;
     }
 bad:
-    snprintf(err, errlen, "usb --device '%s': expected SERIAL (up to 16 characters), BUS:DEV (decimal, "
+    snprintf(err, errlen, "--device '%s': expected SERIAL (up to 16 characters), BUS:DEV (decimal, "
              "as `edgeflag-host list` prints), #INDEX, or several of them separated by commas", spec);
     return EF_HOST_EINVAL;
 }
@@ -722,12 +722,12 @@ static int usb_open(ef_link **out, const ef_host_opts *o, char *err, size_t errl
     unsigned xs = o && o->transfer_size ? o->transfer_size : USB_XFER_DEFAULT;
     unsigned nx = o && o->in_flight ? o->in_flight : USB_INFLIGHT_DEFAULT;
     if (xs < USB_XFER_MIN || xs > USB_XFER_MAX || xs % USB_XFER_MIN != 0) {
-        snprintf(err, errlen, "usb: transfer size %u: must be a multiple of 512 between %u and %u bytes", xs,
+        snprintf(err, errlen, "transfer size %u: must be a multiple of 512 between %u and %u bytes", xs,
                  USB_XFER_MIN, USB_XFER_MAX);
         return EF_HOST_EINVAL;
     }
     if (nx < USB_INFLIGHT_MIN || nx > USB_INFLIGHT_MAX) {
-        snprintf(err, errlen, "usb: transfers in flight %u: must be between %u and %u", nx, USB_INFLIGHT_MIN,
+        snprintf(err, errlen, "transfers in flight %u: must be between %u and %u", nx, USB_INFLIGHT_MIN,
                  USB_INFLIGHT_MAX);
         return EF_HOST_EINVAL;
     }
@@ -740,7 +740,7 @@ static int usb_open(ef_link **out, const ef_host_opts *o, char *err, size_t errl
     l->timeout_ms = o && o->timeout_ms > 0 ? o->timeout_ms : USB_TIMEOUT_DEFAULT;
     l->out_fill_idx = nx;
     if ((r = usb_init(&l->ctx)) != 0) {
-        snprintf(err, errlen, "usb: cannot initialise libusb: %s", ef_host_strerror(r));
+        snprintf(err, errlen, "cannot initialise libusb: %s", ef_host_strerror(r));
         free(l);
         return r;
     }
@@ -748,13 +748,13 @@ static int usb_open(ef_link **out, const ef_host_opts *o, char *err, size_t errl
     usb_cand *c;
     int n = cand_scan(l->ctx, o, &c);
     if (n < 0) {
-        snprintf(err, errlen, "usb%s: cannot list USB devices: %s", sel_echo, ef_host_strerror(n));
+        snprintf(err, errlen, "cannot list USB devices%s: %s", sel_echo, ef_host_strerror(n));
         usb_close(l);
         return n;
     }
     /* Identify every candidate: a selector may name a serial, and #INDEX
      * counts only boards that answer. */
-    int idx = 0, match = -1, nmatch = 0, denied = -1;
+    int idx = 0, match = -1, nmatch = 0, denied = -1, foreign = -1;
     char seen[200] = "";
     size_t sk = 0;
     for (int i = 0; i < n; i++) {
@@ -763,6 +763,9 @@ static int usb_open(ef_link **out, const ef_host_opts *o, char *err, size_t errl
         if (c[i].status == EF_HOST_EACCESS && denied < 0 &&
             (sel.bus < 0 || (sel.bus == c[i].bus && sel.addr == c[i].addr)))
             denied = i;
+        if (c[i].status == EF_HOST_EPROTO && foreign < 0 &&
+            (sel.bus < 0 || (sel.bus == c[i].bus && sel.addr == c[i].addr)))
+            foreign = i;
         if (c[i].status != 0)
             continue;
         if (sk < sizeof seen)
@@ -786,13 +789,18 @@ static int usb_open(ef_link **out, const ef_host_opts *o, char *err, size_t errl
             snprintf(where, sizeof where, "%u:%u", c[denied].bus, c[denied].addr);
             access_msg(err, errlen, where, spec);
             r = EF_HOST_EACCESS;
+        } else if (nmatch == 0 && foreign >= 0 && idx == 0) {
+            /* The device is there but is not (this version of) our board:
+             * say what it answered rather than "not found". */
+            snprintf(err, errlen, "device %u:%u%s: %s", c[foreign].bus, c[foreign].addr, sel_echo, c[foreign].desc);
+            r = EF_HOST_EPROTO;
         } else if (nmatch == 0) {
-            snprintf(err, errlen, "usb%s: no edgeflag board matches (VID:PID %04x:%04x; %s%s)", sel_echo, vid, pid,
-                     idx ? "boards found: " : "no board answered identify", seen);
+            snprintf(err, errlen, "no edgeflag board matches%s (VID:PID %04x:%04x; %s%s)", sel_echo, vid, pid,
+                     idx ? "boards found: " : n ? "no device answered identify" : "no such device", seen);
             r = EF_HOST_ENOTFOUND;
         } else {
-            snprintf(err, errlen, "usb%s: %d boards match (%s); choose one with --device SERIAL or BUS:DEV",
-                     sel_echo, nmatch, seen);
+            snprintf(err, errlen, "%d boards match%s (%s); choose one with --device SERIAL or BUS:DEV",
+                     nmatch, sel_echo, seen);
             r = EF_HOST_EAMBIGUOUS;
         }
         cand_free(c, n);
@@ -809,10 +817,10 @@ static int usb_open(ef_link **out, const ef_host_opts *o, char *err, size_t errl
         if (e == EF_HOST_EACCESS)
             access_msg(err, errlen, l->where, spec);
         else if (e == EF_HOST_EBUSY)
-            snprintf(err, errlen, "usb %s (serial %s)%s: interface %d is claimed by another program (close it, "
+            snprintf(err, errlen, "device %s (serial %s)%s: interface %d is claimed by another program (close it, "
                      "or check `lsof /dev/bus/usb/*/*`)", l->where, l->serial, sel_echo, EF_USB_INTERFACE);
         else
-            snprintf(err, errlen, "usb %s (serial %s)%s: cannot claim interface %d: %s", l->where, l->serial,
+            snprintf(err, errlen, "device %s (serial %s)%s: cannot claim interface %d: %s", l->where, l->serial,
                      sel_echo, EF_USB_INTERFACE, libusb_error_name(r));
         usb_close(l);
         return e;
@@ -822,7 +830,7 @@ static int usb_open(ef_link **out, const ef_host_opts *o, char *err, size_t errl
     l->ring = malloc(l->ring_cap);
     if (!l->ring || alloc_xfers(l, &l->out, EF_USB_EP_OUT, out_cb) ||
         alloc_xfers(l, &l->in, EF_USB_EP_IN, in_cb)) {
-        snprintf(err, errlen, "usb %s: out of memory for %u transfers of %u bytes", l->where, nx, xs);
+        snprintf(err, errlen, "device %s: out of memory for %u transfers of %u bytes", l->where, nx, xs);
         usb_close(l);
         return EF_HOST_ENOMEM;
     }

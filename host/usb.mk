@@ -18,21 +18,31 @@ HOST_USB_CFLAGS :=
 HOST_USB_LIBS   :=
 HOST_USB_OBJS   := $(BUILD)/host/transport_usb_none.o
 endif
-$(HOST_USB_OBJS): CPPFLAGS += -Ihost -Ihost/board -Irtl_vectors $(HOST_USB_CFLAGS)
+$(HOST_USB_OBJS): CPPFLAGS += $(HOST_USB_CFLAGS)
 
 # The emulated board (tests/host/usb_emu.c): umockdev (Debian libumockdev-dev)
-# in front of the real board engine and its DUT, the C model.
+# in front of the real board engine and its DUT, the C model.  The board's
+# objects are host/module.mk's (HOST_BOARD_OBJ), named here because this file
+# is read before that variable is set.
+HOST_LIBS    += $(HOST_USB_LIBS)
 USB_EMU      := $(BUILD)/tests/host/usb_emu
 USB_EMU_OBJ  := $(BUILD)/tests/host/usb_emu.o
-USB_EMU_BOARD_OBJ := $(BUILD)/host/board/ef_board.o $(BUILD)/host/board/ef_frame.o $(BUILD)/host/board/dut_model.o
+USB_EMU_BOARD_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(wildcard host/board/*.c))
 UMOCKDEV_CFLAGS = $(shell $(PKG_CONFIG) --cflags umockdev-1.0 2>/dev/null)
 UMOCKDEV_LIBS   = $(shell $(PKG_CONFIG) --libs umockdev-1.0 2>/dev/null || echo -lumockdev -lgobject-2.0 -lglib-2.0)
-# umockdev's and GLib's headers are not -Wstrict-prototypes clean.
-$(USB_EMU_OBJ): CPPFLAGS += -Ihost -Ihost/board -Irtl_vectors $(UMOCKDEV_CFLAGS)
+# GLib's headers are not -Wstrict-prototypes clean.
+$(USB_EMU_OBJ): CPPFLAGS += -Ihost -Ihost/board $(UMOCKDEV_CFLAGS)
 $(USB_EMU_OBJ): WARN += -Wno-strict-prototypes
-$(USB_EMU_BOARD_OBJ): CPPFLAGS += -Ihost -Ihost/board -Irtl_vectors
 $(USB_EMU): $(USB_EMU_OBJ) $(USB_EMU_BOARD_OBJ) $(RTLV_OBJ) $(LIB_A)
 	$(CC) $(LDFLAGS_ALL) -o $@ $^ $(UMOCKDEV_LIBS) -lpthread $(PNG_LIBS) $(EXPAT_LIBS) $(VEC_LIBS)
+
+# make install: the udev rule beside the program; udev itself reads
+# /etc/udev/rules.d and /usr/lib/udev/rules.d (docs/board-usb.md section 8).
+.PHONY: install-usb-rule
+install: install-usb-rule
+install-usb-rule:
+	install -d $(DESTDIR)$(PREFIX)/lib/udev/rules.d
+	install -m 644 host/60-edgeflag.rules $(DESTDIR)$(PREFIX)/lib/udev/rules.d/60-edgeflag.rules
 
 .PHONY: host-usb-emu test-host-usb
 host-usb-emu: $(USB_EMU)
@@ -40,7 +50,7 @@ host-usb-emu: $(USB_EMU)
 # At most 90 s: list, stream + verify, every fault, unplug + --resume.
 test-host-usb:
 	@bash tools/install-deps.sh test
-	@$(MAKE) --no-print-directory $(EF_HOST) $(USB_EMU) $(EDGEFLAG)
+	@$(MAKE) --no-print-directory $(EDGEFLAG_HOST) $(USB_EMU) $(EDGEFLAG)
 	bash tests/host/usb.sh $(BUILD)
 
 endif

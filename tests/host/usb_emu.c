@@ -647,10 +647,6 @@ static int run(emu *e, const char *cmd)
     if (pid < 0)
         die("fork: %s", strerror(errno));
     if (pid == 0) {
-        const char *pre = getenv("LD_PRELOAD");
-        char lp[512];
-        snprintf(lp, sizeof lp, "libumockdev-preload.so.0%s%s", pre && *pre ? ":" : "", pre ? pre : "");
-        setenv("LD_PRELOAD", lp, 1);
         if (e->f.eacces) {
             /* An ordinary user with no udev rule: root would open anything. */
             struct passwd *pw = getpwnam("nobody");
@@ -744,9 +740,25 @@ static void report(emu *e, const char *path, const int *rc, int nruns)
     fclose(o);
 }
 
+/* The emulator itself runs under the preload too: umockdev's uevent sender
+ * looks the device up through libudev, which must see the testbed's /sys,
+ * not the machine's.  The commands inherit it. */
+static void ensure_preload(char **argv)
+{
+    const char *pre = getenv("LD_PRELOAD");
+    if (pre && strstr(pre, "libumockdev-preload"))
+        return;
+    char lp[1024];
+    snprintf(lp, sizeof lp, "libumockdev-preload.so.0%s%s", pre && *pre ? ":" : "", pre ? pre : "");
+    setenv("LD_PRELOAD", lp, 1);
+    execv("/proc/self/exe", argv);
+    die("cannot re-execute under umockdev's preload: %s", strerror(errno));
+}
+
 int main(int argc, char **argv)
 {
     static emu e;
+    ensure_preload(argv);
     const char *runs[MAX_RUNS], *report_path = NULL, *dut_log = NULL;
     int nruns = 0, bus = 1;
     const char *serials[MAX_BOARDS];
@@ -793,10 +805,13 @@ int main(int argc, char **argv)
         eb->bus = bus;
         eb->dev = 4 + i;
         snprintf(eb->serial, sizeof eb->serial, "%s", serials[i]);
-        ef_board_info info = { .capabilities = EF_BOARD_CAP_RESULTS | EF_BOARD_CAP_RESUME,
-                               .samples_mask = 8u | 16u | 32u,
-                               .width_max = 4096, .height_max = 4096, .edges_max = 65536,
-                               .window = 16, .iface_mask = 0xffffffffu };
+        /* What the simulated board reports (transport_sim.c): the C model
+         * can do every size, sample count and interface. */
+        ef_board_info info = { .capabilities = EF_BOARD_CAP_RESULTS | EF_BOARD_CAP_RESUME | EF_BOARD_CAP_INTERNAL,
+                               .samples_mask = 1u << ef_board_samples_bit(8) | 1u << ef_board_samples_bit(16) |
+                                               1u << ef_board_samples_bit(32),
+                               .width_max = 16384, .height_max = 16384, .edges_max = 1u << 22,
+                               .window = 16, .iface_mask = (1u << 7) - 1 };
         snprintf(info.serial, sizeof info.serial, "%s", serials[i]);
         eb->b = ef_board_new(&info, dut_logged(&e));
         if (!eb->b)
@@ -804,10 +819,11 @@ int main(int argc, char **argv)
         plug(eb);
     }
     if (e.f.eacces) {
-        /* Everything readable by all (as /sys is), the node root-only (as
-         * /dev/bus/usb nodes are without a udev rule). */
+        /* The testbed open to all (the user's libudev monitor binds its
+         * emulated netlink socket in there), the node root-only, as
+         * /dev/bus/usb nodes are without a udev rule. */
         char *root = umockdev_testbed_get_root_dir(e.tb), cmd[600];
-        snprintf(cmd, sizeof cmd, "chmod -R a+rX '%s' && chmod 0600 '%s'/dev/bus/usb/*/*", root, root);
+        snprintf(cmd, sizeof cmd, "chmod -R a+rwX '%s' && chmod 0600 '%s'/dev/bus/usb/*/*", root, root);
         if (system(cmd) != 0)
             die("%s", "chmod of the testbed failed");
         g_free(root);
