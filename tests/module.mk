@@ -74,5 +74,6 @@ include tests/vectors/module.mk
 include tests/check/module.mk
 include tests/rtl/module.mk
 include tests/regress/module.mk
+include tests/host/module.mk
 include tests/sanitize/module.mk
 include tests/portability.mk
