@@ -349,8 +349,10 @@ static void board_take(emu_board *eb, uint8_t *p, size_t n, int *status)
         eb->deliver_head = eb->deliver_len = 0;
         eb->reset_done = 1;
     }
-    if (f->stall_at > 0 && eb->out_bytes >= f->stall_at)
+    if (f->stall_at > 0 && eb->out_bytes >= f->stall_at) {
+        f->stall_at = 0;                /* once: the next command finds it answering */
         eb->stalled = 1;
+    }
 }
 
 /* ------------------------------------------------------- control requests */
