@@ -18,7 +18,7 @@ static int none_open(ef_link **out, const ef_host_opts *o, char *err, size_t err
 {
     (void)o;
     *out = NULL;
-    snprintf(err, errlen, "usb: edgeflag-host was built without libusb-1.0 (install libusb-1.0-0-dev and rebuild)");
+    snprintf(err, errlen, "edgeflag-host was built without libusb-1.0 (install libusb-1.0-0-dev and rebuild)");
     return EF_HOST_EUNSUPPORTED;
 }
 
@@ -60,7 +60,7 @@ static void none_close(ef_link *l)
 
 static const char *none_version(void)
 {
-    return "absent: built without libusb";
+    return "absent: built without libusb-1.0 (install libusb-1.0-0-dev and rebuild)";
 }
 
 const ef_transport_ops ef_transport_usb = {
