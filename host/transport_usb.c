@@ -853,11 +853,6 @@ static const char *usb_version(void)
     return v;
 }
 
-const char *ef_usb_link_error(const ef_link *l)
-{
-    return l && l->err[0] ? l->err : NULL;
-}
-
 const ef_transport_ops ef_transport_usb = {
     .name = "usb",
     .probe = usb_probe,

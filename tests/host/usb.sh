@@ -76,6 +76,17 @@ expect "verify exit" 0 "$(kv "$T/v.rep" run1_exit)"
 has "verify" "$T/v.out" "PASS"
 has "verify" "$T/v.out" '"transport": "usb", "exit": 0'
 
+# ---- one 512-byte transfer in flight, then three of 1536: every frame split
+# across transfers, the IN store wrapping around; the same results
+emu --report "$T/x.rep" \
+    --run "'$H' verify '$T/lion/vectors.bin' $S --in-flight 1 --transfer-size 512 --results '$T/x1'" \
+    --run "'$H' verify '$T/lion/vectors.bin' $S --in-flight 3 --transfer-size 1536 --results '$T/x2'"
+expect "1 x 512 B exit" 0 "$(kv "$T/x.rep" run1_exit)"
+expect "3 x 1536 B exit" 0 "$(kv "$T/x.rep" run2_exit)"
+cmp -s "$T/v/vectors.actual.bin" "$T/x1/vectors.actual.bin" && cmp -s "$T/v/vectors.actual.bin" "$T/x2/vectors.actual.bin" &&
+    ok || bad "small transfers: results differ from the default transfers'"
+[ "$(kv "$T/x.rep" urbs)" -gt 1000 ] && ok || bad "small transfers: only $(kv "$T/x.rep" urbs) URBs (not split?)"
+
 # ---- selection among several boards: serial, BUS:DEV, #INDEX, both, none
 emu --serial A1 --serial B2 --report "$T/s.rep" \
     --run "'$H' stream '$V' $S --device B2 --results '$T/s1'" \
