@@ -120,6 +120,16 @@ cmp -s "$T/ref/vectors.actual.bin" "$T/u/vectors.actual.bin" && ok || bad "unplu
 cmp -s "$T/ref.dut" "$T/u.dut" && ok || bad "unplug + resume: the DUT's input differs (a command lost or doubled)"
 expect "unplug + resume: input CRC" "$(kv "$T/ref.rep" input_crc)" "$(kv "$T/u.rep" input_crc)"
 
+# ---- unplugged while results flow to the host, then --resume: byte-identical
+emu --fault unplug-in=1000000 --report "$T/ui.rep" --dut-log "$T/ui.dut" \
+    --run "'$H' stream '$V' $S --results '$T/ui' 2>'$T/ui1.err'" \
+    --run "'$H' stream '$V' $S --results '$T/ui' --resume 2>'$T/ui2.err'"
+expect "unplug (results) exit" 5 "$(kv "$T/ui.rep" run1_exit)"
+has "unplug (results) told" "$T/ui1.err" "the board went away (unplugged?)"
+expect "resume (results) exit" 0 "$(kv "$T/ui.rep" run2_exit)"
+cmp -s "$T/ref/vectors.actual.bin" "$T/ui/vectors.actual.bin" && ok || bad "unplug (results) + resume: results differ"
+cmp -s "$T/ref.dut" "$T/ui.dut" && ok || bad "unplug (results) + resume: the DUT's input differs"
+
 # ---- a board that drops an ack, or gets a corrupted frame either way: recovered
 emu --fault drop-ack=1 --report "$T/d.rep" --dut-log "$T/d.dut" --run "'$H' stream '$V' $S --results '$T/d'"
 expect "drop-ack exit" 0 "$(kv "$T/d.rep" run1_exit)"

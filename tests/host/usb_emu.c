@@ -25,6 +25,7 @@
  *     --bus N           the bus number (default 1; 0 is valid)
  *     --fault F[,F...]  faults, also read from $EF_USB_EMU_FAULT:
  *                       unplug-at=BYTES   the board vanishes once it has taken BYTES bulk OUT bytes
+ *                       unplug-in=BYTES   ... once it has sent BYTES bulk IN bytes (results flowing)
  *                       stall-at=BYTES    ... stops answering (no OUT accepted, no IN data)
  *                       reset-at=BYTES    ... resets itself (power glitch, watchdog)
  *                       corrupt-out=BYTE  flips a bit of bulk OUT byte BYTE before the board sees it
@@ -73,7 +74,7 @@ typedef struct urb_rec {
 } urb_rec;
 
 typedef struct faults {
-    long long unplug_at, stall_at, reset_at, corrupt_out;
+    long long unplug_at, unplug_in, stall_at, reset_at, corrupt_out;
     long corrupt_in, drop_ack, identify_stall, protocol;
     char magic[5];
     int eacces;
@@ -289,8 +290,11 @@ static void pull_from_board(emu_board *eb)
  * ends every burst with a short packet (or a zero-length packet when the
  * burst is a multiple of 512 bytes), so an IN URB completes with what the
  * board had, never waiting to be full. */
+static void unplug(emu_board *eb);
+
 static void serve_in(emu_board *eb)
 {
+    faults *f = &eb->emu->f;
     if (eb->gone || eb->stalled)
         return;
     pull_from_board(eb);
@@ -300,6 +304,13 @@ static void serve_in(emu_board *eb)
         size_t n = eb->deliver_len - eb->deliver_head;
         if (n > (size_t)u->buffer_length)
             n = (size_t)u->buffer_length;
+        if (f->unplug_in > 0 && eb->in_bytes + (long long)n > f->unplug_in) {
+            /* this transfer never arrives: the board is gone while results flow */
+            f->unplug_in = 0;
+            urb_append(&eb->pend_in, r);
+            unplug(eb);
+            return;
+        }
         memcpy(r->buf->data, eb->deliver + eb->deliver_head, n);
         eb->deliver_head += n;
         eb->in_bytes += (long long)n;
@@ -691,6 +702,7 @@ static void parse_faults(faults *f, const char *spec)
         if (*end || n < 0)
             die("fault value '%s' is not a number", v);
         if (!strcmp(t, "unplug-at")) f->unplug_at = n;
+        else if (!strcmp(t, "unplug-in")) f->unplug_in = n;
         else if (!strcmp(t, "stall-at")) f->stall_at = n;
         else if (!strcmp(t, "reset-at")) f->reset_at = n;
         else if (!strcmp(t, "corrupt-out")) f->corrupt_out = n;
