@@ -18,6 +18,8 @@ if [ "${1:-}" = test ] || [ "${1:-}" = portability ]; then
     pkgs+=(iverilog verilator gtkwave libxml2-utils)
     # the regression flow's shards run under GNU parallel in make test (docs/regress.md)
     pkgs+=(parallel)
+    # edgeflag-host's USB transport and its emulated board (test-host-usb, docs/board-usb.md)
+    pkgs+=(libusb-1.0-0-dev umockdev libumockdev-dev)
     # `make portability` builds static aarch64 and s390x (big-endian) programs
     # with clang --target and runs them under qemu-user.  gcc-aarch64-linux-gnu
     # cannot be installed beside gcc-multilib in Debian 12; these can.  Best
