@@ -199,27 +199,33 @@ static int open_link(const args *a, const ef_transport_ops **ops, ef_link **l)
     const char *name = a->transport ? a->transport : "auto";
     if (strcmp(name, "auto") == 0) {
         ef_found found[16];
-        int total = 0;
+        int total = 0, nfound = 0, denied = 0;
         const ef_transport_ops *which = NULL;
         for (size_t i = 0; i < 2; i++) {      /* usb and gpio: real boards only */
             if (i == 1 && !a->link.chip)
                 continue;                      /* a GPIO bus cannot be told from other GPIO use by looking */
-            const int n = TRANSPORTS[i]->probe(&a->link, found + total, 16 - total);
+            const int n = TRANSPORTS[i]->probe(&a->link, found + nfound, 16 - nfound);
             if (n < 0 && n != EF_HOST_EUNSUPPORTED && n != EF_HOST_ENOTFOUND) {
                 fprintf(stderr, "edgeflag-host: looking for %s boards: %s\n", TRANSPORTS[i]->name,
                         ef_host_strerror(n));
                 return n == EF_HOST_EACCESS ? EF_HX_ACCESS : EF_HX_NOBOARD;
             }
-            for (int k = 0; k < n && total < 16; k++)
-                if (found[total].ok)
+            for (int k = 0; k < n && nfound < 16; k++, nfound++) {
+                if (found[nfound].ok)
                     which = TRANSPORTS[i], total++;
+                else if (found[nfound].err == EF_HOST_EACCESS)
+                    denied++;
+            }
         }
         if (total != 1) {
             fprintf(stderr, "edgeflag-host: --transport auto: %s\n",
                     total ? "several boards answer; choose one with --transport and --device (edgeflag-host list)"
                           : "no board found (no USB device answers identify; GPIO needs --chip and --lines); "
                             "use --transport sim for the simulated board");
-            return EF_HX_NOBOARD;
+            for (int k = 0; k < nfound; k++)   /* what was seen, so the user can tell which */
+                fprintf(stderr, "edgeflag-host:   %s %s %s%s\n", found[k].transport, found[k].where,
+                        found[k].ok ? "" : "(not usable) ", found[k].desc);
+            return !total && denied ? EF_HX_ACCESS : EF_HX_NOBOARD;
         }
         *ops = which;
     } else {

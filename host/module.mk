@@ -32,13 +32,9 @@ $(EDGEFLAG_HOST): $(HOST_OBJ) $(HOST_BOARD_OBJ) $(HOST_CLI_OBJ) $(LIB_A)
 	$(CC) $(LDFLAGS_ALL) -o $@ $(HOST_OBJ) $(HOST_BOARD_OBJ) $(HOST_CLI_OBJ) $(LIB_A) $(HOST_LIBS) $(PNG_LIBS) \
 	    $(EXPAT_LIBS) $(VEC_LIBS)
 
-# make install puts edgeflag-host beside edgeflag, and the udev rule (docs/board-usb.md) under
-# $(PREFIX)/lib/udev/rules.d; on a system, /etc/udev/rules.d (or the distribution's
-# /usr/lib/udev/rules.d) is where udev reads it.
+# make install puts edgeflag-host beside edgeflag (host/usb.mk adds the udev rule).
 .PHONY: install-host
 install: install-host
 install-host: host
 	install -d $(DESTDIR)$(PREFIX)/bin
 	install -m 755 $(EDGEFLAG_HOST) $(DESTDIR)$(PREFIX)/bin/
-	if [ -f host/60-edgeflag.rules ]; then install -d $(DESTDIR)$(PREFIX)/lib/udev/rules.d && \
-	    install -m 644 host/60-edgeflag.rules $(DESTDIR)$(PREFIX)/lib/udev/rules.d/; fi

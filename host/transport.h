@@ -52,6 +52,7 @@ typedef struct ef_found {
     char where[64];          /* usb "BUS:DEV", gpio chip path */
     char desc[160];          /* VID:PID, serial, protocol, DUT parameters / lines */
     int ok;                  /* answered identify with our protocol */
+    int err;                 /* why not (EF_HOST_E*: EACCESS, EPROTO, ...), 0 when ok */
 } ef_found;
 
 typedef struct ef_transport_ops {

@@ -324,6 +324,7 @@ static int usb_probe(const ef_host_opts *o, ef_found *found, int max)
             snprintf(f->transport, sizeof f->transport, "usb");
             snprintf(f->where, sizeof f->where, "%u:%u", c[i].bus, c[i].addr);
             f->ok = c[i].status == 0;
+            f->err = c[i].status;
             if (f->ok)
                 snprintf(f->desc, sizeof f->desc, "#%d %s", idx, c[i].desc);
             else
