@@ -24,6 +24,7 @@
 
 #include "board/ef_board.h"
 #include "board/gpio_bus.h"
+#include "ef_frame.h"
 #include "ef_trace.h"
 #include "gpio_chip.h"
 #include "host_link.h"
@@ -185,7 +186,8 @@ static ef_board *fresh_board(emu_chip *e, ef_link *l, ef_board *old)
     emu_chip_set_faults(e, EMU_FAULT_NONE);
     emu_chip_set_byte_faults(e, 0, 0, 0);
     emu_chip_set_board(e, b);
-    ef_board_free(old);
+    if (old)
+        ef_board_free(old);
     int rc = ef_transport_gpio.reset(l);
     check(rc == 0, "reset: rc %d (%s)", rc, ef_gpio_link_detail(l));
     return b;
@@ -222,6 +224,65 @@ static void test_stream(emu_chip *e, ef_link *l, const char *vectors, const char
            "%.0f words/s through the emulator, %llu emulated ioctls\n",
            (unsigned long long)rep.cmds, (unsigned long long)rep.records, dt, (unsigned long long)cycles,
            dt > 0 ? (double)cycles / dt : 0.0, (unsigned long long)e->ioctls);
+}
+
+/* Both directions at once, byte for byte: the engine's loopback mode returns
+ * every DATA payload as a RESULT while the host is still writing, so the
+ * write path's take-in-the-same-cycle is exercised.  Every frame that comes
+ * back must parse (no resync, no CRC error) and the payloads must be the
+ * ones sent. */
+static void test_duplex(emu_chip *e, ef_link *l)
+{
+    enum { NDATA = 6, CHUNK = 250 };   /* 6 RESULT + DONE fit the board's window of 8 */
+    static uint8_t f[EF_BOARD_HEADER + CHUNK + EF_BOARD_TRAILER], sent[NDATA * CHUNK], back[NDATA * CHUNK + 1];
+    static uint8_t rx[16384];
+    uint8_t start[EF_BOARD_START_LEN] = { 0 };
+    size_t nback = 0, rlen = 0, pos = 0;
+    int bad = 0, done = 0, rc;
+    uint32_t x = 12345;
+    fresh_board(e, l, e->board);
+    ef_put32(start + 8, EF_MODE_LOOPBACK);
+    uint64_t c0 = ef_gpio_link_cycles(l);
+    double t0 = now_s();
+    rc = ef_transport_gpio.write(l, f, ef_frame_put(f, EF_FT_START, 0, 0, start, sizeof start), 1000);
+    for (uint32_t seq = 1; rc == 0 && seq <= NDATA + 1; seq++) {
+        uint8_t *p = f + EF_BOARD_HEADER;
+        uint32_t len = seq <= NDATA ? CHUNK : 0;
+        for (uint32_t i = 0; i < len; i++)
+            x = x * 1103515245u + 12345u, p[i] = sent[(seq - 1) * CHUNK + i] = (uint8_t)(x >> 16);
+        rc = ef_transport_gpio.write(l, f, ef_frame_seal(f, seq <= NDATA ? EF_FT_DATA : EF_FT_END, 0, seq, len),
+                                     1000);
+    }
+    check(rc == 0, "duplex: write rc %d (%s)", rc, ef_gpio_link_detail(l));
+    while (rc == 0 && !done) {
+        size_t got = 0;
+        rc = ef_transport_gpio.read(l, rx + rlen, sizeof rx - rlen, &got, 1000);
+        rlen += got;
+        ef_frame fr;
+        size_t used;
+        for (;;) {
+            int pr = ef_frame_parse(rx + pos, rlen - pos, &fr, &used);
+            if (pr == EF_FRAME_MORE)
+                break;
+            if (pr == EF_FRAME_BAD) {
+                bad++, pos++;
+                continue;
+            }
+            if (fr.type == EF_FT_RESULT && nback + fr.len <= sizeof back - 1) {
+                memcpy(back + nback, fr.payload, fr.len);
+                nback += fr.len;
+            }
+            done |= fr.type == EF_FT_DONE;
+            pos += used;
+        }
+    }
+    double dt = now_s() - t0;
+    uint64_t cycles = ef_gpio_link_cycles(l) - c0;
+    check(done && bad == 0 && nback == sizeof sent && memcmp(back, sent, sizeof sent) == 0,
+          "duplex: done %d, %d bad bytes, %zu of %zu payload bytes back%s", done, bad, nback, sizeof sent,
+          nback == sizeof sent ? " but different" : "");
+    printf("gpio-emu: duplex: %zu payload bytes each way, %llu bus cycles in %.2f s = %.0f GPIO words/s "
+           "through the emulator\n", sizeof sent, (unsigned long long)cycles, dt, dt > 0 ? (double)cycles / dt : 0.0);
 }
 
 static void test_faults(emu_chip *e, ef_link *l, const char *vectors, const char *results)
@@ -325,6 +386,7 @@ int main(int argc, char **argv)
         ef_transport_gpio.close(l2);
 
     test_stream(e, l, argv[1], argv[2]);
+    test_duplex(e, l);
     test_faults(e, l, argv[1], argv[2]);
 
     ef_transport_gpio.close(l);
