@@ -21,7 +21,7 @@ for s in "${stages[@]}"; do
     if [ $verdict = FAIL ]; then
         tail -n 40 "$logs/$s.log" | sed 's/^/    /'
     else
-        grep -E '^(oracle|area|mutant|bitexact|portability|fuzz|bench|cli|install|\[  PASSED  \]|[0-9]+ passed)' "$logs/$s.log" | grep -v ' agree$' |
+        grep -E '^(oracle|area|mutant|bitexact|portability|fuzz|bench|cli|install|gpio|\[  PASSED  \]|[0-9]+ passed)' "$logs/$s.log" | grep -v ' agree$' |
             sed 's/^/    /' | tail -n 12
     fi
 done
