@@ -46,6 +46,9 @@ typedef struct emu_state {
     int npending;
     emu_req *reqs[64];              /* every request made (freed at exit) */
     int nreqs;
+    uint64_t step, change_step, edge_step;   /* line ioctls, and when data changed / clk rose */
+    int edge_since_change;
+    uint32_t data;                  /* d | valid << 8 | take << 9 | ctl << 10 as last written */
 } emu_state;
 
 static const char *line_name(const emu_state *s, unsigned off)
@@ -96,6 +99,20 @@ static void host_drive(emu_state *s, const emu_req *r, uint64_t bits, uint64_t m
     for (unsigned i = 0; i < r->n; i++)
         if (mask >> i & 1)
             s->level[r->offsets[i]] = (uint8_t)(bits >> i & 1);
+    uint32_t data = 0;
+    for (int i = 0; i < 12; i++)
+        if (i != S_CLK)
+            data |= (uint32_t)s->level[w[i]] << i;
+    if (data != s->data) {
+        if (s->edge_since_change && s->step - s->edge_step - 1 < s->pub.min_hold)
+            s->pub.min_hold = s->step - s->edge_step - 1;
+        s->data = data, s->change_step = s->step, s->edge_since_change = 0;
+    }
+    if (!clk_before && s->level[w[S_CLK]]) {
+        if (s->step - s->change_step < s->pub.min_setup)
+            s->pub.min_setup = s->step - s->change_step;
+        s->edge_step = s->step, s->edge_since_change = 1;
+    }
     if (!clk_before && s->level[w[S_CLK]]) {
         uint8_t d = s->pub.stuck_d;
         for (int i = 0; i < 8; i++)
@@ -289,12 +306,12 @@ static gboolean line_ioctl(emu_state *s, emu_req *r, UMockdevIoctlClient *client
             for (unsigned i = 0; i < r->n; i++)
                 bits |= (uint64_t)(hd->values[i] != 0) << i;
             host_drive(s, r, bits, ~(uint64_t)0);
-            s->pub.sets++;
+            s->pub.sets++, s->step++;
         } else {
             board_drive(s);
             for (unsigned i = 0; i < r->n; i++)
                 hd->values[i] = s->level[r->offsets[i]];
-            s->pub.gets++;
+            s->pub.gets++, s->step++;
         }
         return finish(client, d, 0, 0);
     }
@@ -307,7 +324,7 @@ static gboolean line_ioctl(emu_state *s, emu_req *r, UMockdevIoctlClient *client
             if (!r->output)
                 return finish(client, d, -1, EPERM);
             host_drive(s, r, lv->bits, lv->mask);
-            s->pub.sets++;
+            s->pub.sets++, s->step++;
         } else {
             board_drive(s);
             uint64_t bits = 0;
@@ -315,7 +332,7 @@ static gboolean line_ioctl(emu_state *s, emu_req *r, UMockdevIoctlClient *client
                 if (lv->mask >> i & 1)
                     bits |= (uint64_t)s->level[r->offsets[i]] << i;
             lv->bits = bits;
-            s->pub.gets++;
+            s->pub.gets++, s->step++;
         }
         return finish(client, d, 0, 0);
     }
@@ -347,6 +364,7 @@ emu_chip *emu_chip_new(ef_board *board, const unsigned wiring[EMU_SIGNALS])
     s->pub.board = board;
     s->pub.bus = ef_gpio_bus_new(board);
     memcpy(s->pub.wiring, wiring, sizeof s->pub.wiring);
+    s->pub.min_setup = s->pub.min_hold = UINT64_MAX;
     s->tb = umockdev_testbed_new();
     if (!umockdev_in_mock_environment()) {
         fprintf(stderr, "gpio_chip: not in a umockdev environment: run under umockdev-wrapper\n");
@@ -407,11 +425,13 @@ void emu_chip_set_board(emu_chip *e, ef_board *board)
     g_mutex_unlock(&s->lock);
 }
 
-uint64_t emu_chip_edges(emu_chip *e)
+void emu_chip_timing(emu_chip *e, uint64_t *min_setup, uint64_t *min_hold, uint64_t *sets, uint64_t *gets,
+                     uint64_t *edges)
 {
     emu_state *s = (emu_state *)e;
     g_mutex_lock(&s->lock);
-    uint64_t n = e->edges;
+    *min_setup = e->min_setup, *min_hold = e->min_hold, *sets = e->sets, *gets = e->gets, *edges = e->edges;
+    e->min_setup = e->min_hold = UINT64_MAX;
+    e->sets = e->gets = e->edges = 0;
     g_mutex_unlock(&s->lock);
-    return n;
 }

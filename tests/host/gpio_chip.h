@@ -35,6 +35,10 @@ typedef struct emu_chip {
     uint32_t fail_after;      /* > 0: the engine fails (ef_board_fail) after this many bytes */
     uint8_t stuck_d;          /* d lines stuck high at the board (a wiring fault) */
     uint64_t edges, ioctls, sets, gets;
+    /* The timing the host kept (docs/board-gpio.md section 3), in steps (line
+     * ioctls): the fewest from a change of d/valid/take/ctl to the rising
+     * edge, and from the edge to the next change (exclusive). */
+    uint64_t min_setup, min_hold;
 } emu_chip;
 
 /* Creates the testbed, /dev/gpiochip0 and its handler; returns NULL and
@@ -46,6 +50,8 @@ void emu_chip_set_byte_faults(emu_chip *e, uint32_t stall_after, uint32_t fail_a
 uint32_t emu_chip_received(emu_chip *e);
 /* Swaps in a new board (after a test made the old one fail). */
 void emu_chip_set_board(emu_chip *e, ef_board *board);
-uint64_t emu_chip_edges(emu_chip *e);
+/* Reads and restarts the timing and step counters. */
+void emu_chip_timing(emu_chip *e, uint64_t *min_setup, uint64_t *min_hold, uint64_t *sets, uint64_t *gets,
+                     uint64_t *edges);
 
 #endif /* EF_TEST_GPIO_CHIP_H */

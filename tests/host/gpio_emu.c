@@ -220,6 +220,12 @@ static void test_stream(emu_chip *e, ef_link *l, const char *vectors, const char
     check(st.state == EF_BS_DONE && st.cmds == rep.cmds && st.frames_bad == 0,
           "stream: board state %d, %llu of %llu commands, %llu bad frames", st.state, (unsigned long long)st.cmds,
           (unsigned long long)rep.cmds, (unsigned long long)st.frames_bad);
+    /* The run is over: the done line is high, and a read says so. */
+    uint8_t buf[16];
+    size_t got = 0;
+    int rc = ef_transport_gpio.read(l, buf, sizeof buf, &got, 50);
+    check(rc == EF_HOST_ETIMEDOUT && got == 0 && strstr(ef_gpio_link_detail(l), "done is high"),
+          "after the stream: read rc %d got %zu detail '%s'", rc, got, ef_gpio_link_detail(l));
     printf("gpio-emu: stream: %llu commands, %llu result records in %.2f s; %llu bus cycles (GPIO words) = "
            "%.0f words/s through the emulator, %llu emulated ioctls\n",
            (unsigned long long)rep.cmds, (unsigned long long)rep.records, dt, (unsigned long long)cycles,
@@ -357,6 +363,24 @@ static void test_faults(emu_chip *e, ef_link *l, const char *vectors, const char
     b = fresh_board(e, l, b);
 }
 
+/* The host keeps the documented timing (docs/board-gpio.md section 3), as the
+ * emulated board sees it: S setup and H hold steps exactly, S + H writes and
+ * one read per cycle, one rising edge per cycle. */
+static void check_timing(emu_chip *e, ef_link *l, unsigned S, unsigned H)
+{
+    uint64_t su, ho, sets, gets, edges;
+    uint8_t id[EF_BOARD_IDENTIFY_LEN];
+    emu_chip_timing(e, &su, &ho, &sets, &gets, &edges);
+    unsigned long long c0 = ef_gpio_link_cycles(l);
+    int rc = ef_transport_gpio.identify(l, id);
+    unsigned long long cycles = ef_gpio_link_cycles(l) - c0;
+    emu_chip_timing(e, &su, &ho, &sets, &gets, &edges);
+    check(rc == 0 && su == S && ho == H && edges == cycles && sets == (S + H) * cycles && gets == cycles,
+          "timing setup=%u hold=%u: rc %d, board saw setup %llu hold %llu, %llu edges for %llu cycles, %llu writes, "
+          "%llu reads", S, H, rc, (unsigned long long)su, (unsigned long long)ho, (unsigned long long)edges, cycles,
+          (unsigned long long)sets, (unsigned long long)gets);
+}
+
 int main(int argc, char **argv)
 {
     if (argc != 3) {
@@ -378,6 +402,7 @@ int main(int argc, char **argv)
     if (!l)
         goto out;
     test_identify(l, b);
+    check_timing(e, l, 1, 1);
 
     /* A second program on the same lines is told who holds them. */
     ef_link *l2 = open_link(LINES, &rc, err, sizeof err);
@@ -388,6 +413,16 @@ int main(int argc, char **argv)
     test_stream(e, l, argv[1], argv[2]);
     test_duplex(e, l);
     test_faults(e, l, argv[1], argv[2]);
+
+    /* Slower timing for a slower board: the same bus, more steps. */
+    ef_transport_gpio.close(l);
+    char slow[512];
+    snprintf(slow, sizeof slow, "%s,setup=3,hold=2", LINES);
+    l = open_link(slow, &rc, err, sizeof err);
+    check(l != NULL, "open with setup=3,hold=2: rc %d: %s", rc, err);
+    if (!l)
+        goto out;
+    check_timing(e, l, 3, 2);
 
     ef_transport_gpio.close(l);
 out:
