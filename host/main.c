@@ -4,6 +4,7 @@
  * protocol-shaped lives in host_link.c and bench_link.c, everything
  * link-shaped in the transports.
  */
+#include <fcntl.h>
 #include <getopt.h>
 #include <inttypes.h>
 #include <libgen.h>
@@ -374,7 +375,22 @@ static int cmd_stream(args *a, int verify)
             cv[n++] = "--transactions";
         cv[n] = NULL;
         fflush(stdout);
+        /* --quiet: check's status lines go nowhere, its mismatch lines (stdout) and exit code stay */
+        int saved = -1;
+        if (a->quiet) {
+            fflush(stderr);
+            saved = dup(2);
+            const int devnull = open("/dev/null", O_WRONLY);
+            if (devnull >= 0)
+                dup2(devnull, 2), close(devnull);
+        }
         check = ef_cli_check(n, cv);
+        if (saved >= 0) {
+            fflush(stderr);
+            dup2(saved, 2), close(saved);
+            if (check != 0)
+                fprintf(stderr, "edgeflag-host: verify: FAIL (edgeflag check exit %d)\n", check);
+        }
         code = check == 0 ? EF_HX_OK : check == 1 ? EF_HX_MISMATCH : check == 4 ? EF_HX_OUTPUT : EF_HX_INTERNAL;
     }
     if (a->json)

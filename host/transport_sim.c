@@ -12,7 +12,9 @@
  *
  * --sim-faults LIST plays a faulty link or board (section 6): KIND=N[,...]
  * with KIND drop, corrupt, unplug, reset or stall counting the host's frames
- * (1 = the first), drop-reply or corrupt-reply counting the board's.
+ * (1 = the first), drop-reply or corrupt-reply counting the board's;
+ * not-ours=1 answers identify without the magic (another device), protocol=N
+ * answers it with protocol version N.
  */
 #include <errno.h>
 #include <stdio.h>
@@ -20,13 +22,15 @@
 #include <string.h>
 #include <time.h>
 
+#include "atomic_file.h"
 #include "ef_board.h"
 #include "ef_frame.h"
 #include "transport.h"
 
-enum { F_DROP, F_CORRUPT, F_UNPLUG, F_RESET, F_STALL, F_DROP_REPLY, F_CORRUPT_REPLY, F_KINDS };
+enum { F_DROP, F_CORRUPT, F_UNPLUG, F_RESET, F_STALL, F_DROP_REPLY, F_CORRUPT_REPLY, F_NOT_OURS, F_PROTOCOL,
+       F_KINDS };
 static const char *const FAULT_NAME[F_KINDS] = { "drop", "corrupt", "unplug", "reset", "stall", "drop-reply",
-                                                 "corrupt-reply" };
+                                                 "corrupt-reply", "not-ours", "protocol" };
 #define MAX_FAULTS 32
 #define LOG_RESET 0xffffffffu
 
@@ -74,7 +78,7 @@ static int parse_faults(sim_link *s, const char *text, char *err, size_t errlen)
         const unsigned long long n = eq ? strtoull(eq + 1, &end, 10) : 0;
         if (kind < 0 || !eq || end != p + len || n == 0 || eq[1] == '-' || s->nfaults == MAX_FAULTS) {
             snprintf(err, errlen, "--sim-faults: '%.*s' is not KIND=N (KIND: drop, corrupt, unplug, reset, stall, "
-                     "drop-reply, corrupt-reply; N >= 1; at most %d)", (int)len, p, MAX_FAULTS);
+                     "drop-reply, corrupt-reply, not-ours, protocol; N >= 1; at most %d)", (int)len, p, MAX_FAULTS);
             return EF_HOST_EINVAL;
         }
         s->fault[s->nfaults].kind = kind;
@@ -190,7 +194,7 @@ static int sim_open(ef_link **out, const ef_host_opts *o, char *err, size_t errl
     if (o->sim_state) {
         char path[4200];
         snprintf(path, sizeof path, "%s/board.log", o->sim_state);
-        if ((r = replay(s, path)) != 0 || !(s->log = fopen(path, "ab"))) {
+        if (ef_cli_make_dirs(o->sim_state) != 0 || (r = replay(s, path)) != 0 || !(s->log = fopen(path, "ab"))) {
             snprintf(err, errlen, "--sim-state: cannot use %s: %s", path,
                      r ? ef_host_strerror(r) : strerror(errno));
             ef_board_free(s->b);
@@ -208,6 +212,12 @@ static int sim_identify(ef_link *l, uint8_t out[48])
     if (s->gone)
         return EF_HOST_ENODEV;
     ef_board_identify(s->b, out);
+    for (int i = 0; i < s->nfaults; i++) {
+        if (s->fault[i].kind == F_NOT_OURS)
+            memcpy(out, "USB\0", 4);
+        if (s->fault[i].kind == F_PROTOCOL)
+            out[4] = (uint8_t)s->fault[i].at, out[5] = (uint8_t)(s->fault[i].at >> 8);
+    }
     return 0;
 }
 

@@ -75,5 +75,6 @@ include tests/check/module.mk
 include tests/host/gpio.mk
 include tests/rtl/module.mk
 include tests/regress/module.mk
+include tests/host/module.mk
 include tests/sanitize/module.mk
 include tests/portability.mk

@@ -12,8 +12,8 @@ FUZZ_BUILD ?= build-fuzz
 FUZZ_CC ?= clang
 FUZZ_SECONDS ?= 60
 FUZZ_SMOKE_SECONDS ?= 10
-FUZZ_TARGETS ?= svg scene cli_args decimal render vec_read
-FUZZ_ALL := svg scene cli_args decimal render vec_read
+FUZZ_TARGETS ?= svg scene cli_args decimal render vec_read board
+FUZZ_ALL := svg scene cli_args decimal render vec_read board
 # ASan + UBSan, plus clang's integer checks with the intended wraps listed in
 # tests/sanitize/integer.ignorelist (as in `make test-integer`).
 FUZZ_SAN := -fsanitize=address,undefined,integer -fsanitize-ignorelist=tests/sanitize/integer.ignorelist \
@@ -46,12 +46,14 @@ FUZZ_CLI_OBJ = $(filter-out $(BUILD)/cli/main.o,$(CLI_OBJ))
 $(BUILD)/fuzz/fuzz_render: $(ORACLE_OBJ)
 $(BUILD)/fuzz/fuzz_cli_args: $(FUZZ_CLI_OBJ)
 $(BUILD)/fuzz/fuzz_vec_read: $(RTLV_OBJ)
+$(BUILD)/fuzz/fuzz_board: $(HOST_BOARD_OBJ) $(RTLV_OBJ)
 $(BUILD)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/fuzz_common.h $(LIB_A)
 	@mkdir -p $(dir $@)
-	$(CC) $(CPPFLAGS) -Itests/fuzz -Itests/oracle -Icli $(CFLAGS_ALL) -fsanitize=fuzzer $< \
+	$(CC) $(CPPFLAGS) -Itests/fuzz -Itests/oracle -Icli -Ihost -Ihost/board $(CFLAGS_ALL) -fsanitize=fuzzer $< \
 	    $(if $(filter fuzz_render,$(notdir $@)),$(ORACLE_OBJ)) \
 	    $(if $(filter fuzz_cli_args,$(notdir $@)),$(FUZZ_CLI_OBJ)) \
 	    $(if $(filter fuzz_vec_read,$(notdir $@)),$(RTLV_OBJ)) \
+	    $(if $(filter fuzz_board,$(notdir $@)),$(HOST_BOARD_OBJ) $(RTLV_OBJ)) \
 	    -o $@ $(LDFLAGS_ALL) $(LIB_A) $(PNG_LIBS) $(EXPAT_LIBS) $(VEC_LIBS)
 
 fuzz: fuzz-build
