@@ -6,7 +6,8 @@
  *
  *   gpio_emu VECTORS.bin RESULTS_DIR     (tests/host/gpio.sh gives both)
  *
- * Checks: listing, line maps (names and offsets, and bad ones), identify and
+ * Checks: the board's side of the bus alone (host/board/gpio_bus.c: underrun,
+ * control errors, RESET, a control request between stream bytes), listing, line maps (names and offsets, and bad ones), identify and
  * status byte for byte against the engine, a vectors stream end to end
  * through host_link.c (results written for `edgeflag check`), and the faults:
  * the board's error line (engine failure and a bus overrun), a stall past the
@@ -363,6 +364,89 @@ static void test_faults(emu_chip *e, ef_link *l, const char *vectors, const char
     b = fresh_board(e, l, b);
 }
 
+/* ---- the board's side alone (host/board/gpio_bus.c against docs/board-gpio.md 4-5) ---- */
+
+static void bus_edge(ef_gpio_bus *g, uint8_t d, unsigned ctrl, ef_gpio_bus_lines *o)
+{
+    ef_gpio_bus_edge(g, d, ctrl);
+    ef_gpio_bus_outputs(g, o);
+}
+
+/* A control request as the host makes it; returns the reply's length. */
+static size_t bus_request(ef_gpio_bus *g, uint8_t code, uint8_t *reply, size_t cap)
+{
+    ef_gpio_bus_lines o;
+    size_t n = 0;
+    bus_edge(g, code, EF_GB_CTL | EF_GB_VALID, &o);
+    while (o.avail && n < cap) {
+        reply[n++] = o.q;
+        bus_edge(g, 0, EF_GB_CTL | EF_GB_TAKE, &o);
+    }
+    bus_edge(g, 0, 0, &o);
+    return n;
+}
+
+static void test_bus_side(void)
+{
+    ef_board *b = new_board();
+    ef_gpio_bus *g = ef_gpio_bus_new(b);
+    ef_gpio_bus_lines o;
+    uint8_t r[64], want[EF_BOARD_IDENTIFY_LEN];
+    ef_gpio_bus_outputs(g, &o);
+    check(o.ready && !o.avail && !o.err && !o.done, "bus: idle lines ready %d avail %d err %d done %d", o.ready,
+          o.avail, o.err, o.done);
+
+    /* take with nothing to take: UNDERRUN, sticky, in BUS_STATUS; RESET clears it */
+    bus_edge(g, 0, EF_GB_TAKE, &o);
+    check(o.err, "bus: take while avail was low did not raise err");
+    size_t n = bus_request(g, EF_GB_REQ_BUS_STATUS, r, sizeof r);
+    ef_gpio_bus_outputs(g, &o);
+    check(n == EF_GB_BUS_STATUS_LEN && r[0] == EF_GB_ERR_UNDERRUN && o.err,
+          "bus: BUS_STATUS after an underrun: %zu bytes, cause %d, err %d", n, n ? r[0] : -1, o.err);
+    n = bus_request(g, EF_GB_REQ_RESET, r, sizeof r);
+    ef_gpio_bus_outputs(g, &o);
+    check(n == 0 && !o.err && o.ready, "bus: RESET: %zu reply bytes, err %d, ready %d", n, o.err, o.ready);
+
+    /* a START frame goes in; its ACK waits on q while IDENTIFY runs in the
+     * control view, and is still whole afterwards */
+    uint8_t f[EF_BOARD_HEADER + EF_BOARD_START_LEN + EF_BOARD_TRAILER], start[EF_BOARD_START_LEN] = { 0 };
+    ef_put32(start + 8, EF_MODE_SINK);
+    size_t flen = ef_frame_put(f, EF_FT_START, 0, 0, start, sizeof start);
+    for (size_t i = 0; i < flen; i++)
+        bus_edge(g, f[i], EF_GB_VALID, &o);
+    check(o.avail && o.q == 'E' && ef_gpio_bus_rx_count(g) == flen, "bus: no ACK on q after START (%u bytes in)",
+          ef_gpio_bus_rx_count(g));
+    n = bus_request(g, EF_GB_REQ_IDENTIFY, r, sizeof r);
+    ef_board_identify(b, want);
+    check(n == sizeof want && memcmp(r, want, n) == 0, "bus: IDENTIFY between stream bytes: %zu bytes", n);
+    uint8_t ack[64];
+    size_t k = 0;
+    ef_gpio_bus_outputs(g, &o);
+    while (o.avail && k < sizeof ack) {
+        ack[k++] = o.q;
+        bus_edge(g, 0, EF_GB_TAKE, &o);
+    }
+    ef_frame fr;
+    size_t used;
+    check(ef_frame_parse(ack, k, &fr, &used) == EF_FRAME_OK && fr.type == EF_FT_ACK && used == k &&
+              ef_gpio_bus_tx_count(g) == k,
+          "bus: the stream after a control request is not the ACK frame (%zu bytes)", k);
+
+    /* take on the edge that enters the control view, and an unknown code: CONTROL */
+    bus_edge(g, 0, EF_GB_CTL | EF_GB_TAKE, &o);
+    check(o.err, "bus: take on a ctl-changing edge did not raise err");
+    bus_edge(g, 0, 0, &o);
+    n = bus_request(g, EF_GB_REQ_BUS_STATUS, r, sizeof r);
+    check(n == EF_GB_BUS_STATUS_LEN && r[0] == EF_GB_ERR_CONTROL && ef_get32(r + 4) == flen && ef_get32(r + 8) == k,
+          "bus: BUS_STATUS: cause %d, %u in, %u out", n ? r[0] : -1, ef_get32(r + 4), ef_get32(r + 8));
+    bus_request(g, EF_GB_REQ_RESET, r, sizeof r);
+    n = bus_request(g, 0x55, r, sizeof r);
+    ef_gpio_bus_outputs(g, &o);
+    check(n == 0 && o.err, "bus: unknown request 0x55: %zu reply bytes, err %d", n, o.err);
+    ef_gpio_bus_free(g);
+    ef_board_free(b);
+}
+
 /* The host keeps the documented timing (docs/board-gpio.md section 3), as the
  * emulated board sees it: S setup and H hold steps exactly, S + H writes and
  * one read per cycle, one rising edge per cycle. */
@@ -392,6 +476,7 @@ int main(int argc, char **argv)
     if (!e)
         return 2;
     printf("gpio-emu: %s\n", ef_transport_gpio.version());
+    test_bus_side();
     test_list();
     test_bad_maps();
 
