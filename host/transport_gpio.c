@@ -48,6 +48,7 @@ struct ef_link {
     char chip[64];
     unsigned offset[SIG_COUNT];
     unsigned setup, hold;
+    int timeout_ms;                    /* control replies and err queries (--timeout) */
     uint32_t in;                       /* the board's lines at the last sample */
     int ctl;                           /* ctl at the last edge */
     int engine_failed;                 /* err is high for an engine failure: bytes still flow */
@@ -421,7 +422,7 @@ static const char *const cause_text[] = {
 static int board_error(ef_link *l, const char *during)
 {
     uint8_t st[EF_GB_BUS_STATUS_LEN];
-    int rc = control(l, EF_GB_REQ_BUS_STATUS, st, sizeof st, DEFAULT_TIMEOUT_MS, "bus status");
+    int rc = control(l, EF_GB_REQ_BUS_STATUS, st, sizeof st, l->timeout_ms, "bus status");
     if (rc) {
         snprintf(l->err, sizeof l->err, "%s: the board raised its error line during %s "
                  "(its bus status could not be read)", l->chip, during);
@@ -444,7 +445,7 @@ static int err_line(ef_link *l, const char *during)
     if (!in_line(l, SIG_ERR) || l->engine_failed)
         return 0;
     uint8_t st[EF_GB_BUS_STATUS_LEN];
-    if (control(l, EF_GB_REQ_BUS_STATUS, st, sizeof st, DEFAULT_TIMEOUT_MS, "bus status") == 0 &&
+    if (control(l, EF_GB_REQ_BUS_STATUS, st, sizeof st, l->timeout_ms, "bus status") == 0 &&
         st[0] == EF_GB_ERR_ENGINE) {
         l->engine_failed = 1;
         return 0;
@@ -470,6 +471,7 @@ static int gpio_open(ef_link **out, const ef_host_opts *o, char *err, size_t err
     if (!l)
         return EF_HOST_ENOMEM;
     l->setup = m.setup, l->hold = m.hold;
+    l->timeout_ms = o->timeout_ms > 0 ? o->timeout_ms : DEFAULT_TIMEOUT_MS;
     rc = resolve_chip(o->chip, l->chip, sizeof l->chip, err, errlen);
     if (!rc)
         rc = ef_gpiol_open(&l->c, l->chip, err, errlen);
@@ -528,17 +530,17 @@ static int timeout_of(int t)
 
 static int gpio_identify(ef_link *l, uint8_t out[48])
 {
-    return control(l, EF_GB_REQ_IDENTIFY, out, EF_BOARD_IDENTIFY_LEN, DEFAULT_TIMEOUT_MS, "identify");
+    return control(l, EF_GB_REQ_IDENTIFY, out, EF_BOARD_IDENTIFY_LEN, l->timeout_ms, "identify");
 }
 
 static int gpio_status(ef_link *l, uint8_t out[40])
 {
-    return control(l, EF_GB_REQ_STATUS, out, EF_BOARD_STATUS_LEN, DEFAULT_TIMEOUT_MS, "status");
+    return control(l, EF_GB_REQ_STATUS, out, EF_BOARD_STATUS_LEN, l->timeout_ms, "status");
 }
 
 static int gpio_reset(ef_link *l)
 {
-    int rc = control(l, EF_GB_REQ_RESET, NULL, 0, DEFAULT_TIMEOUT_MS, "reset");
+    int rc = control(l, EF_GB_REQ_RESET, NULL, 0, l->timeout_ms, "reset");
     l->ring_head = l->ring_len = 0;               /* bytes from before the reset are void */
     l->engine_failed = 0;
     return rc;

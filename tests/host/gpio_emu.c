@@ -358,9 +358,11 @@ static void test_faults(emu_chip *e, ef_link *l, const char *vectors, const char
     /* 5. Nothing answers on the lines. */
     emu_chip_set_faults(e, EMU_FAULT_MUTE);
     uint8_t id[EF_BOARD_IDENTIFY_LEN];
+    t0 = now_s();
     rc = ef_transport_gpio.identify(l, id);
-    check(rc == EF_HOST_ETIMEDOUT && strstr(ef_gpio_link_detail(l), "no identify reply"),
-          "mute device: rc %d, detail '%s'", rc, ef_gpio_link_detail(l));
+    dt = now_s() - t0;
+    check(rc == EF_HOST_ETIMEDOUT && strstr(ef_gpio_link_detail(l), "no identify reply") && dt >= 0.29 && dt < 1.5,
+          "mute device: rc %d after %.2f s (timeout 0.3 s), detail '%s'", rc, dt, ef_gpio_link_detail(l));
     b = fresh_board(e, l, b);
 }
 
