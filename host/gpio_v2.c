@@ -26,7 +26,8 @@ int ef_gpiol_open(ef_gpiol **out, const char *path, char *err, size_t errlen)
     c->chip = gpiod_chip_open(path);
     if (!c->chip) {
         int e = errno;
-        snprintf(err, errlen, "%s: cannot open GPIO chip: %s", path, strerror(e));
+        snprintf(err, errlen, "%s: cannot open GPIO chip: %s%s", path, strerror(e),
+                 e == EACCES || e == EPERM ? " (give your user access to it: docs/board-gpio.md section 7)" : "");
         free(c);
         return ef_gpiol_errno(e);
     }
