@@ -173,6 +173,15 @@ static int parse_lines(line_map *m, const char *spec, char *err, size_t errlen)
             return EF_HOST_EINVAL;
         }
     }
+    /* The same line twice is wrong on any chip: say so before opening one
+     * (names and offsets that meet on the chip are caught by resolve_lines). */
+    for (int a = 0; a < SIG_COUNT; a++)
+        for (int b = a + 1; b < SIG_COUNT; b++)
+            if (strcmp(m->token[a], m->token[b]) == 0) {
+                snprintf(err, errlen, "--lines: line %s is mapped to both %s and %s", m->token[a], sig_name[a],
+                         sig_name[b]);
+                return EF_HOST_EINVAL;
+            }
     return 0;
 }
 

@@ -29,5 +29,5 @@ $(GPIO_EMU_V2): $(GPIO_EMU_OBJ) $(BUILD)/host/transport_gpio.o $(BUILD)/gpiod2/g
 
 .PHONY: test-host-gpio gpio-emu-v2
 gpio-emu-v2: $(GPIO_EMU_V2)
-test-host-gpio: $(GPIO_EMU) cli
+test-host-gpio: $(GPIO_EMU) cli host
 	@bash tests/host/gpio.sh $(BUILD)

@@ -17,6 +17,28 @@ if ! "$build/edgeflag" vectors tests/data/svg/stress_pixi_bowtie.svg -o "$out/ve
     cat "$out/vectors.log"; echo "gpio: cannot make the test vectors"; exit 1
 fi
 
+# The command as a user meets it, no chip needed: a bad line map is a usage
+# error (exit 2) naming the item; a chip that is not there is "no board" (exit 7).
+H=$build/edgeflag-host
+user_error() {   # EXIT REGEX ARGS...
+    local want=$1 re=$2; shift 2
+    "$H" stream "$out/vec/vectors.bin" --transport gpio "$@" >"$out/cli.out" 2>"$out/cli.err"
+    local rc=$?
+    if [ $rc -ne "$want" ] || ! grep -Eq "$re" "$out/cli.err"; then
+        echo "gpio (command): FAIL: $* gave exit $rc (want $want), told: $(cat "$out/cli.err")"; fail=1
+    else
+        echo "gpio (command): ok: $* -> exit $rc: $(cat "$out/cli.err")"
+    fi
+}
+if [ -x "$H" ]; then
+    user_error 2 "'bogus=1': unknown signal" --lines bogus=1
+    user_error 2 "line 30 is mapped to both clk and valid" --lines clk=30,valid=30
+    user_error 2 "'d=1-4': a range must span exactly 8 lines" --lines d=1-4
+    user_error 7 "/dev/gpiochip-absent: cannot open GPIO chip" --chip /dev/gpiochip-absent
+else
+    echo "gpio (command): FAIL: $H not built"; fail=1
+fi
+
 run_one() {   # NAME PROGRAM
     local name=$1 prog=$2 res=$out/res-${1//[^a-z0-9.]/_}
     echo "== gpio ($name): $prog"

@@ -104,7 +104,8 @@ static void test_bad_maps(void)
     static const struct { const char *spec; int rc; const char *says; } bad[] = {
         { "clk=99", EF_HOST_EINVAL, "clk=99" },          /* past the chip's 32 lines */
         { "clk=NOPE", EF_HOST_ENOTFOUND, "NOPE" },        /* no such line name */
-        { "clk=4", EF_HOST_EINVAL, "both" },              /* 4 is d0 in the default map */
+        { "clk=4", EF_HOST_EINVAL, "both d4 and clk" },   /* 4 is d4 in the default map */
+        { "clk=EF_CLK", EF_HOST_EINVAL, "line 0 of /dev/gpiochip0 is mapped to both d0 and clk" },  /* by name */
         { "bogus=3", EF_HOST_EINVAL, "bogus" },
         { "d=1-5", EF_HOST_EINVAL, "8 lines" },
         { "q=1:2:3", EF_HOST_EINVAL, "8 lines" },
