@@ -18,6 +18,7 @@
 #include <time.h>
 
 #include "board/ef_board.h"
+#include "board/ef_frame.h"
 #include "board/gpio_bus.h"
 #include "gpio_lib.h"
 #include "transport_gpio.h"
@@ -427,26 +428,8 @@ static const char *const cause_text[] = {
     "the board's engine failed (an ERROR frame says why)"
 };
 
-/* The board raised err: ask the bus why and say it. */
-static int board_error(ef_link *l, const char *during)
-{
-    uint8_t st[EF_GB_BUS_STATUS_LEN];
-    int rc = control(l, EF_GB_REQ_BUS_STATUS, st, sizeof st, l->timeout_ms, "bus status");
-    if (rc) {
-        snprintf(l->err, sizeof l->err, "%s: the board raised its error line during %s "
-                 "(its bus status could not be read)", l->chip, during);
-        return EF_HOST_EIO;
-    }
-    unsigned cause = st[0] < 5 ? st[0] : 0;
-    unsigned long rx = (unsigned long)st[4] | (unsigned long)st[5] << 8 | (unsigned long)st[6] << 16 |
-                       (unsigned long)st[7] << 24;
-    snprintf(l->err, sizeof l->err, "%s: the board raised its error line during %s: %s; it accepted %lu bytes "
-             "(host sent %llu); reset the board to clear it", l->chip, during,
-             st[0] < 5 ? cause_text[cause] : "unknown cause", rx, (unsigned long long)l->sent);
-    return EF_HOST_EIO;
-}
-
-/* err is high: a bus fault stops the transport; an engine failure does not,
+/* err is high: ask the bus why (BUS_STATUS).  A bus fault stops the
+ * transport with the cause and the byte counts; an engine failure does not,
  * because the engine's ERROR frame (which says why) is still to be read by
  * the protocol layer (docs/board-gpio.md section 4.3).  Returns 0 to go on. */
 static int err_line(ef_link *l, const char *during)
@@ -454,12 +437,21 @@ static int err_line(ef_link *l, const char *during)
     if (!in_line(l, SIG_ERR) || l->engine_failed)
         return 0;
     uint8_t st[EF_GB_BUS_STATUS_LEN];
-    if (control(l, EF_GB_REQ_BUS_STATUS, st, sizeof st, l->timeout_ms, "bus status") == 0 &&
-        st[0] == EF_GB_ERR_ENGINE) {
+    if (control(l, EF_GB_REQ_BUS_STATUS, st, sizeof st, l->timeout_ms, "bus status") != 0) {
+        snprintf(l->err, sizeof l->err, "%s: the board raised its error line during %s "
+                 "(its bus status could not be read)", l->chip, during);
+        return EF_HOST_EIO;
+    }
+    if (st[0] == EF_GB_ERR_ENGINE) {
         l->engine_failed = 1;
         return 0;
     }
-    return board_error(l, during);
+    snprintf(l->err, sizeof l->err, "%s: the board raised its error line during %s: %s; it accepted %lu bytes "
+             "(host sent %llu) and sent %lu (host took %llu) since its reset; reset the board to clear it", l->chip,
+             during, st[0] < sizeof cause_text / sizeof cause_text[0] ? cause_text[st[0]] : "unknown cause",
+             (unsigned long)ef_get32(st + 4), (unsigned long long)l->sent, (unsigned long)ef_get32(st + 8),
+             (unsigned long long)l->taken);
+    return EF_HOST_EIO;
 }
 
 /* ---- the ops ---- */
@@ -552,6 +544,7 @@ static int gpio_reset(ef_link *l)
     int rc = control(l, EF_GB_REQ_RESET, NULL, 0, l->timeout_ms, "reset");
     l->ring_head = l->ring_len = 0;               /* bytes from before the reset are void */
     l->engine_failed = 0;
+    l->sent = l->taken = 0;                       /* counted like the board's counters */
     return rc;
 }
 
