@@ -123,10 +123,10 @@ ef_status ef_edges_setup(ef_ctx *ctx, const ef_polygon *poly, int32_t *row_min, 
     int bad = 0;
     for (uint32_t ci = poly->ncontours; ci-- > 0 && !bad;) {
         uint32_t b = poly->start[ci], n = poly->start[ci + 1] - b;
-        const ef_point *pts = poly->pts + b;
         edges_in += n;
         if (n == 0)
-            continue;
+            continue;                              /* pts may be NULL when every contour is empty */
+        const ef_point *pts = poly->pts + b;
         ef_point bb = pts[0];                      /* edge k runs pts[k] -> pts[k+1 mod n] */
         if (coord_bad(bb)) {
             bad = 1;

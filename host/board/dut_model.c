@@ -89,7 +89,8 @@ static int add_point(dut_model *d, ef_point p)
     return 0;
 }
 
-static int add_contour(dut_model *d)
+/* Room for start[ncont + 1]: the next contour's start and the end mark. */
+static int reserve_contour(dut_model *d)
 {
     if (d->ncont + 2 > d->cont_cap) {
         size_t cap = d->cont_cap ? 2 * d->cont_cap : 64;
@@ -98,6 +99,13 @@ static int add_contour(dut_model *d)
             return fail(d, "out of memory");
         d->start = n, d->cont_cap = cap;
     }
+    return 0;
+}
+
+static int add_contour(dut_model *d)
+{
+    if (reserve_contour(d) != 0)
+        return -1;
     d->start[d->ncont++] = (uint32_t)d->npts;
     return 0;
 }
@@ -124,7 +132,7 @@ static int shape_end(dut_model *d)
 {
     if (d->open)
         return fail(d, "SHAPE_END with a contour that does not return to its first point");
-    if (d->ncont + 1 > d->cont_cap && add_contour(d) != 0)
+    if (reserve_contour(d) != 0)
         return -1;
     d->start[d->ncont] = (uint32_t)d->npts;
     const ef_polygon poly = { d->pts, d->start, (uint32_t)d->ncont };

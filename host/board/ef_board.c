@@ -47,7 +47,8 @@ struct ef_board {
     uint8_t *cur;               /* RESULT payload being filled */
     size_t cur_len;
 
-    uint32_t mode, iface_mask, samples, source_left;
+    uint32_t mode, iface_mask, samples;
+    uint64_t source_left;
     uint64_t cmd_count;
     uint64_t result_bytes;
     uint32_t results_crc;
@@ -133,7 +134,7 @@ static void res_pump(ef_board *b)
     for (;;) {
         if (b->mode == EF_MODE_SOURCE && b->source_left && b->res_next - b->res_acked < b->info.window) {
             /* the source test makes its frames only as the window opens */
-            const uint32_t n = b->source_left < RESULT_PAYLOAD ? b->source_left : RESULT_PAYLOAD;
+            const uint32_t n = b->source_left < RESULT_PAYLOAD ? (uint32_t)b->source_left : RESULT_PAYLOAD;
             memset(b->cur, (int)(b->res_next & 0xff), n);
             b->source_left -= n;
             b->result_bytes += n;
@@ -202,7 +203,7 @@ static void take_start(ef_board *b, const ef_frame *f)
     b->iface_mask = ef_get32(f->payload);
     b->samples = ef_get32(f->payload + 4);
     b->mode = ef_get32(f->payload + 8);
-    b->source_left = ef_get32(f->payload + 12) * 1024u;
+    b->source_left = (uint64_t)ef_get32(f->payload + 12) * 1024u;
     b->cmd_count = ef_get64(f->payload + 16);
     b->st.state = EF_BS_RUNNING;
     if (b->mode > EF_MODE_SOURCE) {
@@ -329,6 +330,10 @@ static void take(ef_board *b, const ef_frame *f, int *ack)
 
 int ef_board_rx(ef_board *b, const uint8_t *buf, size_t len)
 {
+    if (len == 0) {
+        res_pump(b);
+        return 0;
+    }
     if (b->rx_len + len > b->rx_cap) {
         size_t cap = b->rx_cap ? b->rx_cap : 2 * EF_BOARD_FRAME_MAX;
         while (cap < b->rx_len + len)
@@ -375,6 +380,8 @@ size_t ef_board_tx(ef_board *b, uint8_t *buf, size_t cap)
 {
     res_pump(b);
     size_t n = b->tx_len - b->tx_head;
+    if (n == 0)
+        return 0;
     if (n > cap)
         n = cap;
     memcpy(buf, b->tx + b->tx_head, n);
@@ -422,7 +429,8 @@ static void clear_run(ef_board *b)
     b->res_acked = b->res_sent = b->res_next = 0;
     b->rx_len = b->tx_head = b->tx_len = b->cur_len = 0;
     b->nak_pending = 0;
-    b->mode = b->iface_mask = b->samples = b->source_left = 0;
+    b->mode = b->iface_mask = b->samples = 0;
+    b->source_left = 0;
     b->cmd_count = b->result_bytes = 0;
     b->results_crc = 0;
     memset(&b->st, 0, sizeof b->st);

@@ -19,6 +19,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "cli.h"
 #include "edgeflag.h"
@@ -86,7 +87,12 @@ static void check_render(int argc, char **argv)
     int rc2 = ef_cli_render_parse(argc, argv, &b);
     if (rc != rc2) FAIL("render: %d then %d", rc, rc2);
     if (has_help(argc, argv) != (rc == EF_CLI_EXIT_OK)) FAIL("render: --help and exit %d disagree", rc);
-    if (rc != -1 && rc != EF_CLI_EXIT_OK && rc != EF_CLI_EXIT_USAGE) FAIL("render: exit code %d", rc);
+    /* exit 4 before any work: the output names an existing directory (docs/cli.md) */
+    struct stat st;
+    if (rc == EF_CLI_EXIT_OUTPUT && (!a.output || stat(a.output, &st) != 0 || !S_ISDIR(st.st_mode)))
+        FAIL("render: exit 4 for an output that is not a directory");
+    if (rc != -1 && rc != EF_CLI_EXIT_OK && rc != EF_CLI_EXIT_USAGE && rc != EF_CLI_EXIT_OUTPUT)
+        FAIL("render: exit code %d", rc);
     if (rc != -1) return;
     if (!a.input || !a.output || !a.output[0]) FAIL("render: accepted without input or output");
     if (!ef_samples_valid(a.samples)) FAIL("render: accepted %" PRId32 " samples", a.samples);

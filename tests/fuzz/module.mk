@@ -12,8 +12,8 @@ FUZZ_BUILD ?= build-fuzz
 FUZZ_CC ?= clang
 FUZZ_SECONDS ?= 60
 FUZZ_SMOKE_SECONDS ?= 10
-FUZZ_TARGETS ?= svg scene cli_args decimal render vec_read board
-FUZZ_ALL := svg scene cli_args decimal render vec_read board
+FUZZ_TARGETS ?= svg scene cli_args decimal render vec_read board host_results
+FUZZ_ALL := svg scene cli_args decimal render vec_read board host_results
 # ASan + UBSan, plus clang's integer checks with the intended wraps listed in
 # tests/sanitize/integer.ignorelist (as in `make test-integer`).
 FUZZ_SAN := -fsanitize=address,undefined,integer -fsanitize-ignorelist=tests/sanitize/integer.ignorelist \
@@ -47,6 +47,8 @@ $(BUILD)/fuzz/fuzz_render: $(ORACLE_OBJ)
 $(BUILD)/fuzz/fuzz_cli_args: $(FUZZ_CLI_OBJ)
 $(BUILD)/fuzz/fuzz_vec_read: $(RTLV_OBJ)
 $(BUILD)/fuzz/fuzz_board: $(HOST_BOARD_OBJ) $(RTLV_OBJ)
+FUZZ_HOST_OBJ = $(BUILD)/host/host_link.o $(BUILD)/host/transport.o $(HOST_BOARD_OBJ)
+$(BUILD)/fuzz/fuzz_host_results: $(FUZZ_HOST_OBJ) $(FUZZ_CLI_OBJ)
 $(BUILD)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/fuzz_common.h $(LIB_A)
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) -Itests/fuzz -Itests/oracle -Icli -Ihost -Ihost/board $(CFLAGS_ALL) -fsanitize=fuzzer $< \
@@ -54,6 +56,7 @@ $(BUILD)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/fuzz_common.h $(LIB_A)
 	    $(if $(filter fuzz_cli_args,$(notdir $@)),$(FUZZ_CLI_OBJ)) \
 	    $(if $(filter fuzz_vec_read,$(notdir $@)),$(RTLV_OBJ)) \
 	    $(if $(filter fuzz_board,$(notdir $@)),$(HOST_BOARD_OBJ) $(RTLV_OBJ)) \
+	    $(if $(filter fuzz_host_results,$(notdir $@)),$(FUZZ_HOST_OBJ) $(FUZZ_CLI_OBJ)) \
 	    -o $@ $(LDFLAGS_ALL) $(LIB_A) $(PNG_LIBS) $(EXPAT_LIBS) $(VEC_LIBS)
 
 fuzz: fuzz-build
