@@ -56,7 +56,7 @@ typedef struct hl {
     uint8_t *rbuf;
     size_t rlen, rcap;
     uint32_t res_next;
-    int resend_asked, unacked;
+    int resend_asked, unacked, ackr_due;
     FILE *part;
     uint64_t part_bytes, records, counts[EF_IF_COUNT];
     uint32_t results_crc;
@@ -138,8 +138,21 @@ static int fail(hl *h, int code, const char *fmt, const char *detail)
     return code;
 }
 
+/* A transport's failure: what failed, the generic text, and the
+ * transport's own words when it has them. */
+static int link_fail(hl *h, const char *what, int err)
+{
+    const char *d = h->ops->detail ? h->ops->detail(h->l) : NULL;
+    fprintf(stderr, "edgeflag-host: %s failed: %s%s%s\n", what, ef_host_strerror(err), d && *d ? ": " : "",
+            d ? d : "");
+    return hx_of(err);
+}
+
 static int lost(hl *h, int err)
 {
+    const char *d = h->ops->detail ? h->ops->detail(h->l) : NULL;
+    if (d && *d)
+        fprintf(stderr, "edgeflag-host: %s\n", d);
     fprintf(stderr,
             "edgeflag-host: %s after %" PRIu32 " of %" PRIu32 " frames acknowledged and %" PRIu32
             " result frames kept in %s; run the same command with --resume to continue\n",
@@ -301,8 +314,10 @@ static int take(hl *h, const ef_frame *f, int *progress)
     case EF_FT_RESULT:
     case EF_FT_DONE:
     case EF_FT_ERROR:
-        if (f->seq < h->res_next)
-            return 0;                          /* a copy of one already kept */
+        if (f->seq < h->res_next) {            /* a copy of one already kept: say so again, */
+            h->ackr_due = 1;                   /* or copies could fill the board's window */
+            return 0;
+        }
         if (f->seq > h->res_next) {            /* one was lost: ask again, once */
             if (!h->resend_asked) {
                 const int r = send_ackr(h, 1);
@@ -524,8 +539,7 @@ static int run(hl *h)
     ef_host_ident id;
     if (r < 0)
         return r == EF_HOST_ENODEV || r == EF_HOST_ETIMEDOUT ? lost(h, r)
-                                                               : fail(h, hx_of(r), "identify failed: %s",
-                                                                      ef_host_strerror(r));
+                                                               : link_fail(h, "identify", r);
     if ((r = ef_host_ident_parse(raw, &id)) != 0) {
         if (memcmp(raw, EF_BOARD_MAGIC, 4) == 0) {
             char b[64];
@@ -557,8 +571,7 @@ static int run(hl *h)
         uint8_t st[EF_BOARD_STATUS_LEN];
         if ((r = h->ops->status(h->l, st)) < 0)
             return r == EF_HOST_ENODEV || r == EF_HOST_ETIMEDOUT ? lost(h, r)
-                                                                   : fail(h, hx_of(r), "status failed: %s",
-                                                                          ef_host_strerror(r));
+                                                                   : link_fail(h, "status", r);
         if (memcmp(st, EF_BOARD_MAGIC, 4) != 0)
             return fail(h, EF_HX_BOARD, "the board's status answer is malformed%s", "");
         const uint32_t rx_seq = ef_get32(st + 8), res_made = ef_get32(st + 12);
@@ -592,8 +605,7 @@ static int run(hl *h)
         h->last_seq = (uint32_t)((h->ncmds + per - 1) / per) + 1;
         if ((r = h->ops->reset(h->l)) < 0)
             return r == EF_HOST_ENODEV || r == EF_HOST_ETIMEDOUT ? lost(h, r)
-                                                                   : fail(h, hx_of(r), "reset failed: %s",
-                                                                          ef_host_strerror(r));
+                                                                   : link_fail(h, "reset", r);
         h->part = fopen(h->part_path, "w+b");
         if (!h->part)
             return fail(h, EF_HX_OUTPUT, "cannot create the results: %s", strerror(errno));
@@ -614,8 +626,7 @@ static int run(hl *h)
     while (!h->done) {
         while (h->next <= h->last_seq && h->next - h->base < h->window) {
             if ((r = put_frame(h, h->next)) < 0)
-                return hx_of(r) == EF_HX_LOST ? lost(h, r) : fail(h, hx_of(r), "sending failed: %s",
-                                                                   ef_host_strerror(r));
+                return hx_of(r) == EF_HX_LOST ? lost(h, r) : link_fail(h, "sending", r);
             h->next++;
         }
         const int can_send = h->next <= h->last_seq && h->next - h->base < h->window;
@@ -624,13 +635,13 @@ static int run(hl *h)
             h->rlen = 0;                       /* cannot happen with frames <= FRAME_MAX; be safe */
         r = h->ops->read(h->l, h->rbuf + h->rlen, h->rcap - h->rlen, &got, can_send ? 0 : 10);
         if (r < 0 && r != EF_HOST_ETIMEDOUT)
-            return hx_of(r) == EF_HX_LOST ? lost(h, r) : fail(h, hx_of(r), "receiving failed: %s",
-                                                               ef_host_strerror(r));
+            return hx_of(r) == EF_HX_LOST ? lost(h, r) : link_fail(h, "receiving", r);
         h->rlen += got;
         int progress = 0;
         if ((code = take_bytes(h, &progress)) != 0)
             return code;
-        if (h->unacked >= ACKR_EVERY || (h->done && h->unacked)) {
+        if (h->unacked >= ACKR_EVERY || (h->done && h->unacked) || h->ackr_due) {
+            h->ackr_due = 0;
             if ((r = send_ackr(h, 0)) != 0)
                 return r >= 1000 ? lost(h, -(r - 1000)) : r;
         }

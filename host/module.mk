@@ -2,20 +2,14 @@
 # board engine (host/board/) that the simulated and emulated boards run.
 # docs/board.md.  USB and GPIO come from host/usb.mk and host/gpio.mk, which
 # build their transport when libusb-1.0 / libgpiod is installed and a table
-# saying "absent" otherwise; without those files both are absent.
+# saying "built without ..." otherwise (WITH_USB=0 / WITH_GPIO=0 force that).
 HOST_BOARD_SRC := $(wildcard host/board/*.c)
 HOST_SRC := host/main.c host/host_link.c host/bench_link.c host/transport.c host/transport_sim.c \
-            host/transport_null.c host/transport_absent.c
+            host/transport_null.c
 HOST_CPPFLAGS := -Ihost -Ihost/board -Icli
 HOST_LIBS := $(shell $(PKG_CONFIG) --libs zlib 2>/dev/null || echo -lz)
--include host/usb.mk
--include host/gpio.mk
-ifeq ($(wildcard host/usb.mk),)
-HOST_CPPFLAGS += -DEF_ABSENT_USB
-endif
-ifeq ($(wildcard host/gpio.mk),)
-HOST_CPPFLAGS += -DEF_ABSENT_GPIO
-endif
+include host/usb.mk
+include host/gpio.mk
 HOST_BOARD_OBJ := $(HOST_BOARD_SRC:%.c=$(BUILD)/%.o)
 HOST_OBJ := $(HOST_SRC:%.c=$(BUILD)/%.o) $(HOST_USB_OBJS) $(HOST_GPIO_OBJS)
 # the edgeflag CLI's objects but its main: verify runs `edgeflag check` in-process

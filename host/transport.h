@@ -76,6 +76,9 @@ typedef struct ef_transport_ops {
     void (*close)(ef_link *l);
     /* Build-time note for --version ("libusb 1.0.26", "absent: built without libusb"). */
     const char *(*version)(void);
+    /* The last failure in the transport's own words (which transfer, which
+     * line, the library's error name), or "" / NULL op when there is none. */
+    const char *(*detail)(ef_link *l);
 } ef_transport_ops;
 
 extern const ef_transport_ops ef_transport_usb;

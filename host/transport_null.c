@@ -108,4 +108,4 @@ static const char *null_version(void)
 }
 
 const ef_transport_ops ef_transport_null = { "null", null_probe, null_open, null_identify, null_status, null_reset,
-                                             null_write, null_flush, null_read, null_close, null_version };
+                                             null_write, null_flush, null_read, null_close, null_version, NULL };

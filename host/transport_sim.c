@@ -331,4 +331,4 @@ static const char *sim_version(void)
 }
 
 const ef_transport_ops ef_transport_sim = { "sim", sim_probe, sim_open, sim_identify, sim_status, sim_reset,
-                                            sim_write, sim_flush, sim_read, sim_close, sim_version };
+                                            sim_write, sim_flush, sim_read, sim_close, sim_version, NULL };

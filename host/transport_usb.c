@@ -859,6 +859,11 @@ static const char *usb_version(void)
     return v;
 }
 
+static const char *usb_detail(ef_link *l)
+{
+    return l ? l->err : "";
+}
+
 const ef_transport_ops ef_transport_usb = {
     .name = "usb",
     .probe = usb_probe,
@@ -871,4 +876,5 @@ const ef_transport_ops ef_transport_usb = {
     .read = usb_read,
     .close = usb_close,
     .version = usb_version,
+    .detail = usb_detail,
 };

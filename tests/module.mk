@@ -72,6 +72,7 @@ include tests/fuzz/module.mk
 include tests/bad/module.mk
 include tests/vectors/module.mk
 include tests/check/module.mk
+include tests/host/gpio.mk
 include tests/rtl/module.mk
 include tests/regress/module.mk
 include tests/host/module.mk

@@ -20,6 +20,9 @@ if [ "${1:-}" = test ] || [ "${1:-}" = portability ]; then
     pkgs+=(parallel)
     # edgeflag-host's USB transport and its emulated board (test-host-usb, docs/board-usb.md)
     pkgs+=(libusb-1.0-0-dev umockdev libumockdev-dev)
+    # the GPIO transport's tests (docs/board-gpio.md 8): libgpiod 1.6, umockdev's emulated chip, and
+    # meson + ninja to build libgpiod 2.3 (the v2 API) into build/ from ../shared when present
+    pkgs+=(libgpiod-dev libumockdev-dev umockdev meson ninja-build)
     # `make portability` builds static aarch64 and s390x (big-endian) programs
     # with clang --target and runs them under qemu-user.  gcc-aarch64-linux-gnu
     # cannot be installed beside gcc-multilib in Debian 12; these can.  Best

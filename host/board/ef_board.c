@@ -161,6 +161,8 @@ static int flush_results(ef_board *b)
 {
     if (!b->cur_len)
         return 0;
+    /* one CRC call per frame, not per record: the same chained value */
+    b->results_crc = ef_frame_crc32(b->results_crc, b->cur, b->cur_len);
     const int r = res_push(b, EF_FT_RESULT, b->cur, (uint32_t)b->cur_len);
     b->cur_len = 0;
     return r;
@@ -174,7 +176,6 @@ int ef_board_emit(ef_board *b, const uint8_t *record, size_t len)
     b->cur_len += len;
     b->st.records++;
     b->result_bytes += len;
-    b->results_crc = ef_frame_crc32(b->results_crc, record, len);
     return 0;
 }
 

@@ -143,7 +143,7 @@ static int f_read(ef_link *l, uint8_t *buf, size_t cap, size_t *got, int t)
 }
 
 static const ef_transport_ops FUZZ_OPS = { "fuzz", f_probe, NULL, f_identify, f_status, f_reset,
-                                           f_write, f_flush, f_read, f_close, f_version };
+                                           f_write, f_flush, f_read, f_close, f_version, NULL };
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
