@@ -522,6 +522,15 @@ static int prepare_dir(hl *h)
     }
     snprintf(h->part_path, sizeof h->part_path, "%s/.results.part", h->dir);
     snprintf(h->state_path, sizeof h->state_path, "%s/.resume", h->dir);
+    if (!h->o->resume) {
+        /* a new run: results of an earlier one must not outlive it looking complete */
+        char path[4200];
+        snprintf(path, sizeof path, "%s/vectors.actual.bin", h->dir);
+        if (unlink(path) != 0 && errno != ENOENT) {
+            fprintf(stderr, "edgeflag-host: %s: cannot remove the previous results: %s\n", path, strerror(errno));
+            return EF_HX_OUTPUT;
+        }
+    }
     return 0;
 }
 
