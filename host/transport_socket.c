@@ -200,6 +200,32 @@ static int send_all(sock_link *s, const uint8_t *buf, size_t len, int timeout_ms
     return 0;
 }
 
+/* One non-blocking connect bounded by the timeout: 0 with s->fd connected, or an errno. */
+static int connect_one(sock_link *s, int family, const struct sockaddr *sa, socklen_t salen, int timeout_ms)
+{
+    s->fd = socket(family, SOCK_STREAM | SOCK_CLOEXEC, 0);
+    int e = 0;
+    if (s->fd < 0 || fcntl(s->fd, F_SETFL, O_NONBLOCK) < 0) {
+        e = errno;
+    } else if (connect(s->fd, sa, salen) < 0) {
+        e = errno;
+        if (e == EINPROGRESS) {
+            struct pollfd pfd = { s->fd, POLLOUT, 0 };
+            socklen_t el = sizeof e;
+            const int p = poll(&pfd, 1, timeout_ms);
+            if (p == 0)
+                e = ETIMEDOUT;
+            else if (p < 0 || getsockopt(s->fd, SOL_SOCKET, SO_ERROR, &e, &el) < 0)
+                e = errno;
+        }
+    }
+    if (e && s->fd >= 0) {
+        close(s->fd);
+        s->fd = -1;
+    }
+    return e;
+}
+
 /* "unix:PATH" or "tcp:HOST:PORT" ("tcp:[v6]:PORT"): a connected, non-blocking socket. */
 static int dial(sock_link *s, const char *addr, int timeout_ms, char *err, size_t errlen)
 {
@@ -235,37 +261,29 @@ static int dial(sock_link *s, const char *addr, int timeout_ms, char *err, size_
         snprintf(err, errlen, "--connect '%s': expected unix:PATH or tcp:HOST:PORT", addr ? addr : "");
         return EF_HOST_EINVAL;
     }
-    int r = 0;
-    s->fd = socket(family, SOCK_STREAM | SOCK_CLOEXEC, 0);
-    if (s->fd < 0 || fcntl(s->fd, F_SETFL, O_NONBLOCK) < 0) {
-        snprintf(err, errlen, "%s: socket: %s", addr, strerror(errno));
-        r = EF_HOST_EIO;
-    } else if (connect(s->fd, sa, salen) < 0) {
-        int e = errno;
-        if (e == EINPROGRESS) {
-            struct pollfd pfd = { s->fd, POLLOUT, 0 };
-            socklen_t el = sizeof e;
-            const int p = poll(&pfd, 1, timeout_ms);
-            if (p == 0)
-                e = ETIMEDOUT;
-            else if (p < 0 || getsockopt(s->fd, SOL_SOCKET, SO_ERROR, &e, &el) < 0)
-                e = errno;
-        }
-        if (e) {
-            snprintf(err, errlen, "%s: %s (is the board, bridge or simulation listening?)", addr, strerror(e));
-            r = e == EACCES || e == EPERM ? EF_HOST_EACCESS
-              : e == ECONNREFUSED || e == ENOENT || e == ETIMEDOUT || e == EHOSTUNREACH || e == ENETUNREACH
-                      ? EF_HOST_ENOTFOUND
-                      : EF_HOST_EIO;
-        }
-    }
-    if (!r && family != AF_UNIX) {
-        const int one = 1;
-        setsockopt(s->fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
+    /* every address the name has (a name may give ::1 and 127.0.0.1), the first that answers */
+    int e = 0;
+    for (struct addrinfo *i = ai; !ai || i; i = i ? i->ai_next : NULL) {
+        if (i)
+            sa = i->ai_addr, salen = i->ai_addrlen, family = i->ai_family;
+        e = connect_one(s, family, sa, salen, timeout_ms);
+        if (!e || !ai)
+            break;
     }
     if (ai)
         freeaddrinfo(ai);
-    return r;
+    if (e) {
+        snprintf(err, errlen, "%s: %s (is the board, bridge or simulation listening?)", addr, strerror(e));
+        return e == EACCES || e == EPERM ? EF_HOST_EACCESS
+             : e == ECONNREFUSED || e == ENOENT || e == ETIMEDOUT || e == EHOSTUNREACH || e == ENETUNREACH
+                     ? EF_HOST_ENOTFOUND
+                     : EF_HOST_EIO;
+    }
+    if (family != AF_UNIX) {
+        const int one = 1;
+        setsockopt(s->fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
+    }
+    return 0;
 }
 
 static int sock_open(ef_link **out, const ef_host_opts *o, char *err, size_t errlen)

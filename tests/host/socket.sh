@@ -96,6 +96,8 @@ board --tcp 0 --vectors tiger/vectors.bin
 run "verify the tiger over tcp:127.0.0.1:PORT: PASS" 0 'check: PASS: 6 comparisons' -- \
     "$H" verify tiger/vectors.bin "${LINK[@]}" --connect "tcp:127.0.0.1:$port" --results r1 --json
 same "tcp: results identical to the simulated board's" r1/vectors.actual.bin
+run "verify over tcp:localhost:PORT (every address of the name tried): PASS" 0 'check: PASS: 6 comparisons' -- \
+    "$H" verify tiger/vectors.bin "${LINK[@]}" --connect "tcp:localhost:$port" --results r1b
 if [ -x "$SB" ]; then
     stop_board
     rm -f e.sock
@@ -162,6 +164,8 @@ run "tcp: connection refused: exit 7 naming the address" 7 "tcp:127.0.0.1:$freep
     "$H" verify tiger/vectors.bin --transport socket --connect "tcp:127.0.0.1:$freeport"
 run "unix: no such socket: exit 7 naming the address" 7 "unix:$tmp/none.sock: No such file" -- \
     "$H" verify tiger/vectors.bin --transport socket --connect "unix:$tmp/none.sock"
+run "an unknown host: exit 7 naming the address" 7 "tcp:nosuchhost.invalid:$freeport: " -- \
+    "$H" verify tiger/vectors.bin --transport socket --connect "tcp:nosuchhost.invalid:$freeport"
 run "a malformed --connect: exit 2" 2 'expected unix:PATH or tcp:HOST:PORT' -- \
     "$H" verify tiger/vectors.bin --transport socket --connect "udp:1.2.3.4"
 run "socket without --connect: exit 2" 2 'needs --connect' -- \
