@@ -5,8 +5,10 @@
  * own answers to the control frames (identify, status, reset in the byte
  * stream) are tested end to end through edgeflag-host's socket transport.
  *
- * usage: sockboard PATH   (serves one connection at a time until killed; the
- * run outlives a connection, as a board's does)
+ * usage: sockboard PATH [CUT]   (serves one connection at a time until killed;
+ * the run outlives a connection, as a board's does).  CUT > 0 closes the first
+ * connection once CUT bytes have come from the host, in the middle of a frame
+ * when CUT falls there: a board that went away mid-stream, for --resume.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
@@ -22,6 +24,7 @@
 #include "ef_board.h"
 
 static volatile sig_atomic_t stop;
+static unsigned long long cut;     /* bytes from the host until the connection is cut (0: never) */
 
 static void on_term(int sig)
 {
@@ -53,9 +56,13 @@ static void serve(ef_board *b, int fd)
                 out_pos += (size_t)n;
         }
         if (p.revents & (POLLIN | POLLHUP | POLLERR)) {
-            const ssize_t n = recv(fd, in, sizeof in, 0);
+            const ssize_t n = recv(fd, in, cut && cut < sizeof in ? (size_t)cut : sizeof in, 0);
             if (n == 0 || (n < 0 && errno != EAGAIN && errno != EINTR))
                 break;
+            if (cut && n > 0 && (cut -= (unsigned long long)n) == 0) {
+                ef_board_rx(b, in, (size_t)n);   /* the last bytes arrive, then the link is gone */
+                break;
+            }
             if (n > 0 && ef_board_rx(b, in, (size_t)n) != 0) {
                 fprintf(stderr, "sockboard: the receive buffer is full (the host broke the window)\n");
                 break;
@@ -69,10 +76,12 @@ static void serve(ef_board *b, int fd)
 int main(int argc, char **argv)
 {
     struct sockaddr_un a = { .sun_family = AF_UNIX };
-    if (argc != 2 || strlen(argv[1]) >= sizeof a.sun_path) {
-        fprintf(stderr, "usage: sockboard PATH\n");
+    if (argc < 2 || argc > 3 || strlen(argv[1]) >= sizeof a.sun_path) {
+        fprintf(stderr, "usage: sockboard PATH [CUT]\n");
         return 2;
     }
+    if (argc == 3)
+        cut = strtoull(argv[2], NULL, 10);
     strcpy(a.sun_path, argv[1]);
     const struct sigaction sa = { .sa_handler = on_term };
     sigaction(SIGTERM, &sa, NULL);

@@ -110,6 +110,17 @@ if [ -x "$SB" ]; then
     run "again on the same engine: the reset control frame ends the finished run, PASS" 0 'check: PASS: 6 comparisons' -- \
         "$H" verify tiger/vectors.bin "${LINK[@]}" --connect "unix:$tmp/e.sock" --results r3
     same "the second run's results identical to the simulated board's" r3/vectors.actual.bin
+    # the link cut in the middle of a frame, 100,001 bytes in (a DATA frame of 40 commands is 540 bytes)
+    stop_board
+    rm -f e.sock
+    "$SB" "$tmp/e.sock" 100001 2>sockboard.err &
+    bpid=$!
+    for _ in $(seq 100); do [ -S e.sock ] && break; sleep 0.05; done
+    run "the engine's link cut mid-frame: exit 5" 5 'went away.*--resume' -- \
+        "$H" verify tiger/vectors.bin "${LINK[@]}" --connect "unix:$tmp/e.sock" --results r4
+    run "the engine's link cut mid-frame: --resume: PASS" 0 'check: PASS: 6 comparisons' -- \
+        "$H" verify tiger/vectors.bin "${LINK[@]}" --connect "unix:$tmp/e.sock" --results r4 --resume
+    same "the engine's link cut mid-frame: results identical to the simulated board's" r4/vectors.actual.bin
     run "bench against the engine behind a socket" 0 'sink|source|loopback' -- \
         "$H" bench --transport socket --connect "unix:$tmp/e.sock" --mib 16
     sed 's/^/# engine: /' out.txt
