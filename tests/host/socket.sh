@@ -54,8 +54,8 @@ board() {
     done
     port=$(cat port 2>/dev/null)
 }
-# stat KEY: the board's last counter line's KEY
-stat() { tail -1 stats.txt 2>/dev/null | sed -n 's/.*"'"$1"'": \([0-9]*\).*/\1/p'; }
+# bstat KEY: the board's last counter line's KEY
+bstat() { tail -1 stats.txt 2>/dev/null | sed -n 's/.*"'"$1"'": \([0-9]*\).*/\1/p'; }
 
 # run NAME EXPECTED_EXIT STDERR_REGEX -- COMMAND...
 run() {
@@ -90,7 +90,7 @@ board --unix b.sock --vectors tiger/vectors.bin
 run "verify the tiger over unix: (40 commands a frame): PASS" 0 'check: PASS: 6 comparisons' -- \
     "$H" verify tiger/vectors.bin "${LINK[@]}" --connect "$SOCK" --results r0
 same "unix: results identical to the simulated board's" r0/vectors.actual.bin
-[ "$(stat dup)" = 0 ] && [ "$(stat naks)" = 0 ] && [ "$(stat resets)" = 1 ] && ok "the board took every frame once, no NAK, one reset" ||
+[ "$(bstat dup)" = 0 ] && [ "$(bstat naks)" = 0 ] && [ "$(bstat resets)" = 1 ] && ok "the board took every frame once, no NAK, one reset" ||
     bad "clean run's board counters" "$(tail -1 stats.txt)"
 board --tcp 0 --vectors tiger/vectors.bin
 run "verify the tiger over tcp:127.0.0.1:PORT: PASS" 0 'check: PASS: 6 comparisons' -- \
@@ -144,14 +144,14 @@ fault() {
     fi
     if [ "$want" = 0 ] || [ "$want" = 5 ]; then
         same "$name: results identical to the simulated board's" rf/vectors.actual.bin
-        [ "$(stat resets)" = 1 ] && ok "$name: the board was reset once (the first run's start only)" ||
+        [ "$(bstat resets)" = 1 ] && ok "$name: the board was reset once (the first run's start only)" ||
             bad "$name: board resets" "$(tail -1 stats.txt)"
     fi
 }
 fault "a host frame dropped" --drop 5 0 'PASS'
-[ "$(stat gap)" -ge 1 ] && ok "the dropped frame: the board saw the gap" || bad "drop: no gap seen" "$(tail -1 stats.txt)"
+[ "$(bstat gap)" -ge 1 ] && ok "the dropped frame: the board saw the gap" || bad "drop: no gap seen" "$(tail -1 stats.txt)"
 fault "a host frame corrupted" --corrupt 5 0 'PASS'
-[ "$(stat bad)" -ge 1 ] && ok "the corrupted frame: the board saw damage" || bad "corrupt: no damage" "$(tail -1 stats.txt)"
+[ "$(bstat bad)" -ge 1 ] && ok "the corrupted frame: the board saw damage" || bad "corrupt: no damage" "$(tail -1 stats.txt)"
 fault "a reply dropped" --drop-reply 3 0 'PASS'
 fault "a reply corrupted" --corrupt-reply 3 0 'PASS'
 fault "the connection closed mid-commands" --disconnect 6 5 'went away.*--resume'
@@ -188,6 +188,10 @@ run "bench --transport socket against pyboard" 0 'sink|source|loopback' -- \
     "$H" bench --transport socket --connect "$SOCK" --mib 4
 sed 's/^/# pyboard: /' out.txt
 stop_board
+
+run "--version names the socket transport" 0 '' -- "$H" --version
+grep -q '^  socket .*--connect unix:PATH or tcp:HOST:PORT' out.txt && ok "--version lists socket" ||
+    bad "--version" "$(cat out.txt)"
 
 echo "$pass passed, $fail failed"
 [ "$fail" = 0 ]
