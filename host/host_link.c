@@ -334,15 +334,18 @@ static int take(hl *h, const ef_frame *f, int *progress)
             describe_error(f, why, sizeof why);
             return fail(h, EF_HX_BOARD, "the board reports an error: %s", why);
         }
-        h->res_next++;
-        h->unacked++;
         if (f->type == EF_FT_DONE) {
+            /* DONE is acknowledged only once the results are on disk (run's end):
+             * a board keeps it until then, so a host killed in between gets it
+             * again on --resume */
             if (f->len != EF_BOARD_DONE_LEN)
                 return fail(h, EF_HX_BOARD, "the board sent a malformed DONE%s", "");
             memcpy(h->done_payload, f->payload, EF_BOARD_DONE_LEN);
             h->done = 1;
             return 0;
         }
+        h->res_next++;
+        h->unacked++;
         h->rep->result_frames++;
         if (take_records(h, f->payload, f->len) != 0) {
             snprintf(why, sizeof why, "result frame %" PRIu32 " holds a record that is not a vectors.bin record "
@@ -352,7 +355,7 @@ static int take(hl *h, const ef_frame *f, int *progress)
         if (fwrite(f->payload, 1, f->len, h->part) != f->len)
             return fail(h, EF_HX_OUTPUT, "cannot write the results: %s", strerror(errno));
         h->part_bytes += f->len;
-        h->results_crc = ef_frame_crc32(h->results_crc, f->payload, f->len);
+        h->results_crc = ef_frame_crc32_combine(h->results_crc, f->payload_crc, f->len);
         return 0;
     default:
         snprintf(why, sizeof why, "the board sent a frame of unknown type 0x%02x", f->type);
@@ -522,6 +525,15 @@ static int prepare_dir(hl *h)
     }
     snprintf(h->part_path, sizeof h->part_path, "%s/.results.part", h->dir);
     snprintf(h->state_path, sizeof h->state_path, "%s/.resume", h->dir);
+    if (!h->o->resume) {
+        /* a new run: results of an earlier one must not outlive it looking complete */
+        char path[4200];
+        snprintf(path, sizeof path, "%s/vectors.actual.bin", h->dir);
+        if (unlink(path) != 0 && errno != ENOENT) {
+            fprintf(stderr, "edgeflag-host: %s: cannot remove the previous results: %s\n", path, strerror(errno));
+            return EF_HX_OUTPUT;
+        }
+    }
     return 0;
 }
 
@@ -675,8 +687,15 @@ static int run(hl *h)
         return code;
     fclose(h->part);
     h->part = NULL;
-    unlink(h->part_path);
+    /* the resume state first: killed between the two, --resume says there is
+     * nothing to resume, and the results are whole */
     unlink(h->state_path);
+    unlink(h->part_path);
+    /* now DONE may go; a board that misses this ACKR still holds a finished run */
+    uint8_t p[4], fr[EF_BOARD_HEADER + 4 + EF_BOARD_TRAILER];
+    ef_put32(p, h->res_next + 1);
+    (void)h->ops->write(h->l, fr, ef_frame_put(fr, EF_FT_ACKR, 0, 0, p, 4), h->o->timeout_ms);
+    (void)h->ops->flush(h->l, h->o->timeout_ms);
     return EF_HX_OK;
 }
 

@@ -464,7 +464,7 @@ int main(int argc, char **argv)
     if (strcmp(argv[1], "--version") == 0) {
         printf("edgeflag-host %s (board protocol %d)\n", EF_VERSION_STRING, EF_BOARD_PROTOCOL);
         for (size_t i = 0; i < NTRANSPORTS; i++)
-            printf("  %-6s %s\n", TRANSPORTS[i]->name, TRANSPORTS[i]->version());
+            printf("  %-5s %s\n", TRANSPORTS[i]->name, TRANSPORTS[i]->version());
         return EF_HX_OK;
     }
     args a;

@@ -38,6 +38,7 @@ typedef struct sim_link {
     ef_board *b;
     FILE *log;
     int gone, stalled;
+    int reply_faults;           /* drop-reply or corrupt-reply asked for: replies go frame by frame */
     struct { int kind; uint64_t at; } fault[MAX_FAULTS];
     int nfaults;
     uint64_t wframes, rframes;
@@ -82,6 +83,8 @@ static int parse_faults(sim_link *s, const char *text, char *err, size_t errlen)
             return EF_HOST_EINVAL;
         }
         s->fault[s->nfaults].kind = kind;
+        if (kind == F_DROP_REPLY || kind == F_CORRUPT_REPLY)
+            s->reply_faults = 1;
         s->fault[s->nfaults].at = n;
         s->nfaults++;
         p = comma ? comma + 1 : NULL;
@@ -288,12 +291,19 @@ static int sim_read(ef_link *l, uint8_t *buf, size_t cap, size_t *got, int timeo
     *got = 0;
     if (s->gone)
         return EF_HOST_ENODEV;
-    if (!s->stalled) {
+    if (!s->stalled && s->reply_faults) {
         const int r = pull(s);
         if (r)
             return r;
     }
     size_t n = s->out_len - s->out_pos;
+    if (n == 0 && !s->stalled && !s->reply_faults) {
+        /* no reply to drop or damage: the board's bytes straight into the host's buffer */
+        n = ef_board_tx(s->b, buf, cap);
+        *got = n;
+        if (n)
+            return 0;
+    }
     if (n == 0) {
         nap_ms(timeout_ms);             /* nothing will come: a board would be silent this long */
         return EF_HOST_ETIMEDOUT;

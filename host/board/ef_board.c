@@ -124,7 +124,12 @@ static int res_push(ef_board *b, uint8_t type, const uint8_t *payload, uint32_t 
     if (!f)
         return -1;
     b->res[k].bytes = f;
-    b->res[k].size = ef_frame_put(f, type, 0, b->res_next, payload, len);
+    uint32_t cp;
+    b->res[k].size = ef_frame_put_crc(f, type, 0, b->res_next, payload, len, &cp);
+    if (type == EF_FT_RESULT) {        /* the results' CRC for DONE, from the same pass */
+        b->results_crc = ef_frame_crc32_combine(b->results_crc, cp, len);
+        b->result_bytes += len;
+    }
     b->res_next++;
     return 0;
 }
@@ -140,9 +145,7 @@ static void res_pump(ef_board *b)
                 const uint32_t n = b->source_left < RESULT_PAYLOAD ? (uint32_t)b->source_left : RESULT_PAYLOAD;
                 memset(b->cur, (int)(b->res_next & 0xff), n);
                 b->source_left -= n;
-                b->result_bytes += n;
-                b->results_crc = ef_frame_crc32(b->results_crc, b->cur, n);
-                (void)res_push(b, EF_FT_RESULT, b->cur, n);
+                (void)res_push(b, EF_FT_RESULT, b->cur, n);   /* counts its bytes and CRC */
             } else if (b->source_end == 1) {
                 uint8_t d[EF_BOARD_DONE_LEN] = { 0 };
                 ef_put64(d + 8, b->result_bytes);
@@ -165,8 +168,6 @@ static int flush_results(ef_board *b)
 {
     if (!b->cur_len)
         return 0;
-    /* one CRC call per frame, not per record: the same chained value */
-    b->results_crc = ef_frame_crc32(b->results_crc, b->cur, b->cur_len);
     const int r = res_push(b, EF_FT_RESULT, b->cur, (uint32_t)b->cur_len);
     b->cur_len = 0;
     return r;
@@ -179,7 +180,6 @@ int ef_board_emit(ef_board *b, const uint8_t *record, size_t len)
     memcpy(b->cur + b->cur_len, record, len);
     b->cur_len += len;
     b->st.records++;
-    b->result_bytes += len;
     return 0;
 }
 
@@ -238,8 +238,6 @@ static void take_data(ef_board *b, const ef_frame *f)
     case EF_MODE_SOURCE:
         return;
     case EF_MODE_LOOPBACK:
-        b->result_bytes += f->len;
-        b->results_crc = ef_frame_crc32(b->results_crc, f->payload, f->len);
         (void)res_push(b, EF_FT_RESULT, f->payload, f->len);
         return;
     default:

@@ -25,7 +25,15 @@ uint32_t ef_frame_crc32(uint32_t crc, const void *data, size_t n)
     return crc;
 }
 
-size_t ef_frame_seal(uint8_t *out, uint8_t type, uint8_t flags, uint32_t seq, uint32_t len)
+uint32_t ef_frame_crc32_combine(uint32_t crc_a, uint32_t crc_b, uint64_t len_b)
+{
+    return (uint32_t)crc32_combine(crc_a, crc_b, (z_off_t)len_b);
+}
+
+/* The frame's CRC from the header's and the payload's: the payload is read
+ * once, and its own CRC (which results and inputs are chained with) comes
+ * for free. */
+static size_t seal(uint8_t *out, uint8_t type, uint8_t flags, uint32_t seq, uint32_t len, uint32_t *payload_crc)
 {
     memcpy(out, EF_BOARD_MAGIC, 4);
     out[4] = type;
@@ -33,15 +41,29 @@ size_t ef_frame_seal(uint8_t *out, uint8_t type, uint8_t flags, uint32_t seq, ui
     out[6] = out[7] = 0;
     ef_put32(out + 8, seq);
     ef_put32(out + 12, len);
-    ef_put32(out + EF_BOARD_HEADER + len, ef_frame_crc32(0, out, EF_BOARD_HEADER + (size_t)len));
+    const uint32_t cp = ef_frame_crc32(0, out + EF_BOARD_HEADER, len);
+    ef_put32(out + EF_BOARD_HEADER + len, ef_frame_crc32_combine(ef_frame_crc32(0, out, EF_BOARD_HEADER), cp, len));
+    if (payload_crc)
+        *payload_crc = cp;
     return EF_BOARD_HEADER + (size_t)len + EF_BOARD_TRAILER;
+}
+
+size_t ef_frame_seal(uint8_t *out, uint8_t type, uint8_t flags, uint32_t seq, uint32_t len)
+{
+    return seal(out, type, flags, seq, len, NULL);
+}
+
+size_t ef_frame_put_crc(uint8_t *out, uint8_t type, uint8_t flags, uint32_t seq, const void *payload, uint32_t len,
+                        uint32_t *payload_crc)
+{
+    if (len)
+        memmove(out + EF_BOARD_HEADER, payload, len);
+    return seal(out, type, flags, seq, len, payload_crc);
 }
 
 size_t ef_frame_put(uint8_t *out, uint8_t type, uint8_t flags, uint32_t seq, const void *payload, uint32_t len)
 {
-    if (len)
-        memmove(out + EF_BOARD_HEADER, payload, len);
-    return ef_frame_seal(out, type, flags, seq, len);
+    return ef_frame_put_crc(out, type, flags, seq, payload, len, NULL);
 }
 
 int ef_frame_parse(const uint8_t *buf, size_t n, ef_frame *f, size_t *used)
@@ -58,8 +80,11 @@ int ef_frame_parse(const uint8_t *buf, size_t n, ef_frame *f, size_t *used)
     const size_t total = EF_BOARD_HEADER + (size_t)len + EF_BOARD_TRAILER;
     if (n < total)
         return EF_FRAME_MORE;
-    if (ef_frame_crc32(0, buf, EF_BOARD_HEADER + (size_t)len) != ef_get32(buf + EF_BOARD_HEADER + len))
+    const uint32_t ch = ef_frame_crc32(0, buf, EF_BOARD_HEADER);
+    const uint32_t cp = ef_frame_crc32(0, buf + EF_BOARD_HEADER, len);
+    if (ef_frame_crc32_combine(ch, cp, len) != ef_get32(buf + EF_BOARD_HEADER + len))
         return EF_FRAME_BAD;
+    f->payload_crc = cp;
     f->type = buf[4];
     f->flags = buf[5];
     f->seq = ef_get32(buf + 8);

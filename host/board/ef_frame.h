@@ -25,6 +25,7 @@ typedef struct ef_frame {
     uint8_t type, flags;
     uint32_t seq, len;
     const uint8_t *payload;  /* points into the parsed buffer */
+    uint32_t payload_crc;    /* CRC-32 of the payload alone, derived from the frame's */
 } ef_frame;
 
 enum {
@@ -39,6 +40,9 @@ size_t ef_frame_put(uint8_t *out, uint8_t type, uint8_t flags, uint32_t seq, con
 /* Writes only the header and trailer around a payload already at
  * out + EF_BOARD_HEADER (no copy); returns the frame's size. */
 size_t ef_frame_seal(uint8_t *out, uint8_t type, uint8_t flags, uint32_t seq, uint32_t len);
+/* The same, also giving the CRC-32 of the payload alone (one pass over it). */
+size_t ef_frame_put_crc(uint8_t *out, uint8_t type, uint8_t flags, uint32_t seq, const void *payload, uint32_t len,
+                        uint32_t *payload_crc);
 /* Parses the frame at buf[0..n). */
 int ef_frame_parse(const uint8_t *buf, size_t n, ef_frame *f, size_t *used);
 /* Offset of the next possible frame start ("EFB1" or a prefix of it at the
@@ -46,6 +50,8 @@ int ef_frame_parse(const uint8_t *buf, size_t n, ef_frame *f, size_t *used);
 size_t ef_frame_resync(const uint8_t *buf, size_t n);
 
 uint32_t ef_frame_crc32(uint32_t crc, const void *data, size_t n);
+/* CRC-32 of A then B from crc(A), crc(B) and B's length (zlib's crc32_combine). */
+uint32_t ef_frame_crc32_combine(uint32_t crc_a, uint32_t crc_b, uint64_t len_b);
 
 static inline void ef_put32(uint8_t *p, uint32_t v)
 {

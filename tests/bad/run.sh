@@ -18,6 +18,7 @@ case $build in /*) ;; *) build=$PWD/$build ;; esac
 EF=$build/edgeflag
 LC=$build/tests/tools/load_check
 VL=$build/tests/check/vec_load     # the vector readers, for the `check` entries
+EH=$build/edgeflag-host            # the `host` entries
 ext=${EF_BAD_EXT:-png}      # .pam for a WITH_PNG=0 build
 for b in "$EF" "$LC" "$VL"; do
     [ -x "$b" ] || { echo "bad: $b not built"; echo "0 passed, 1 failed"; exit 1; }
@@ -82,12 +83,48 @@ check_entry() {
     echo "ok   - $what -> $want${class:+ ($class)}"
 }
 
+# host_entry: one `edgeflag-host stream FILE --transport sim ARGS` entry (command
+# column "host"): a vectors file the host must refuse before sending anything —
+# the exit code (docs/board.md section 7), `edgeflag-host: FILE: MESSAGE` with the
+# reader's place in MESSAGE, and no results written.
+host_entry() {
+    rm -rf hostout
+    # shellcheck disable=SC2086
+    timeout 60 "$EH" stream "$file" --transport sim --results hostout --quiet $args >stdout 2>err
+    rc=$?
+    what="edgeflag-host stream $file${args:+ $args}"
+    msg=$(grep -m1 '^edgeflag-host: ' err)
+    if [ $rc -ge 124 ]; then
+        bad "$what" "exit $rc: killed by a signal or timed out (want $want)"; return
+    fi
+    if [ "$rc" != "$want" ]; then
+        bad "$what" "exit $rc, want $want"; return
+    fi
+    prefix="edgeflag-host: $file: "
+    case $msg in
+    "$prefix"*) text=${msg#"$prefix"} ;;
+    *) bad "$what" "message does not start with '$prefix'"; return ;;
+    esac
+    if ! printf '%s\n' "$text" | grep -Eq -- "$regex"; then
+        bad "$what" "message '$text' does not match /$regex/"; return
+    fi
+    if [ -e hostout/vectors.actual.bin ]; then
+        bad "$what" "results written for a refused input"; return
+    fi
+    pass=$((pass + 1))
+    echo "ok   - $what -> $want"
+}
+
 n=0
 while IFS=$'\t' read -r file want class regex where args command; do
     case $file in ''|'#'*|file) continue ;; esac
     n=$((n + 1))
     if [ "${command:-render}" = check ]; then
         check_entry
+        continue
+    fi
+    if [ "${command:-render}" = host ]; then
+        host_entry
         continue
     fi
     out=out$n.$ext

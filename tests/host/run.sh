@@ -136,6 +136,8 @@ run "another device (no magic): exit 6" 6 'did not answer identify as an edgefla
     "$H" stream small/vectors.bin --transport sim --sim-faults not-ours=1
 run "another protocol version: exit 6" 6 'protocol version 2' -- \
     "$H" stream small/vectors.bin --transport sim --sim-faults protocol=2
+[ ! -e small/board/vectors.actual.bin ] && ok "a failed run leaves no earlier run's results looking complete" ||
+    bad "an earlier run's vectors.actual.bin survived a failed run"
 run "bad --sim-faults: exit 2" 2 'is not KIND=N' -- "$H" stream small/vectors.bin --transport sim --sim-faults jam=1
 
 # --------------------------------------------------------------------- 3. wrong use
