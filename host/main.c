@@ -21,7 +21,7 @@
 #include "transport.h"
 
 static const ef_transport_ops *const TRANSPORTS[] = { &ef_transport_usb, &ef_transport_gpio, &ef_transport_sim,
-                                                      &ef_transport_null };
+                                                      &ef_transport_null, &ef_transport_socket };
 #define NTRANSPORTS (sizeof TRANSPORTS / sizeof TRANSPORTS[0])
 
 typedef struct args {
@@ -46,9 +46,10 @@ static void usage(FILE *f)
           "the board's results as vectors.actual.bin and (verify) checks them as `edgeflag check`.\n"
           "\n"
           "link options:\n"
-          "  --transport T        usb, gpio, sim, null or auto (default auto: the one board present;\n"
+          "  --transport T        usb, gpio, sim, null, socket or auto (default auto: the one board present;\n"
           "                       none or several is an error, never the simulated board)\n"
           "  --device SEL         usb: SERIAL, BUS:DEV or #INDEX (as `list` prints)\n"
+          "  --connect ADDR       socket: unix:PATH or tcp:HOST:PORT (docs/board.md 5.5)\n"
           "  --vid-pid V:P        usb: vendor and product id in hex (default 1209:0001)\n"
           "  --transfer-size N    usb: bytes per bulk transfer     --in-flight N  transfers in flight\n"
           "  --chip NAME          gpio: chip (gpiochip0 or /dev/gpiochip0)\n"
@@ -100,7 +101,7 @@ static int parse_uint(const char *s, unsigned long long max, unsigned long long 
 static int parse(int argc, char **argv, args *a)
 {
     enum { O_TRANSPORT = 256, O_DEVICE, O_VIDPID, O_TSIZE, O_INFLIGHT, O_CHIP, O_LINES, O_TIMEOUT, O_SIMSTATE,
-           O_SIMFAULTS, O_RESULTS, O_RESUME, O_FRAMECMDS, O_IFACES, O_JUNIT, O_DIFF, O_ERRORS, O_TRANS, O_MIB,
+           O_SIMFAULTS, O_CONNECT, O_RESULTS, O_RESUME, O_FRAMECMDS, O_IFACES, O_JUNIT, O_DIFF, O_ERRORS, O_TRANS, O_MIB,
            O_QUIET, O_JSON, O_HELP };
     static const struct option opts[] = {
         { "transport", required_argument, 0, O_TRANSPORT }, { "device", required_argument, 0, O_DEVICE },
@@ -108,6 +109,7 @@ static int parse(int argc, char **argv, args *a)
         { "in-flight", required_argument, 0, O_INFLIGHT },  { "chip", required_argument, 0, O_CHIP },
         { "lines", required_argument, 0, O_LINES },         { "timeout", required_argument, 0, O_TIMEOUT },
         { "sim-state", required_argument, 0, O_SIMSTATE },  { "sim-faults", required_argument, 0, O_SIMFAULTS },
+        { "connect", required_argument, 0, O_CONNECT },
         { "results", required_argument, 0, O_RESULTS },     { "resume", no_argument, 0, O_RESUME },
         { "frame-cmds", required_argument, 0, O_FRAMECMDS }, { "interfaces", required_argument, 0, O_IFACES },
         { "junit", required_argument, 0, O_JUNIT },         { "diff-image", required_argument, 0, O_DIFF },
@@ -124,7 +126,7 @@ static int parse(int argc, char **argv, args *a)
         switch (c) {
         case O_TRANSPORT:
             if (strcmp(optarg, "auto") != 0 && !find_transport(optarg))
-                return usage_error("--transport must be usb, gpio, sim, null or auto, not '%s'", optarg);
+                return usage_error("--transport must be usb, gpio, sim, null, socket or auto, not '%s'", optarg);
             a->transport = optarg;
             break;
         case O_DEVICE: a->link.device = optarg; break;
@@ -155,6 +157,7 @@ static int parse(int argc, char **argv, args *a)
             break;
         case O_SIMSTATE: a->link.sim_state = optarg; break;
         case O_SIMFAULTS: a->link.sim_faults = optarg; break;
+        case O_CONNECT: a->link.connect = optarg; break;
         case O_RESULTS: a->results = optarg; break;
         case O_RESUME: a->resume = 1; break;
         case O_FRAMECMDS:

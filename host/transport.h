@@ -1,6 +1,6 @@
 /*
  * transport.h - how edgeflag-host reaches a board: one table of operations
- * per transport (usb, gpio, sim, null), as libusb keeps its OS backends behind
+ * per transport (usb, gpio, sim, null, socket), as libusb keeps its OS backends behind
  * one table.  A transport moves bytes and the three control requests; the
  * protocol (frames, sequence numbers, CRC, windows, resume) lives above it in
  * host_link.c and is the same for every transport (docs/board.md).
@@ -42,6 +42,7 @@ typedef struct ef_host_opts {
     const char *lines;       /* gpio: line map (docs/board.md 5.2) */
     const char *sim_state;   /* sim: directory holding the board's state across runs */
     const char *sim_faults;  /* sim: fault injection (docs/board.md 6) */
+    const char *connect;     /* socket: unix:PATH or tcp:HOST:PORT (docs/board.md 5.5) */
 } ef_host_opts;
 
 typedef struct ef_link ef_link;
@@ -85,5 +86,6 @@ extern const ef_transport_ops ef_transport_usb;
 extern const ef_transport_ops ef_transport_gpio;
 extern const ef_transport_ops ef_transport_sim;
 extern const ef_transport_ops ef_transport_null;
+extern const ef_transport_ops ef_transport_socket;
 
 #endif /* EF_TRANSPORT_H */

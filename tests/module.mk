@@ -76,5 +76,6 @@ include tests/host/gpio.mk
 include tests/rtl/module.mk
 include tests/regress/module.mk
 include tests/host/module.mk
+include tests/host/socket.mk
 include tests/sanitize/module.mk
 include tests/portability.mk

@@ -23,6 +23,8 @@ if [ "${1:-}" = test ] || [ "${1:-}" = portability ]; then
     # the GPIO transport's tests (docs/board-gpio.md 8): libgpiod 1.6, umockdev's emulated chip, and
     # meson + ninja to build libgpiod 2.3 (the v2 API) into build/ from ../shared when present
     pkgs+=(libgpiod-dev libumockdev-dev umockdev meson ninja-build)
+    # tests/host/pyboard.py: the socket transport's board written from docs/board.md (test-host-socket)
+    pkgs+=(python3)
     # `make portability` builds static aarch64 and s390x (big-endian) programs
     # with clang --target and runs them under qemu-user.  gcc-aarch64-linux-gnu
     # cannot be installed beside gcc-multilib in Debian 12; these can.  Best

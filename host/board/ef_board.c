@@ -49,6 +49,7 @@ struct ef_board {
 
     uint32_t mode, iface_mask, samples;
     uint64_t source_left;
+    int source_end;             /* source mode: 1 END taken, 2 its DONE made */
     uint64_t cmd_count;
     uint64_t result_bytes;
     uint32_t results_crc;
@@ -137,17 +138,20 @@ static int res_push(ef_board *b, uint8_t type, const uint8_t *payload, uint32_t 
 static void res_pump(ef_board *b)
 {
     for (;;) {
-        if (b->mode == EF_MODE_SOURCE && b->source_left && b->res_next - b->res_acked < b->info.window) {
-            /* the source test makes its frames only as the window opens */
-            const uint32_t n = b->source_left < RESULT_PAYLOAD ? (uint32_t)b->source_left : RESULT_PAYLOAD;
-            memset(b->cur, (int)(b->res_next & 0xff), n);
-            b->source_left -= n;
-            (void)res_push(b, EF_FT_RESULT, b->cur, n);
-            if (!b->source_left) {
+        if (b->mode == EF_MODE_SOURCE && b->res_next - b->res_acked < b->info.window) {
+            /* the source test makes its frames only as the window opens; its
+             * DONE follows both END and the last RESULT (docs/board.md 8) */
+            if (b->source_left) {
+                const uint32_t n = b->source_left < RESULT_PAYLOAD ? (uint32_t)b->source_left : RESULT_PAYLOAD;
+                memset(b->cur, (int)(b->res_next & 0xff), n);
+                b->source_left -= n;
+                (void)res_push(b, EF_FT_RESULT, b->cur, n);   /* counts its bytes and CRC */
+            } else if (b->source_end == 1) {
                 uint8_t d[EF_BOARD_DONE_LEN] = { 0 };
                 ef_put64(d + 8, b->result_bytes);
                 ef_put32(d + 28, b->results_crc);
                 b->st.state = EF_BS_DONE;
+                b->source_end = 2;
                 (void)res_push(b, EF_FT_DONE, d, sizeof d);
             }
         }
@@ -252,8 +256,10 @@ static void take_data(ef_board *b, const ef_frame *f)
 
 static void take_end(ef_board *b)
 {
-    if (b->mode == EF_MODE_SOURCE)
-        return;                           /* its DONE follows the last RESULT it makes */
+    if (b->mode == EF_MODE_SOURCE) {
+        b->source_end = 1;                /* its DONE follows the last RESULT it makes */
+        return;
+    }
     if (b->mode == EF_MODE_DUT && b->dut.finish && b->dut.finish(b->dut.self) != 0)
         return;
     if (b->st.state != EF_BS_RUNNING)
@@ -290,9 +296,36 @@ static void take_ackr(ef_board *b, const ef_frame *f)
         b->res_sent = b->res_acked;
 }
 
+static void clear_run(ef_board *b, int keep_rx);
+
+/* A control request in the byte stream (docs/board.md 5.5): answered in
+ * stream order, outside both numbered sequences (no ACK, no NAK, E and the
+ * NAK suppression unchanged).  Returns 0 when f is not one. */
+static int take_control(ef_board *b, const ef_frame *f, int *ack)
+{
+    if (f->type < EF_FT_IDENTIFY || f->type > EF_FT_RESET || f->len != 0)
+        return 0;
+    uint8_t p[EF_BOARD_IDENTIFY_LEN];
+    if (*ack)                          /* the frames before it are acknowledged before its reply */
+        send_ack(b), *ack = 0;
+    if (f->type == EF_FT_IDENTIFY) {
+        ef_board_identify(b, p);
+        send_small(b, EF_FT_IDENTIFY | EF_FT_REPLY, f->seq, p, EF_BOARD_IDENTIFY_LEN);
+    } else if (f->type == EF_FT_STATUS) {
+        ef_board_status(b, p);
+        send_small(b, EF_FT_STATUS | EF_FT_REPLY, f->seq, p, EF_BOARD_STATUS_LEN);
+    } else {
+        clear_run(b, 1);               /* the bytes after it in rx[] belong to the new state */
+        send_small(b, EF_FT_RESET | EF_FT_REPLY, f->seq, NULL, 0);
+    }
+    return 1;
+}
+
 /* One good frame from the host. */
 static void take(ef_board *b, const ef_frame *f, int *ack)
 {
+    if (take_control(b, f, ack))
+        return;
     if (f->type == EF_FT_ACKR) {       /* unnumbered */
         take_ackr(b, f);
         return;
@@ -418,7 +451,7 @@ void ef_board_status(const ef_board *b, uint8_t out[EF_BOARD_STATUS_LEN])
     ef_put64(out + 32, b->st.records);
 }
 
-static void clear_run(ef_board *b)
+static void clear_run(ef_board *b, int keep_rx)
 {
     if (b->dut_started && b->dut.stop)
         b->dut.stop(b->dut.self);
@@ -426,10 +459,13 @@ static void clear_run(ef_board *b)
     for (uint32_t k = 0; k < b->res_next - b->res_acked; k++)
         free(b->res[k].bytes);
     b->res_acked = b->res_sent = b->res_next = 0;
-    b->rx_len = b->tx_head = b->tx_len = b->cur_len = 0;
+    if (!keep_rx)
+        b->rx_len = 0;
+    b->tx_head = b->tx_len = b->cur_len = 0;
     b->nak_pending = 0;
     b->mode = b->iface_mask = b->samples = 0;
     b->source_left = 0;
+    b->source_end = 0;
     b->cmd_count = b->result_bytes = 0;
     b->results_crc = 0;
     memset(&b->st, 0, sizeof b->st);
@@ -437,7 +473,14 @@ static void clear_run(ef_board *b)
 
 void ef_board_reset(ef_board *b)
 {
-    clear_run(b);
+    clear_run(b, 0);
+}
+
+void ef_board_link_lost(ef_board *b)
+{
+    b->rx_len = 0;                     /* a frame only partly received */
+    b->tx_head = b->tx_len = 0;        /* bytes queued and not sent */
+    b->res_sent = b->res_acked;        /* unacknowledged results go out again on the next link */
 }
 
 void ef_board_get_stats(const ef_board *b, ef_board_stats *s)
@@ -468,7 +511,7 @@ void ef_board_free(ef_board *b)
 {
     if (!b)
         return;
-    clear_run(b);
+    clear_run(b, 0);
     if (b->dut.destroy)
         b->dut.destroy(b->dut.self);
     free(b->res);

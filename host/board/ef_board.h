@@ -38,7 +38,13 @@ enum {
     EF_FT_NAK = 0x82,    /* board -> host: bad frame, resend from seq */
     EF_FT_RESULT = 0x83, /* board -> host: vectors.bin records */
     EF_FT_DONE = 0x84,   /* board -> host: the run is complete */
-    EF_FT_ERROR = 0x85   /* board -> host: the DUT or the board failed */
+    EF_FT_ERROR = 0x85,  /* board -> host: the DUT or the board failed */
+    /* Control frames of a byte-stream link (docs/board.md 5.5): requests from
+     * the host, seq = a tag the reply (type | EF_FT_REPLY) echoes. */
+    EF_FT_IDENTIFY = 0x10,
+    EF_FT_STATUS = 0x11,
+    EF_FT_RESET = 0x12,
+    EF_FT_REPLY = 0x80
 };
 
 typedef struct ef_board ef_board;
@@ -101,10 +107,13 @@ int ef_board_rx(ef_board *b, const uint8_t *buf, size_t len);
 size_t ef_board_tx(ef_board *b, uint8_t *buf, size_t cap);
 size_t ef_board_tx_pending(const ef_board *b);
 
-/* Control requests. */
+/* Control requests (also answered in the byte stream: docs/board.md 5.5). */
 void ef_board_identify(const ef_board *b, uint8_t out[EF_BOARD_IDENTIFY_LEN]);
 void ef_board_status(const ef_board *b, uint8_t out[EF_BOARD_STATUS_LEN]);
 void ef_board_reset(ef_board *b);
+/* A byte-stream link's connection ended (docs/board.md 5.5): drops a frame
+ * only partly received and the bytes not yet sent, keeps the run. */
+void ef_board_link_lost(ef_board *b);
 
 /* Called by the DUT for every output record (vectors.bin layout). */
 int ef_board_emit(ef_board *b, const uint8_t *record, size_t len);

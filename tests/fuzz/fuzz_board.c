@@ -12,8 +12,10 @@
  *         command words; START's picks the mode, the interfaces and samples).
  * Properties (each aborts, so libFuzzer keeps the input):
  *  - everything the board sends parses as whole, good frames of the
- *    board-to-host types, and its numbered frames count 0, 1, 2, ... in order
- *    (retransmissions aside, which never skip ahead);
+ *    board-to-host types (control replies of their fixed sizes included, the
+ *    requests 0x10-0x12 being in the stream: docs/board.md 5.5), and its
+ *    numbered frames count 0, 1, 2, ... in order (retransmissions aside, which
+ *    never skip ahead; a reset's reply starts the count again);
  *  - status never claims more host frames taken than frames were fed;
  *  - the same input gives the same output bytes twice (no hidden state).
  */
@@ -102,6 +104,16 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         size_t used;
         const int r = ef_frame_parse(a.b + pos, a.n - pos, &f, &used);
         FUZZ_CHECK(r == EF_FRAME_OK, "board output at byte %zu is not a whole good frame (%d)", pos, r);
+        if (f.type >= (EF_FT_IDENTIFY | EF_FT_REPLY) && f.type <= (EF_FT_RESET | EF_FT_REPLY)) {
+            /* a control reply (docs/board.md 5.5): its fixed size; after a reset, numbering restarts */
+            static const uint32_t LEN[] = { EF_BOARD_IDENTIFY_LEN, EF_BOARD_STATUS_LEN, 0 };
+            FUZZ_CHECK(f.len == LEN[f.type - (EF_FT_IDENTIFY | EF_FT_REPLY)], "control reply 0x%02x of %u bytes",
+                       f.type, f.len);
+            if (f.type == (EF_FT_RESET | EF_FT_REPLY))
+                next = 0;
+            pos += used;
+            continue;
+        }
         FUZZ_CHECK(f.type >= EF_FT_ACK && f.type <= EF_FT_ERROR, "board sent frame type 0x%02x", f.type);
         if (f.type == EF_FT_RESULT || f.type == EF_FT_DONE || f.type == EF_FT_ERROR) {
             FUZZ_CHECK(f.seq <= next, "numbered frame %u skips ahead of %u", f.seq, next);

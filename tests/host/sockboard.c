@@ -1,0 +1,107 @@
+/*
+ * sockboard.c - the board engine of host/board/ with the C model as its DUT,
+ * behind a unix socket (docs/board.md section 5.5): what a Verilator
+ * simulation or a TCP bridge in front of a board does, so that the engine's
+ * own answers to the control frames (identify, status, reset in the byte
+ * stream) are tested end to end through edgeflag-host's socket transport.
+ *
+ * usage: sockboard PATH [CUT]   (serves one connection at a time until killed;
+ * the run outlives a connection, as a board's does).  CUT > 0 closes the first
+ * connection once CUT bytes have come from the host, in the middle of a frame
+ * when CUT falls there: a board that went away mid-stream, for --resume.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <errno.h>
+#include <poll.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/socket.h>
+#include <sys/un.h>
+#include <unistd.h>
+
+#include "ef_board.h"
+
+static volatile sig_atomic_t stop;
+static unsigned long long cut;     /* bytes from the host until the connection is cut (0: never) */
+
+static void on_term(int sig)
+{
+    (void)sig;
+    stop = 1;
+}
+
+/* Moves bytes both ways until the connection ends. */
+static void serve(ef_board *b, int fd)
+{
+    static uint8_t in[1 << 16], out[1 << 16];
+    size_t out_len = 0, out_pos = 0;
+    while (!stop) {
+        if (out_pos == out_len) {
+            out_pos = 0;
+            out_len = ef_board_tx(b, out, sizeof out);
+        }
+        struct pollfd p = { fd, POLLIN | (out_pos < out_len ? POLLOUT : 0), 0 };
+        if (poll(&p, 1, 1000) < 0) {
+            if (errno == EINTR)
+                continue;
+            break;
+        }
+        if (p.revents & POLLOUT) {
+            const ssize_t n = send(fd, out + out_pos, out_len - out_pos, MSG_NOSIGNAL);
+            if (n < 0 && errno != EAGAIN && errno != EINTR)
+                break;
+            if (n > 0)
+                out_pos += (size_t)n;
+        }
+        if (p.revents & (POLLIN | POLLHUP | POLLERR)) {
+            const ssize_t n = recv(fd, in, cut && cut < sizeof in ? (size_t)cut : sizeof in, 0);
+            if (n == 0 || (n < 0 && errno != EAGAIN && errno != EINTR))
+                break;
+            if (cut && n > 0 && (cut -= (unsigned long long)n) == 0) {
+                ef_board_rx(b, in, (size_t)n);   /* the last bytes arrive, then the link is gone */
+                break;
+            }
+            if (n > 0 && ef_board_rx(b, in, (size_t)n) != 0) {
+                fprintf(stderr, "sockboard: the receive buffer is full (the host broke the window)\n");
+                break;
+            }
+        }
+    }
+    close(fd);
+    ef_board_link_lost(b);   /* a half-sent frame of ours is gone with the connection */
+}
+
+int main(int argc, char **argv)
+{
+    struct sockaddr_un a = { .sun_family = AF_UNIX };
+    if (argc < 2 || argc > 3 || strlen(argv[1]) >= sizeof a.sun_path) {
+        fprintf(stderr, "usage: sockboard PATH [CUT]\n");
+        return 2;
+    }
+    if (argc == 3)
+        cut = strtoull(argv[2], NULL, 10);
+    strcpy(a.sun_path, argv[1]);
+    const struct sigaction sa = { .sa_handler = on_term };
+    sigaction(SIGTERM, &sa, NULL);
+    sigaction(SIGINT, &sa, NULL);
+    const ef_board_info info = { "EFSOCK0001", EF_BOARD_CAP_RESULTS | EF_BOARD_CAP_RESUME | EF_BOARD_CAP_INTERNAL,
+                                 1u << 3 | 1u << 4 | 1u << 5, 16384, 16384, 1u << 22, 16, (1u << 7) - 1 };
+    ef_board *b = ef_board_new(&info, ef_board_dut_model());
+    const int ls = socket(AF_UNIX, SOCK_STREAM, 0);
+    unlink(a.sun_path);
+    if (!b || ls < 0 || bind(ls, (struct sockaddr *)&a, sizeof a) < 0 || listen(ls, 4) < 0) {
+        fprintf(stderr, "sockboard: %s: %s\n", a.sun_path, strerror(errno));
+        return 1;
+    }
+    while (!stop) {
+        const int fd = accept(ls, NULL, NULL);
+        if (fd >= 0)
+            serve(b, fd);
+    }
+    close(ls);
+    unlink(a.sun_path);
+    ef_board_free(b);
+    return 0;
+}

@@ -1,0 +1,15 @@
+# The socket transport's tests (docs/board.md section 5.5): `make test-host-socket`, a stage of
+# `make test` (under a minute): edgeflag-host against tests/host/pyboard.py (a board written
+# from docs/board.md alone) and against sockboard (the board engine behind a unix socket).
+SOCKBOARD := $(BUILD)/tests/host/sockboard
+
+$(BUILD)/tests/host/sockboard.o: tests/host/sockboard.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(HOST_CPPFLAGS) $(CFLAGS_ALL) -c $< -o $@
+
+$(SOCKBOARD): $(BUILD)/tests/host/sockboard.o $(HOST_BOARD_OBJ) $(HOST_CLI_OBJ) $(LIB_A)
+	$(CC) $(LDFLAGS_ALL) -o $@ $^ $(PNG_LIBS) $(EXPAT_LIBS) $(VEC_LIBS) -lz
+
+.PHONY: test-host-socket
+test-host-socket: cli host $(SOCKBOARD)
+	@bash tests/host/socket.sh $(BUILD)
