@@ -76,3 +76,4 @@ include tests/rtl/module.mk
 include tests/regress/module.mk
 include tests/sanitize/module.mk
 include tests/portability.mk
+include tests/filter/module.mk
