@@ -7,6 +7,7 @@
  * quietly render something else.
  */
 #include "cli.h"
+#include "ef_trace.h"
 
 #include <stdarg.h>
 #include <stdio.h>
@@ -140,9 +141,10 @@ int ef_cli_scene_option(const char *cmd, int argc, char **argv, int *i, int32_t 
     return 1;
 }
 
-/* The position in the list does not matter. */
-int ef_cli_parse_list(const char *cmd, const char *opt, const char *v, const char *const *names, int n,
-                      uint32_t *out)
+/* The position in the list does not matter.  A member equal to alias (when
+ * not NULL) stands for names[alias_k]. */
+static int parse_list(const char *cmd, const char *opt, const char *v, const char *const *names, int n,
+                      const char *alias, int alias_k, uint32_t *out)
 {
     uint32_t bits = 0;
     const char *p = v;
@@ -153,6 +155,8 @@ int ef_cli_parse_list(const char *cmd, const char *opt, const char *v, const cha
         for (k = 0; k < n; k++)
             if (strlen(names[k]) == len && strncmp(names[k], p, len) == 0)
                 break;
+        if (k == n && alias && strlen(alias) == len && strncmp(alias, p, len) == 0)
+            k = alias_k;
         if (k == n) {
             char all[96] = "";
             for (int i = 0; i < n; i++) {
@@ -173,4 +177,19 @@ int ef_cli_parse_list(const char *cmd, const char *opt, const char *v, const cha
     }
     *out = bits;
     return 1;
+}
+
+int ef_cli_parse_list(const char *cmd, const char *opt, const char *v, const char *const *names, int n,
+                      uint32_t *out)
+{
+    return parse_list(cmd, opt, v, names, n, NULL, 0, out);
+}
+
+int ef_cli_parse_ifaces(const char *cmd, const char *opt, const char *v, uint32_t *out)
+{
+    const char *names[EF_IF_COUNT];
+    for (int k = 0; k < EF_IF_COUNT; k++)
+        names[k] = ef_iface_get(k)->name;
+    /* `edge`: the old name of `seg` (a Verilog keyword), still read. */
+    return parse_list(cmd, opt, v, names, EF_IF_COUNT, "edge", EF_IF_SEG, out);
 }

@@ -113,6 +113,9 @@ int ef_cli_scene_option(const char *cmd, int argc, char **argv, int *i, int32_t 
  * (1 << k); 1, or 0 after a usage error naming opt and the valid names. */
 int ef_cli_parse_list(const char *cmd, const char *opt, const char *v, const char *const *names, int n,
                       uint32_t *out);
+/* The same for a list of interface names (ef_trace.h), reading the old name
+ * `edge` of `seg` too. */
+int ef_cli_parse_ifaces(const char *cmd, const char *opt, const char *v, uint32_t *out);
 
 int ef_cli_usage_error(const char *cmd, const char *fmt, ...)
 #if defined(__GNUC__)

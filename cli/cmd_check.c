@@ -54,6 +54,7 @@ static void usage(FILE *f)
           "                       transactions (an RTL with other timing)\n"
           "  --interfaces LIST    compare only these interfaces (comma-separated; must\n"
           "                       include pix); the others are reported as skipped\n"
+          "                       (edge, the old name of seg, is read too)\n"
           "  --allow-missing LIST these interfaces may lack a dump (skipped, not failed);\n"
           "                       never pix\n"
           "  --name NAME          the JUnit suite and class name (default: EXPECTED's\n"
@@ -73,14 +74,11 @@ static void usage(FILE *f)
 int ef_cli_check_parse(int argc, char **argv, ef_cli_check_args *a)
 {
     int i, only_positional = 0, seen_errors = 0, seen_cycles = 0, seen_txn = 0, seen_only = 0, seen_allow = 0;
-    const char *iface_names[EF_IF_COUNT];
 
     memset(a, 0, sizeof *a);
     a->errors = 20;
     a->cycles = 1;
     a->only = EF_IF_ALL;
-    for (int k = 0; k < EF_IF_COUNT; k++)
-        iface_names[k] = ef_iface_get(k)->name;
     for (i = 1; i < argc && strcmp(argv[i], "--") != 0; i++)
         if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
             usage(stdout);
@@ -125,7 +123,7 @@ int ef_cli_check_parse(int argc, char **argv, ef_cli_check_args *a)
                 return EF_CLI_EXIT_USAGE;
             if (seen_only++)
                 return ef_cli_usage_error(CMD, "--interfaces given twice");
-            if (!ef_cli_parse_list(CMD, "--interfaces", v, iface_names, EF_IF_COUNT, &a->only))
+            if (!ef_cli_parse_ifaces(CMD, "--interfaces", v, &a->only))
                 return EF_CLI_EXIT_USAGE;
             if (!(a->only >> EF_IF_PIX & 1u))
                 return ef_cli_usage_error(CMD, "--interfaces must include pix (the DUT's output is always checked)");
@@ -134,7 +132,7 @@ int ef_cli_check_parse(int argc, char **argv, ef_cli_check_args *a)
                 return EF_CLI_EXIT_USAGE;
             if (seen_allow++)
                 return ef_cli_usage_error(CMD, "--allow-missing given twice");
-            if (!ef_cli_parse_list(CMD, "--allow-missing", v, iface_names, EF_IF_COUNT, &a->allow_missing))
+            if (!ef_cli_parse_ifaces(CMD, "--allow-missing", v, &a->allow_missing))
                 return EF_CLI_EXIT_USAGE;
             if (a->allow_missing >> EF_IF_PIX & 1u)
                 return ef_cli_usage_error(CMD, "--allow-missing cannot name pix (the DUT's output is always checked)");

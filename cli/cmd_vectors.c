@@ -47,8 +47,8 @@ static void usage(FILE *f)
           "                     its own\n"
           "  --size WxH         fit the drawing into a W x H pixel canvas (1..16384 each)\n"
           "  --formats LIST     comma-separated subset of hex,vcd,bin (default all three)\n"
-          "  --interfaces LIST  comma-separated subset of cmd,edge,et_wr,et_rd,plot,span,pix\n"
-          "                     (default all)\n"
+          "  --interfaces LIST  comma-separated subset of cmd,seg,et_wr,et_rd,plot,span,pix\n"
+          "                     (default all; edge, the old name of seg, is read too)\n"
           "  --force            replace existing files of the same names\n"
           "  --dump             write the model's transactions as a DUT's dumps would be\n"
           "                     named (IFACE.actual.hex, vectors.actual.bin; no manifest):\n"
@@ -68,7 +68,6 @@ static const char *const FORMAT_NAMES[] = { "hex", "vcd", "bin" };
 /* Returns -1 when parsing succeeded, else the exit code to return. */
 int ef_cli_vectors_parse(int argc, char **argv, ef_cli_vectors_args *a)
 {
-    const char *iface_names[EF_IF_COUNT];
     int i, only_positional = 0;
     int seen[3] = { 0, 0, 0 };   /* --samples, --rule, --size */
     int seen_filter[2] = { 0, 0 };   /* --filter, --subpixel */
@@ -79,8 +78,6 @@ int ef_cli_vectors_parse(int argc, char **argv, ef_cli_vectors_args *a)
     a->rule = -1;
     a->formats = EF_CLI_VEC_ALL;
     a->ifaces = EF_IF_ALL;
-    for (int k = 0; k < EF_IF_COUNT; k++)
-        iface_names[k] = ef_iface_get(k)->name;
 
     /* --help wins over anything else on the line, even earlier junk. */
     for (i = 1; i < argc && strcmp(argv[i], "--") != 0; i++) {
@@ -144,7 +141,7 @@ int ef_cli_vectors_parse(int argc, char **argv, ef_cli_vectors_args *a)
                 return EF_CLI_EXIT_USAGE;
             if (seen_ifaces++)
                 return ef_cli_usage_error(CMD, "--interfaces given twice");
-            if (!ef_cli_parse_list(CMD, "--interfaces", v, iface_names, EF_IF_COUNT, &bits))
+            if (!ef_cli_parse_ifaces(CMD, "--interfaces", v, &bits))
                 return EF_CLI_EXIT_USAGE;
             a->ifaces = bits;
         } else {

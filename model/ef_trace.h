@@ -26,7 +26,7 @@ extern "C" {
 /* The interfaces, in pipeline order (docs/microarch.md section 3). */
 typedef enum ef_iface {
     EF_IF_CMD = 0,   /* host -> DEC: commands */
-    EF_IF_EDGE,      /* DEC -> SETUP: polygon edges */
+    EF_IF_SEG,       /* DEC -> SETUP: polygon edges (`seg`; `edge` is a Verilog keyword) */
     EF_IF_ET_WR,     /* SETUP -> ETM: edge records */
     EF_IF_ET_RD,     /* ETM -> AET: activations */
     EF_IF_PLOT,      /* PLOT -> SLB: one sample of one edge */
@@ -41,8 +41,8 @@ typedef enum ef_iface {
 #define EF_CYCLE_BITS 48    /* cycle stamps are < 2^48 */
 
 /* Reference schedule latencies (docs/microarch.md section 4). */
-#define EF_L_DEC 1          /* cmd -> edge */
-#define EF_L_SETUP 33       /* edge -> et_wr: 2 + 30 divider stages + 1 */
+#define EF_L_DEC 1          /* cmd -> seg */
+#define EF_L_SETUP 33       /* seg -> et_wr: 2 + 30 divider stages + 1 */
 #define EF_L_COV 3          /* span accepted -> first pix */
 
 /* Commands (the `op` field of cmd). */
@@ -64,7 +64,8 @@ typedef struct ef_iface_desc {
 
 /* NULL when iface is out of range. */
 const ef_iface_desc *ef_iface_get(int iface);
-/* The interface called `name`, or -1. */
+/* The interface called `name`, or -1.  The old name `edge` (of `seg`) is read
+ * as an alias. */
 int ef_iface_find(const char *name);
 
 /* One transfer.  The payload is the concatenation of the fields, most

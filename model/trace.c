@@ -1,7 +1,7 @@
 /*
  * trace.c - the timing model's front end (docs/microarch.md section 4, items
  * 1-3 and 7): the command stream, DEC and SETUP.  A shape's commands go out
- * back to back; each EDGE gives its `edge` L_DEC cycles later and, if edge
+ * back to back; each EDGE gives its `seg` L_DEC cycles later and, if edge
  * setup keeps it, its `et_wr` L_SETUP cycles after that; SHAPE_END's tokens
  * follow the same path and start the rows (trace_raster.c).  The command after
  * a SHAPE_END waits until the shape has drained.
@@ -139,7 +139,7 @@ ef_status ef_trace_fill(ef_ctx *ctx, ef_image *img, const ef_polygon *poly, ef_r
             contour_edge(poly, b, n, k, &a, &z);
             const uint64_t t = command(tr, EF_OP_EDGE, bits(a.x), bits(a.y), bits(z.x), bits(z.y));
             const uint64_t ve[5] = { 0, bits(a.x), bits(a.y), bits(z.x), bits(z.y) };
-            ef_trace_emit(tr, EF_IF_EDGE, t + EF_L_DEC, ve);
+            ef_trace_emit(tr, EF_IF_SEG, t + EF_L_DEC, ve);
             if (rec < 0 || !record_of(&ctx->edges[rec], a, z))
                 continue;                         /* horizontal or outside: no record */
             ef_edge E = ctx->edges[rec--];        /* a copy: the plotter starts the DDA itself */
@@ -151,7 +151,7 @@ ef_status ef_trace_fill(ef_ctx *ctx, ef_image *img, const ef_polygon *poly, ef_r
     }
     const uint64_t t_end = command(tr, EF_OP_SHAPE_END, 0, 0, 0, 0);
     const uint64_t eos[10] = { 1 };    /* eos = 1, every other field 0 */
-    ef_trace_emit(tr, EF_IF_EDGE, t_end + EF_L_DEC, eos);
+    ef_trace_emit(tr, EF_IF_SEG, t_end + EF_L_DEC, eos);
     ef_trace_emit(tr, EF_IF_ET_WR, t_end + EF_L_DEC + EF_L_SETUP, eos);
     const uint64_t t0 = t_end + EF_L_DEC + EF_L_SETUP + 1;
 

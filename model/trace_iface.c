@@ -12,11 +12,11 @@
 
 static const ef_iface_desc ifaces[EF_IF_COUNT] = {
     { "cmd", "host", "DEC", 100, 5, { F("op", 4), S("a", 24), S("b", 24), S("c", 24), S("d", 24) } },
-    { "edge", "DEC", "SETUP", 97, 5, { F("eos", 1), S("xa", 24), S("ya", 24), S("xb", 24), S("yb", 24) } },
+    { "seg", "DEC", "SETUP", 97, 5, { F("eos", 1), S("xa", 24), S("ya", 24), S("xb", 24), S("yb", 24) } },
     { "et_wr", "SETUP", "ETM", 181, 10,
       { F("eos", 1), F("slot", 14), F("r0", 19), F("r1", 19), S("x", 25), F("e", 24), S("qs", 30), F("rs", 24),
         F("dy", 24), F("dir", 1) } },
-    { "et_rd", "ETM", "AET", 36, 2, { F("row", 14), F("edge", 22) } },
+    { "et_rd", "ETM", "AET", 36, 2, { F("row", 14), F("eid", 22) } },
     { "plot", "PLOT", "SLB", 36, 5, { F("last", 1), F("row", 14), F("s", 5), F("q", 15), F("dir", 1) } },
     { "span", "FILL", "COV", 75, 4, { F("y", 14), F("x", 14), F("len", 15), F("mask", 32) } },
     { "pix", "COV", "memory", 68, 4, { F("y", 14), F("x", 14), F("alpha", 8), F("rgba", 32) } },
@@ -27,11 +27,16 @@ const ef_iface_desc *ef_iface_get(int iface)
     return iface >= 0 && iface < EF_IF_COUNT ? &ifaces[iface] : NULL;
 }
 
+/* `edge` was the name of `seg` until the RTL needed a wire of that name
+ * (`edge` is a Verilog keyword): names a user or an older vector set gives are
+ * still read under it; nothing is written under it. */
 int ef_iface_find(const char *name)
 {
     for (int i = 0; i < EF_IF_COUNT; i++)
         if (strcmp(ifaces[i].name, name) == 0)
             return i;
+    if (strcmp(name, "edge") == 0)
+        return EF_IF_SEG;
     return -1;
 }
 

@@ -161,12 +161,12 @@ int ef_vec_iface_from_name(const char *path)
     base = base ? base + 1 : path;
     const char *dot = strchr(base, '.');
     size_t n = dot ? (size_t)(dot - base) : strlen(base);
-    for (int i = 0; i < EF_IF_COUNT; i++) {
-        const char *nm = ef_iface_get(i)->name;
-        if (strlen(nm) == n && memcmp(nm, base, n) == 0)
-            return i;
-    }
-    return -1;
+    char nm[16];
+    if (n >= sizeof nm)
+        return -1;
+    memcpy(nm, base, n);
+    nm[n] = '\0';
+    return ef_iface_find(nm);     /* reads the old name `edge` too */
 }
 
 /* ---------------------------------------------------------------- errors */

@@ -176,7 +176,7 @@ static bool ref_list(const char *v, const char *const *names, int n, uint32_t *m
 static void check_vectors(int argc, char **argv)
 {
     static const char *const formats[] = { "hex", "vcd", "bin" };
-    static const char *const ifaces[] = { "cmd", "edge", "et_wr", "et_rd", "plot", "span", "pix" };
+    static const char *const ifaces[] = { "cmd", "seg", "et_wr", "et_rd", "plot", "span", "pix" };
     ef_cli_vectors_args a, b;
     int rc = ef_cli_vectors_parse(argc, argv, &a);
     int rc2 = ef_cli_vectors_parse(argc, argv, &b);

@@ -140,7 +140,7 @@ fi
 "$EF" gen -o "$work/gen" >"$work/logs/gen.log" 2>&1 || { cat "$work/logs/gen.log"; exit 1; }
 
 # ---------------------------------------------------------------- 2. $readmemh
-ifaces="cmd edge et_wr et_rd plot span pix"
+ifaces="cmd seg et_wr et_rd plot span pix"
 
 # readmem_iv DIR IFACE OUTDIR: Icarus, tb_readmem.v with -P, then edgeflag check
 readmem_iv() {
@@ -200,7 +200,7 @@ readmem_vl() {
     local d=$1 o=$work/rm_vl i g=() in
     mkdir -p "$o"
     g+=(-GDIR="\"$d\"" -GOUT="\"$o\"")
-    g+=(-GD_CMD="$(mf "$d" cmd count)" -GD_EDGE="$(mf "$d" edge count)" -GD_ET_WR="$(mf "$d" et_wr count)")
+    g+=(-GD_CMD="$(mf "$d" cmd count)" -GD_SEG="$(mf "$d" seg count)" -GD_ET_WR="$(mf "$d" et_wr count)")
     g+=(-GD_ET_RD="$(mf "$d" et_rd count)" -GD_PLOT="$(mf "$d" plot count)" -GD_SPAN="$(mf "$d" span count)")
     g+=(-GD_PIX="$(mf "$d" pix count)")
     verilator --binary --timing -Wno-fatal -Wno-WIDTH --Mdir "$o/obj" --top-module tb_readmem_all "${g[@]}" \

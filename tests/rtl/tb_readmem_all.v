@@ -11,7 +11,7 @@ module tb_readmem_all #(
     parameter DIR     = ".",
     parameter OUT     = ".",
     parameter D_CMD   = 1,
-    parameter D_EDGE  = 1,
+    parameter D_SEG   = 1,
     parameter D_ET_WR = 1,
     parameter D_ET_RD = 1,
     parameter D_PLOT  = 1,
@@ -20,8 +20,8 @@ module tb_readmem_all #(
 );
     tb_readmem #(.P(100), .DEPTH(D_CMD),   .IFACE("cmd"),   .FINISH(0),
                  .IN_FILE({DIR, "/cmd.stim.hex"}),        .OUT_FILE({OUT, "/cmd.actual.hex"}))   u_cmd ();
-    tb_readmem #(.P(97),  .DEPTH(D_EDGE),  .IFACE("edge"),  .FINISH(0),
-                 .IN_FILE({DIR, "/edge.expected.hex"}),   .OUT_FILE({OUT, "/edge.actual.hex"}))  u_edge ();
+    tb_readmem #(.P(97),  .DEPTH(D_SEG),   .IFACE("seg"),   .FINISH(0),
+                 .IN_FILE({DIR, "/seg.expected.hex"}),    .OUT_FILE({OUT, "/seg.actual.hex"}))   u_seg ();
     tb_readmem #(.P(181), .DEPTH(D_ET_WR), .IFACE("et_wr"), .FINISH(0),
                  .IN_FILE({DIR, "/et_wr.expected.hex"}),  .OUT_FILE({OUT, "/et_wr.actual.hex"})) u_et_wr ();
     tb_readmem #(.P(36),  .DEPTH(D_ET_RD), .IFACE("et_rd"), .FINISH(0),

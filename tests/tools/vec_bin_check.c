@@ -21,9 +21,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* docs/microarch.md section 3: payload bits of cmd, edge, et_wr, et_rd, plot, span, pix. */
+/* docs/microarch.md section 3: payload bits of cmd, seg, et_wr, et_rd, plot, span, pix. */
 static const unsigned WIDTH[7] = { 100, 97, 181, 36, 36, 75, 68 };
-static const char *const NAME[7] = { "cmd", "edge", "et_wr", "et_rd", "plot", "span", "pix" };
+static const char *const NAME[7] = { "cmd", "seg", "et_wr", "et_rd", "plot", "span", "pix" };
 
 static uint64_t le(const unsigned char *p, int n)
 {

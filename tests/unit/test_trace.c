@@ -54,7 +54,7 @@ static void sink(void *user, const ef_txn *t)
         if (ef_txn_field(t, 0) == EF_OP_EDGE)
             s->edge_cmd_cycle = t->cycle;
         break;
-    case EF_IF_EDGE:
+    case EF_IF_SEG:
         if (ef_txn_field(t, 0) == 0 && t->cycle != s->edge_cmd_cycle + EF_L_DEC)
             s->edge_ok = 0;
         break;
@@ -140,7 +140,7 @@ static void check_scene(const char *name, const ef_scene *sc)
             assert_true(traced.cycles == st.max_cycle + 1);
             /* FRAME + per shape SHAPE, EDGEs, SHAPE_END + FRAME_END */
             assert_int_equal(st.n[EF_IF_CMD], 2 + 2 * (uint64_t)sc->nshapes + traced.diag.edges_in);
-            assert_int_equal(st.n[EF_IF_EDGE], sc->nshapes + traced.diag.edges_in);
+            assert_int_equal(st.n[EF_IF_SEG], sc->nshapes + traced.diag.edges_in);
             assert_int_equal(st.n[EF_IF_ET_WR], sc->nshapes + traced.diag.edges_in - traced.diag.edges_dropped);
             free(plain.px);
             free(traced.px);
@@ -258,12 +258,55 @@ static void fields(void **state)
     }
     assert_null(ef_iface_get(EF_IF_COUNT));
     assert_int_equal(ef_iface_find("nope"), -1);
+    assert_int_equal(ef_iface_find("edge"), EF_IF_SEG);    /* the old name, still read */
+}
+
+/* Every interface and field name must be usable as a wire's name in a
+ * testbench: none is a keyword of Verilog-2005 (IEEE 1364-2005 annex B) or
+ * of SystemVerilog (IEEE 1800-2017 annex B, the words it adds that are
+ * short enough to be field names).  `edge` was one, hence `seg` and `eid`. */
+static void names_not_keywords(void **state)
+{
+    static const char *const kw[] = {
+        "always", "and", "assign", "automatic", "begin", "buf", "bufif0", "bufif1", "case", "casex", "casez",
+        "cell", "cmos", "config", "deassign", "default", "defparam", "design", "disable", "edge", "else", "end",
+        "endcase", "endconfig", "endfunction", "endgenerate", "endmodule", "endprimitive", "endspecify",
+        "endtable", "endtask", "event", "for", "force", "forever", "fork", "function", "generate", "genvar",
+        "highz0", "highz1", "if", "ifnone", "incdir", "include", "initial", "inout", "input", "instance",
+        "integer", "join", "large", "liblist", "library", "localparam", "macromodule", "medium", "module",
+        "nand", "negedge", "nmos", "nor", "noshowcancelled", "not", "notif0", "notif1", "or", "output",
+        "parameter", "pmos", "posedge", "primitive", "pull0", "pull1", "pulldown", "pullup", "rcmos", "real",
+        "realtime", "reg", "release", "repeat", "rnmos", "rpmos", "rtran", "rtranif0", "rtranif1", "scalared",
+        "signed", "small", "specify", "specparam", "strong0", "strong1", "supply0", "supply1", "table", "task",
+        "time", "tran", "tranif0", "tranif1", "tri", "tri0", "tri1", "triand", "trior", "trireg", "unsigned",
+        "use", "uwire", "vectored", "wait", "wand", "weak0", "weak1", "while", "wire", "wor", "xnor", "xor",
+        /* SystemVerilog */
+        "alias", "bind", "bins", "bit", "break", "byte", "chandle", "class", "const", "context", "cover",
+        "dist", "do", "enum", "export", "extends", "extern", "final", "first_match", "global", "iff", "import",
+        "inside", "int", "interface", "let", "logic", "longint", "matches", "modport", "new", "null",
+        "package", "packed", "priority", "program", "property", "protected", "pure", "rand", "randc", "ref",
+        "restrict", "return", "s_always", "sequence", "shortint", "soft", "solve", "static", "string",
+        "struct", "super", "this", "throughout", "type", "typedef", "union", "unique", "var", "virtual",
+        "void", "wait_order", "weak", "with", "within",
+    };
+    (void)state;
+    for (int i = 0; i < EF_IF_COUNT; i++) {
+        const ef_iface_desc *d = ef_iface_get(i);
+        for (size_t k = 0; k < sizeof kw / sizeof kw[0]; k++) {
+            if (strcmp(d->name, kw[k]) == 0)
+                fail_msg("interface '%s' is a Verilog keyword", d->name);
+            for (unsigned f = 0; f < d->nfields; f++)
+                if (strcmp(d->field[f].name, kw[k]) == 0)
+                    fail_msg("field '%s' of '%s' is a Verilog keyword", d->field[f].name, d->name);
+        }
+    }
 }
 
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(fields),
+        cmocka_unit_test(names_not_keywords),
         cmocka_unit_test(disable),
         cmocka_unit_test(edge_cases),
         cmocka_unit_test(shared_svgs),

@@ -325,12 +325,12 @@ static void test_vcd_small(void **state)
                         "$var wire 1 \" valid $end\n"
                         "$var wire 1 # ready $end\n"
                         "$var wire 14 % row [13:0] $end\n"
-                        "$var wire 22 & edge [21:0] $end\n"
+                        "$var wire 22 & eid [21:0] $end\n"
                         "$upscope $end\n"
                         "$upscope $end\n"
                         "$enddefinitions $end\n"
                         "#0\n$dumpvars\n0!\n1\"\n1#\nb1 %\nb10 &\n$end\n#5\n1!\n"
-                        "#10\n0!\nb11 &\n#15\n1!\n"           /* same row: only edge changes */
+                        "#10\n0!\nb11 &\n#15\n1!\n"           /* same row: only eid changes */
                         "#20\n0!\n0\"\n#25\n1!\n"              /* idle: valid drops, fields hold */
                         "#30\n0!\n1\"\nb101 %\n#35\n1!\n"
                         "#40\n0!\n0\"\n");                     /* the end: 10 * cycles */
@@ -355,7 +355,7 @@ static void test_hex_file(void **state)
     assert_string_equal(got, "// edgeflag vectors format 1: interface et_rd (ETM -> AET), role expected\n"
                              "// generator edgeflag " EF_VERSION_STRING "; input a\\x24b.scene; size 7x5; "
                              "samples 8; rule evenodd; seed 42\n"
-                             "// word 84 bits: cycle[83:36] row[35:22] edge[21:0]\n"
+                             "// word 84 bits: cycle[83:36] row[35:22] eid[21:0]\n"
                              "// count 3\n"
                              "000000000000000400002\n"
                              "000000000001000400003\n"
@@ -399,7 +399,7 @@ static void test_bin(void **state)
         assert_true(le(b + 40 + 8 * i, 8) == (i == EF_IF_ET_RD ? 3u : 0u));
     assert_true(le(b + 96, 4) == ef_vec_crc32(0, b + 104, n - 104));
     assert_true(le(b + 100, 4) == ef_vec_crc32(0, b, 100));
-    /* The third record: et_rd at cycle 3, row 5, edge 3 = payload 5 << 22 | 3. */
+    /* The third record: et_rd at cycle 3, row 5, eid 3 = payload 5 << 22 | 3. */
     const unsigned char *rec = b + 104 + 2 * 15;
     assert_true(rec[0] == EF_IF_ET_RD && rec[1] == 5 && le(rec + 2, 8) == 3);
     assert_true(le(rec + 10, 5) == (UINT64_C(5) << 22 | 3));

@@ -84,7 +84,7 @@ while read -r h f; do hash[${f##*/}]=$h; done < <(sha256sum "$dir"/*)
 # words, whether line 2 names this run; and all words as "IFACE WORD" lines in
 # interface order (the order of the arguments) for the cross-format check.
 hexfiles=()
-for n in cmd edge et_wr et_rd plot span pix; do
+for n in cmd seg et_wr et_rd plot span pix; do
     for f in "$dir/$n".*.hex; do [ -f "$f" ] && hexfiles+=("$f"); done
 done
 declare -A hdata hcount hbits hbad hrun
@@ -131,7 +131,7 @@ while read -r name fmt iface role count bytes sha; do
         r=2; [ "$rule" = nonzero ] && r=0; [ "$rule" = evenodd ] && r=1
         counts=
         mask=0 i=0
-        for n in cmd edge et_wr et_rd plot span pix; do
+        for n in cmd seg et_wr et_rd plot span pix; do
             counts=$counts${counts:+,}${icount[$n]:-0}
             [ -n "${icount[$n]:-}" ] && mask=$((mask | 1 << i))
             i=$((i + 1))
