@@ -29,7 +29,7 @@ static void usage(FILE *f)
 {
     fputs("usage: edgeflag vectors INPUT -o DIR [--samples 8|16|32] [--rule nonzero|evenodd]\n"
           "                        [--size WxH] [--formats hex,vcd,bin] [--interfaces LIST] [--force]\n"
-          "                        [--dump]\n"
+          "                        [--dump] [--filter box|tent] [--subpixel none|rgb|bgr]\n"
           "\n"
           "Renders INPUT (.svg, .scene/.txt) with the timing model of the reference\n"
           "microarchitecture and writes every transfer at every interface, stamped with\n"
@@ -54,6 +54,9 @@ static void usage(FILE *f)
           "                     named (IFACE.actual.hex, vectors.actual.bin; no manifest):\n"
           "                     the model standing in for the DUT, to try a bench's or a\n"
           "                     regression's plumbing with `edgeflag check`\n"
+          "  --filter F         box (default) or tent: the 2x2-pixel tent (docs/spec.md 10)\n"
+          "  --subpixel S       none (default), rgb or bgr: per-channel sample offsets;\n"
+          "                     with either, the vectors follow docs/microarch.md section 5\n"
           "  -h, --help         show this text\n"
           "  --                 end of options (for an INPUT starting with '-')\n"
           "\n"
@@ -152,8 +155,6 @@ int ef_cli_vectors_parse(int argc, char **argv, ef_cli_vectors_args *a)
         return ef_cli_usage_error(CMD, "no input file");
     if (!a->dir)
         return ef_cli_usage_error(CMD, "no output directory (-o DIR)");
-    if (a->filter || a->subpixel)   /* the timing model of docs/spec.md 10 comes in the next step */
-        return ef_cli_usage_error(CMD, "--filter tent and --subpixel are not in the timing model yet");
     return -1;
 }
 
@@ -272,6 +273,8 @@ int ef_cli_vectors(int argc, char **argv)
         rc = exit_for(st);
         goto out;
     }
+    if ((rc = ef_cli_apply_filter(ctx, a.input, a.filter, a.subpixel)) >= 0)
+        goto out;
     ef_vec_collect_init(c, a.ifaces);
     memset(&info, 0, sizeof info);
     info.input = ef_vec_base_name(a.input);
