@@ -29,9 +29,12 @@ void ef_filt_free(struct ef_filt *f)
         ef_ctx_destroy(f->ch[c]);
         free(f->line[c][0]);
         free(f->line[c][1]);
+        free(f->iv[c][0]);
+        free(f->iv[c][1]);
     }
     free(f->tab);
     free(f->sum);
+    free(f->merge);
     free(f->pts);
     free(f);
 }
@@ -64,13 +67,16 @@ ef_status ef_ctx_set_filter(ef_ctx *ctx, ef_filter filter, ef_subpixel subpixel)
         st = ef_ctx_create(&f->ch[p], wm, hm, ctx->samples);
         f->line[p][0] = calloc((size_t)wm, sizeof(uint32_t));
         f->line[p][1] = calloc((size_t)wm, sizeof(uint32_t));
-        if (st == EF_OK && (!f->line[p][0] || !f->line[p][1]))
+        f->iv[p][0] = malloc((size_t)wm * 2 * sizeof(int32_t));
+        f->iv[p][1] = malloc((size_t)wm * 2 * sizeof(int32_t));
+        if (st == EF_OK && (!f->line[p][0] || !f->line[p][1] || !f->iv[p][0] || !f->iv[p][1]))
             st = EF_ERR_NOMEM;
         f->lo[p][0] = f->lo[p][1] = INT32_MAX;
         f->hi[p][0] = f->hi[p][1] = -1;
     }
     f->sum = calloc((size_t)ctx->width * 3, sizeof(uint32_t));
-    if (st == EF_OK && !f->sum)
+    f->merge = malloc((size_t)(wm + 1) * 12 * sizeof(int32_t));
+    if (st == EF_OK && (!f->sum || !f->merge))
         st = EF_ERR_NOMEM;
     if (st == EF_OK && f->e) {
         /* Tent weights (spec 10.2): sample s (column k_s) of the base's pixel
@@ -121,6 +127,8 @@ uint32_t ef_filter_denominator(const ef_ctx *ctx)
 typedef struct line_sink {
     uint32_t *m;
     int32_t *lo, *hi;
+    int32_t *iv;
+    uint32_t *niv;
 } line_sink;
 
 static void to_line(void *user, int32_t y, int32_t x, int32_t len, uint32_t mask)
@@ -133,6 +141,9 @@ static void to_line(void *user, int32_t y, int32_t x, int32_t len, uint32_t mask
         *ls->lo = x;
     if (x + len - 1 > *ls->hi)
         *ls->hi = x + len - 1;
+    ls->iv[2 * *ls->niv] = x;
+    ls->iv[2 * *ls->niv + 1] = x + len - 1;
+    ++*ls->niv;
 }
 
 /* One mask row of a channel context: rasterize.c's loop body. */
@@ -175,6 +186,13 @@ static void clear_line(struct ef_filt *f, int p, int which)
                (size_t)(f->hi[p][which] - f->lo[p][which] + 1) * sizeof(uint32_t));
     f->lo[p][which] = INT32_MAX;
     f->hi[p][which] = -1;
+    f->niv[p][which] = 0;
+}
+
+static int cmp_iv(const void *a, const void *b)
+{
+    const int32_t x = *(const int32_t *)a, y = *(const int32_t *)b;
+    return (x > y) - (x < y);
 }
 
 /* Weights output row y from the channels' lines: box from the current line,
@@ -184,40 +202,56 @@ static void out_row(ef_ctx *ctx, int32_t y, row_fn fn, void *user)
     struct ef_filt *f = ctx->filt;
     const int32_t w = ctx->width;
     const int cur = f->cur, up = cur ^ 1;
-    int32_t lo = INT32_MAX, hi = -1;
-    for (int p = 0; p < f->nch; p++) {
-        for (int l = 0; l < 1 + f->e; l++) {
+    /* The columns to weigh: every span of the lines read, widened by e to the
+     * left (the tent's pixel x reads columns x and x+1), merged.  Columns
+     * outside them have all masks zero: sum 0, nothing to composite. */
+    uint32_t n = 0;
+    for (int p = 0; p < f->nch; p++)
+        for (int l = 0; l <= f->e; l++) {
             const int which = l ? up : cur;
-            if (f->hi[p][which] < 0)
-                continue;
-            if (f->lo[p][which] - f->e < lo)
-                lo = f->lo[p][which] - f->e;
-            if (f->hi[p][which] > hi)
-                hi = f->hi[p][which];
-        }
-    }
-    if (lo < 0)
-        lo = 0;
-    if (hi > w - 1)
-        hi = w - 1;
-    if (lo > hi)
-        return;
-    const int groups = ctx->samples / 8;
-    uint32_t psum[3] = { 0, 0, 0 };
-    for (int32_t x = lo; x <= hi; x++) {
-        for (int p = 0; p < f->nch; p++) {
-            if (f->e) {
-                const uint32_t *u = f->line[p][up], *d = f->line[p][cur];
-                psum[p] = tent_of(f->tab, groups, 0, u[x]) + tent_of(f->tab, groups, 2, u[x + 1]) +
-                          tent_of(f->tab, groups, 1, d[x]) + tent_of(f->tab, groups, 3, d[x + 1]);
-            } else {
-                psum[p] = ef_popcount32(f->line[p][cur][x]);
+            for (uint32_t k = 0; k < f->niv[p][which]; k++) {
+                f->merge[2 * n] = f->iv[p][which][2 * k] - f->e;
+                f->merge[2 * n + 1] = f->iv[p][which][2 * k + 1];
+                n++;
             }
         }
-        for (int c = 0; c < 3; c++)
-            f->sum[(size_t)x * 3 + (size_t)c] = psum[f->pos_of_colour[c]];
+    if (!n)
+        return;
+    qsort(f->merge, n, 2 * sizeof(int32_t), cmp_iv);
+    const int groups = ctx->samples / 8;
+    const uint32_t full = ctx->samples == 32 ? UINT32_MAX : (UINT32_C(1) << ctx->samples) - 1u;
+    const uint32_t den = ef_filter_denominator(ctx);
+    uint32_t k = 0;
+    while (k < n) {
+        int32_t lo = f->merge[2 * k], hi = f->merge[2 * k + 1];
+        for (k++; k < n && f->merge[2 * k] <= hi + 1; k++)
+            hi = f->merge[2 * k + 1] > hi ? f->merge[2 * k + 1] : hi;
+        lo = lo < 0 ? 0 : lo;
+        hi = hi > w - 1 ? w - 1 : hi;
+        if (lo > hi)
+            continue;
+        uint32_t psum[3] = { 0, 0, 0 };
+        for (int32_t x = lo; x <= hi; x++) {
+            for (int p = 0; p < f->nch; p++) {
+                if (f->e) {
+                    const uint32_t *u = f->line[p][up], *d = f->line[p][cur];
+                    const uint32_t u0 = u[x], u1 = u[x + 1], d0 = d[x], d1 = d[x + 1];
+                    if ((u0 & u1 & d0 & d1) == full)
+                        psum[p] = den;                 /* interior: the whole base covered */
+                    else if (!(u0 | u1 | d0 | d1))
+                        psum[p] = 0;
+                    else
+                        psum[p] = tent_of(f->tab, groups, 0, u0) + tent_of(f->tab, groups, 2, u1) +
+                                  tent_of(f->tab, groups, 1, d0) + tent_of(f->tab, groups, 3, d1);
+                } else {
+                    psum[p] = ef_popcount32(f->line[p][cur][x]);
+                }
+            }
+            for (int c = 0; c < 3; c++)
+                f->sum[(size_t)x * 3 + (size_t)c] = psum[f->pos_of_colour[c]];
+        }
+        fn(user, y, lo, hi, f->sum);
     }
-    fn(user, y, lo, hi, f->sum);
 }
 
 /* Runs the shape through every channel, row by row, handing each output row
@@ -280,7 +314,8 @@ static ef_status filter_rows(ef_ctx *ctx, const ef_polygon *poly, ef_rule rule, 
         for (int c = 0; c < f->nch; c++) {
             const uint64_t ov = f->ch[c]->diag.winding_overflows;
             clear_line(f, c, f->cur);
-            line_sink ls = { f->line[c][f->cur], &f->lo[c][f->cur], &f->hi[c][f->cur] };
+            line_sink ls = { f->line[c][f->cur], &f->lo[c][f->cur], &f->hi[c][f->cur], f->iv[c][f->cur],
+                             &f->niv[c][f->cur] };
             mask_row(f->ch[c], q, evenodd, &ls);   /* empty slot and AET outside its rows: nothing */
             ctx->diag.winding_overflows += f->ch[c]->diag.winding_overflows - ov;
         }
@@ -322,6 +357,7 @@ typedef struct blend_user {
     ef_image *img;
     uint8_t premul[4], a;
     uint32_t den;
+    uint64_t p4;            /* premul in 4 lanes (internal.h's compositing helpers) */
 } blend_user;
 
 /* Spec 10.4: each colour channel blends with its own coverage, alpha with
@@ -334,10 +370,22 @@ static void row_to_image(void *user, int32_t y, int32_t x0, int32_t x1, const ui
         const uint32_t *s = sums + (size_t)x * 3;
         if (!(s[0] | s[1] | s[2]))
             continue;
+        if (b->a == 255 && (s[0] & s[1] & s[2]) == b->den && (s[0] | s[1] | s[2]) == b->den) {
+            memcpy(d, b->premul, 4);                   /* d' = P exactly: mul(d, 255) = d */
+            continue;
+        }
         uint8_t cov[4];
         for (int c = 0; c < 3; c++)
             cov[c] = (uint8_t)((255u * s[c] + b->den / 2u) / b->den);
         cov[3] = cov[1];
+        if (cov[0] == cov[1] && cov[1] == cov[2]) {
+            /* one coverage for all four channels: spec 8 in four lanes, as ef_blend_span_n */
+            const uint64_t dd = ef_spread4(ef_load32(d));
+            const uint32_t v = ef_pack4((dd + ef_mul255x4(b->p4, cov[0]) - ef_mul255x4(dd, ef_mul255(b->a, cov[0]))) &
+                                        EF_LANE8X4);
+            memcpy(d, &v, 4);
+            continue;
+        }
         for (int ch = 0; ch < 4; ch++) {
             const uint32_t sv = ef_mul255(b->premul[ch], cov[ch]), sa = ef_mul255(b->a, cov[ch]);
             d[ch] = (uint8_t)(d[ch] + sv - ef_mul255(d[ch], sa));
@@ -348,6 +396,7 @@ static void row_to_image(void *user, int32_t y, int32_t x0, int32_t x1, const ui
 ef_status ef_filter_fill(ef_ctx *ctx, ef_image *img, const ef_polygon *poly, ef_rule rule, ef_rgba8 color)
 {
     blend_user b = { img, { ef_mul255(color.r, color.a), ef_mul255(color.g, color.a), ef_mul255(color.b, color.a),
-                            color.a }, color.a, ef_filter_denominator(ctx) };
+                            color.a }, color.a, ef_filter_denominator(ctx), 0 };
+    b.p4 = ef_spread4(ef_load32(b.premul));
     return filter_rows(ctx, poly, rule, row_to_image, &b);
 }

@@ -18,6 +18,9 @@ struct ef_filt {
     int32_t tx[3], ty;             /* geometry translation of each channel, Q16.8 */
     uint32_t *line[3][2];          /* W+e masks each: [saved, current] */
     int32_t lo[3][2], hi[3][2];    /* non-zero masks lie in [lo, hi] */
+    int32_t *iv[3][2];             /* the spans written into each line, (first, last) pairs */
+    uint32_t niv[3][2];
+    int32_t *merge;                /* 6 lines' spans, merged: the columns an output row visits */
     int cur;                       /* which of the two lines is current */
     uint32_t *tab;                 /* tent: [a*2+b][byte g][256] weight sums */
     uint32_t *sum;                 /* W x 3 sums of the output row */
