@@ -246,8 +246,32 @@ static void check_default(void)
         die("context");
     ok = ok && ef_ctx_set_filter(big, EF_FILTER_TENT, EF_SUBPIXEL_NONE) == EF_ERR_ARG &&
          ef_ctx_set_filter(big, EF_FILTER_BOX, EF_SUBPIXEL_RGB) == EF_OK;
-    printf("filter: options set back to box/none render as a fresh context; bad values and a %d-px tent refused: %s\n",
-           EF_MAX_CANVAS, ok ? "ok" : "FAILED");
+    /* Spec 10.2's canvas edge, worked by hand: a shape covering exactly the
+     * 4x3 canvas gives the tent's mass inside, 7/8 on a side, about 49/64 in a
+     * corner, all of it inside; with RGB offsets the box's R channel at the
+     * left border loses the samples of the columns k with 16k + 8 < 85, k <= 4:
+     * 5 of 16 (and B at the right border those with 16k + 8 + 85 >= 256). */
+    ef_ctx *t;
+    static const ef_point full[4] = { { 0, 0 }, { 1024, 0 }, { 1024, 768 }, { 0, 768 } };
+    ef_polygon fp = { full, start, 1 };
+    uint32_t got[4 * 3 * 3];
+    grid g = { 4, got };
+    if (ef_ctx_create(&t, 4, 3, 16) != EF_OK || ef_ctx_set_filter(t, EF_FILTER_TENT, EF_SUBPIXEL_NONE) != EF_OK)
+        die("context");
+    memset(got, 0, sizeof got);
+    const uint32_t D = 4 * 16 * 16 * 16;
+    /* sides exactly 7/8 (every sample row's weights sum to 2N); a corner is 49/64 of the tent's mass but
+     * its samples are the pattern's in one quadrant, so only its alpha is the exact one: 195 */
+    ok = ok && ef_filter_coverage(t, &fp, EF_RULE_NONZERO, put_cov, &g) == EF_OK &&
+         (255 * got[0] + D / 2) / D == 195 && got[3 * 1] == D / 8 * 7 && got[3 * 4] == D / 8 * 7 &&
+         got[3 * 5] == D && got[3 * 6] == D && (255 * got[3 * 11] + D / 2) / D == 195;
+    ok = ok && ef_ctx_set_filter(t, EF_FILTER_BOX, EF_SUBPIXEL_RGB) == EF_OK;
+    memset(got, 0, sizeof got);
+    ok = ok && ef_filter_coverage(t, &fp, EF_RULE_NONZERO, put_cov, &g) == EF_OK && got[0] == 16 - 5 && got[1] == 16 &&
+         got[2] == 16 && got[3 * 3 + 2] == 16 - 5 && got[3 * 3] == 16;
+    ef_ctx_destroy(t);
+    printf("filter: options set back to box/none render as a fresh context; bad values and a %d-px tent refused; "
+           "canvas edges worked by hand (tent 7/8 on a side, alpha 195 in a corner, RGB stripes 11/16): %s\n", EF_MAX_CANVAS, ok ? "ok" : "FAILED");
     ok ? passed++ : failed++;
     ef_ctx_destroy(big);
     ef_ctx_destroy(a);
