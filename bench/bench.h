@@ -77,6 +77,12 @@ typedef struct brenderer {
 } brenderer;
 
 extern const brenderer br_agg, br_cairo, br_cairo_noaa, br_freetype, br_stb, br_ef8, br_ef16, br_ef32, br_truth;
+/* The spec 10 options (r_edgeflag.c) and their dense filtered truths
+ * (truth_filter.c): tent; box with RGB offsets; tent with RGB offsets.
+ * bench_truth_of names the truth a renderer is measured against. */
+extern const brenderer br_ef8t, br_ef16t, br_ef32t, br_ef16rgb, br_ef16trgb;
+extern const brenderer br_truth_tent, br_truth_rgb, br_truth_trgb;
+const brenderer *bench_truth_of(const brenderer *r);
 
 /* r_edgeflag.c: hashes of edgeflag's image (ef_fill) and span stream
  * (ef_rasterize) for one frame, and its diagnostics (edges in, dropped,

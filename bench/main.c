@@ -41,7 +41,9 @@
 #define MAX_REPEAT 101
 
 static const brenderer *const kAll[] = { &br_agg, &br_cairo, &br_cairo_noaa, &br_freetype, &br_stb,
-                                         &br_ef8, &br_ef16, &br_ef32, &br_truth };
+                                         &br_ef8, &br_ef16, &br_ef32, &br_truth,
+                                         &br_ef8t, &br_ef16t, &br_ef32t, &br_ef16rgb, &br_ef16trgb,
+                                         &br_truth_tent, &br_truth_rgb, &br_truth_trgb };
 static const char *const kDefaultRenderers = "agg,cairo,cairo-noaa,freetype,stb,ef8,ef16,ef32";
 static const char *const kFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 #define FIT_W 1280
@@ -388,7 +390,7 @@ static void sheet_end(sheet *s, const char *path)
 static int cmd_quality(int argc, char **argv)
 {
     int W = 640, H = 480;
-    const char *rlist = "ef8,ef16,ef32,agg,cairo,cairo-noaa,freetype,stb", *flist = "0,50,100,150", *pics = NULL;
+    const char *rlist = "ef8,ef16,ef32,agg,cairo,cairo-noaa,freetype,stb,ef8t,ef16t,ef32t,ef16rgb,ef16trgb", *flist = "0,50,100,150", *pics = NULL;
     const char *cases[256];
     int ncases = 0;
     for (int i = 0; i < argc; i++) {
@@ -416,8 +418,12 @@ static int cmd_quality(int argc, char **argv)
     const brenderer *R[MAX_R];
     int nr = parse_renderers(rlist, R);
     size_t npx = (size_t)W * (size_t)H;
-    uint8_t *truth = malloc(npx * 4 * (size_t)nf), *img = malloc(npx * 4);
-    if (!truth || !img)
+    uint8_t *truths[4], *img = malloc(npx * 4);
+    for (int k = 0; k < 4; k++)
+        if (!(truths[k] = malloc(npx * 4 * (size_t)nf)))
+            die("out of memory", NULL);
+    uint8_t *truth = truths[0];
+    if (!img)
         die("out of memory", NULL);
     printf("scene,rule,width,height,frames,renderer,max_abs,rmse,psnr_db,alpha_max,alpha_rmse,alpha_psnr_db,"
            "pct_px_diff,note\n");
@@ -427,22 +433,40 @@ static int cmd_quality(int argc, char **argv)
         bpoint *fr = malloc((c.sc.npoints ? c.sc.npoints : 1) * sizeof *fr);
         if (!fr)
             die("out of memory", NULL);
-        void *ts = br_truth.create(W, H);
-        for (int f = 0; f < nf; f++) {
-            fprintf(stderr, "efbench: truth %s %dx%d frame %d ...\n", c.scene, W, H, fl[f]);
-            bscene_frame(&c.sc, W, H, fl[f], fr);
-            br_truth.clear(ts);
-            br_truth.render(ts, &c.sc, fr);
-            br_truth.read(ts, truth + npx * 4 * (size_t)f);
+        /* The box truth, and each filtered truth (docs/spec.md 10, truth_filter.c)
+         * a renderer of the list is measured against. */
+        const brenderer *tk[4] = { &br_truth, NULL, NULL, NULL };
+        int ntk = 1;
+        for (int r = 0; r < nr; r++) {
+            const brenderer *t = bench_truth_of(R[r]);
+            int seen = 0;
+            for (int k = 0; k < ntk; k++)
+                seen |= tk[k] == t;
+            if (!seen && ntk < 4)
+                tk[ntk++] = t;
         }
-        br_truth.destroy(ts);
+        for (int k = 0; k < ntk; k++) {
+            void *ts = tk[k]->create(W, H);
+            if (!ts)
+                die("out of memory", NULL);
+            for (int f = 0; f < nf; f++) {
+                fprintf(stderr, "efbench: %s %s %dx%d frame %d ...\n", tk[k]->name, c.scene, W, H, fl[f]);
+                bscene_frame(&c.sc, W, H, fl[f], fr);
+                tk[k]->clear(ts);
+                tk[k]->render(ts, &c.sc, fr);
+                tk[k]->read(ts, truths[k] + npx * 4 * (size_t)f);
+            }
+            tk[k]->destroy(ts);
+        }
         /* Crop for the pictures: the centre, an eighth of the canvas each way
          * (the star's centre is where point sampling shows). */
         int cw = W / 8, chh = H / 8, cx = (W - cw) / 2, cy = (H - chh) / 2;
         sheet sh;
         if (pics) {
-            sheet_begin(&sh, nr + 1, cw * 4, chh * 4);
+            sheet_begin(&sh, nr + ntk, cw * 4, chh * 4);
             sheet_add(&sh, "truth 64x64", truth, W, H, cx, cy, cw, chh);
+            for (int k = 1; k < ntk; k++)
+                sheet_add(&sh, tk[k]->name, truths[k], W, H, cx, cy, cw, chh);
         }
         char fls[256] = "";
         for (int f = 0; f < nf; f++)
@@ -453,6 +477,9 @@ static int cmd_quality(int argc, char **argv)
                 printf("%s,%s,%d,%d,%s,%s,,,,,,,,\"unsupported: %s\"\n", c.scene, c.rule, W, H, fls, R[r]->name, why);
                 continue;
             }
+            int tki = 0;                               /* the truth this renderer is measured against */
+            while (tki < ntk - 1 && tk[tki] != bench_truth_of(R[r]))
+                tki++;
             void *st = R[r]->create(W, H);
             qstats q;
             memset(&q, 0, sizeof q);
@@ -461,14 +488,14 @@ static int cmd_quality(int argc, char **argv)
                 R[r]->clear(st);
                 R[r]->render(st, &c.sc, fr);
                 R[r]->read(st, img);
-                qcompare(&q, img, truth + npx * 4 * (size_t)f, npx);
+                qcompare(&q, img, truths[tki] + npx * 4 * (size_t)f, npx);
                 if (f == 0 && pics)
                     sheet_add(&sh, R[r]->name, img, W, H, cx, cy, cw, chh);
             }
             R[r]->destroy(st);
-            printf("%s,%s,%d,%d,%s,%s,%.0f,%.4f,%.2f,%.0f,%.4f,%.2f,%.3f,\n", c.scene, c.rule, W, H, fls, R[r]->name,
+            printf("%s,%s,%d,%d,%s,%s,%.0f,%.4f,%.2f,%.0f,%.4f,%.2f,%.3f,%s\n", c.scene, c.rule, W, H, fls, R[r]->name,
                    q.max, sqrt(q.sum2 / q.n), psnr(q.sum2, q.n), q.amax, sqrt(q.asum2 / q.an), psnr(q.asum2, q.an),
-                   100.0 * q.diff / ((double)npx * nf));
+                   100.0 * q.diff / ((double)npx * nf), tki ? tk[tki]->name : "");
             fflush(stdout);
         }
         if (pics) {
@@ -479,7 +506,8 @@ static int cmd_quality(int argc, char **argv)
         free(fr);
         bscene_free(&c.sc);
     }
-    free(truth);
+    for (int k = 0; k < 4; k++)
+        free(truths[k]);
     free(img);
     return 0;
 }

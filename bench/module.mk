@@ -10,7 +10,8 @@ BENCH_FRAMES ?= 200
 BENCH_REPEAT ?= 3
 BENCH_CHUNK ?= 10
 BENCH_SIZES ?= 320x240,640x480,1280x960
-BENCH_RENDERERS ?= agg,cairo,cairo-noaa,freetype,stb,ef8,ef16,ef32
+# ef8t..ef16trgb: the options of docs/spec.md 10 (tent; RGB offsets), for their cost against the box
+BENCH_RENDERERS ?= agg,cairo,cairo-noaa,freetype,stb,ef8,ef16,ef32,ef8t,ef16t,ef32t,ef16rgb,ef16trgb
 BENCH_OUT ?= bench/results
 BENCH_QUALITY_SIZE ?= 640x480
 BENCH_QUALITY_FRAMES ?= 0,50,100,150
@@ -51,7 +52,7 @@ BENCH_PAPER := star siemens_star circles random checkers square_basic square_man
 BENCH_CASES = $(foreach s,$(BENCH_REAL),$(SVGDIR)/$(s).svg@nonzero $(SVGDIR)/$(s).svg@evenodd) \
               text@nonzero text@evenodd \
               $(foreach s,$(BENCH_PAPER),$(BENCH_SCENES)/paper_$(s)_nonzero.txt $(BENCH_SCENES)/paper_$(s)_evenodd.txt)
-BENCH_QUALITY_CASES = $(BENCH_SCENES)/star64.txt $(SVGDIR)/lion.svg $(SVGDIR)/tiger.svg
+BENCH_QUALITY_CASES = $(BENCH_SCENES)/star64.txt $(SVGDIR)/lion.svg $(SVGDIR)/tiger.svg text@nonzero
 
 .PHONY: bench bench-run bench-quick bench-quick-run bench-build deps-bench
 deps-bench:

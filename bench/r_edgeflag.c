@@ -16,6 +16,7 @@
 
 #include "bench.h"
 #include "edgeflag.h"
+#include "ef_filter.h"
 
 typedef struct ef_state {
     ef_ctx *ctx;
@@ -97,9 +98,32 @@ static const char *ef_unsupported(const bscene *s)
     return NULL;
 }
 
+/* docs/spec.md section 10: the tent filter and the RGB-stripe offsets, for
+ * their cost against the box (same N) and their quality against the dense
+ * filtered truth (truth_filter.c). */
+static void *ef_create_filtered(int w, int h, int n, ef_filter f, ef_subpixel sp)
+{
+    ef_state *st = ef_create_n(w, h, n);
+    if (st && ef_ctx_set_filter(st->ctx, f, sp) != EF_OK) {
+        ef_destroy(st);
+        return NULL;
+    }
+    return st;
+}
+static void *ef_create8t(int w, int h) { return ef_create_filtered(w, h, 8, EF_FILTER_TENT, EF_SUBPIXEL_NONE); }
+static void *ef_create16t(int w, int h) { return ef_create_filtered(w, h, 16, EF_FILTER_TENT, EF_SUBPIXEL_NONE); }
+static void *ef_create32t(int w, int h) { return ef_create_filtered(w, h, 32, EF_FILTER_TENT, EF_SUBPIXEL_NONE); }
+static void *ef_create16rgb(int w, int h) { return ef_create_filtered(w, h, 16, EF_FILTER_BOX, EF_SUBPIXEL_RGB); }
+static void *ef_create16trgb(int w, int h) { return ef_create_filtered(w, h, 16, EF_FILTER_TENT, EF_SUBPIXEL_RGB); }
+
 const brenderer br_ef8 = { "ef8", ef_unsupported, ef_create8, ef_clear, ef_render, ef_read, ef_destroy };
 const brenderer br_ef16 = { "ef16", ef_unsupported, ef_create16, ef_clear, ef_render, ef_read, ef_destroy };
 const brenderer br_ef32 = { "ef32", ef_unsupported, ef_create32, ef_clear, ef_render, ef_read, ef_destroy };
+const brenderer br_ef8t = { "ef8t", ef_unsupported, ef_create8t, ef_clear, ef_render, ef_read, ef_destroy };
+const brenderer br_ef16t = { "ef16t", ef_unsupported, ef_create16t, ef_clear, ef_render, ef_read, ef_destroy };
+const brenderer br_ef32t = { "ef32t", ef_unsupported, ef_create32t, ef_clear, ef_render, ef_read, ef_destroy };
+const brenderer br_ef16rgb = { "ef16rgb", ef_unsupported, ef_create16rgb, ef_clear, ef_render, ef_read, ef_destroy };
+const brenderer br_ef16trgb = { "ef16trgb", ef_unsupported, ef_create16trgb, ef_clear, ef_render, ef_read, ef_destroy };
 
 /* ---- bit-exactness check (efbench hash): FNV-1a 64 of the image ef_fill
  * composites, of the span stream ef_rasterize reports, and the diagnostics.

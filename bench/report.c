@@ -245,6 +245,63 @@ static void fmt_summary(char *buf, size_t n, summary s)
         snprintf(buf, n, "%.2f (%.2f–%.2f)", s.med, s.lo, s.hi);
 }
 
+/* docs/spec.md section 10: each option renderer's time over the box filter's
+ * at the same N, per scene (same size, scene and rule, within one repeat's
+ * ratios to ef8), median and range over the scenes. */
+static void write_filter_cost(FILE *f, const table *t, char sizes[][64], int ns)
+{
+    static const char *const opt[][2] = { { "ef8t", "ef8" }, { "ef16t", "ef16" }, { "ef32t", "ef32" },
+                                          { "ef16rgb", "ef16" }, { "ef16trgb", "ef16" } };
+    static const char *const what[] = { "tent, 8 samples", "tent, 16 samples", "tent, 32 samples",
+                                        "box, RGB offsets, 16 samples", "tent, RGB offsets, 16 samples" };
+    int any = 0;
+    for (int r = 0; r < t->n && !any; r++)
+        for (size_t k = 0; k < sizeof opt / sizeof opt[0]; k++)
+            any |= !strcmp(get(t, r, "renderer"), opt[k][0]);
+    if (!any)
+        return;
+    fprintf(f, "## Filter base and channel offsets (docs/spec.md 10): time relative to the box at the same N\n\n"
+               "Median over scenes (min–max) of the option's time over the box filter's, both measured in the same "
+               "interleaved repeats.\n\n| renderer | option |");
+    for (int z = 0; z < ns; z++)
+        fprintf(f, " %s |", sizes[z]);
+    fprintf(f, "\n|---|---|");
+    for (int z = 0; z < ns; z++)
+        fprintf(f, "---:|");
+    fprintf(f, "\n");
+    for (size_t k = 0; k < sizeof opt / sizeof opt[0]; k++) {
+        fprintf(f, "| %s | %s |", opt[k][0], what[k]);
+        for (int z = 0; z < ns; z++) {
+            double v[MAXROWS / 4];
+            int n = 0;
+            for (int r = 0; r < t->n && n < MAXROWS / 4; r++) {
+                char sz[64];
+                snprintf(sz, sizeof sz, "%sx%s", get(t, r, "width"), get(t, r, "height"));
+                if (strcmp(sz, sizes[z]) || strcmp(get(t, r, "renderer"), opt[k][0]))
+                    continue;
+                for (int r2 = 0; r2 < t->n; r2++) {
+                    if (strcmp(get(t, r2, "renderer"), opt[k][1]) || strcmp(get(t, r2, "scene"), get(t, r, "scene")) ||
+                        strcmp(get(t, r2, "rule"), get(t, r, "rule")) || strcmp(get(t, r2, "width"), get(t, r, "width")) ||
+                        strcmp(get(t, r2, "height"), get(t, r, "height")))
+                        continue;
+                    const double a = getd(t, r, "ratio_vs_ef8"), b = getd(t, r2, "ratio_vs_ef8");
+                    if (!isnan(a) && !isnan(b) && b > 0)
+                        v[n++] = a / b;
+                    break;
+                }
+            }
+            if (n) {
+                const double m = med(v, n);
+                fprintf(f, " %.2f (%.2f–%.2f) |", m, v[0], v[n - 1]);
+            } else {
+                fprintf(f, " n/a |");
+            }
+        }
+        fprintf(f, "\n");
+    }
+    fprintf(f, "\n");
+}
+
 static void write_md(FILE *f, const table *t, const table *q, const char *machine, const char *command)
 {
     char sizes[8][64], rn[MAXNAMES][64];
@@ -354,6 +411,7 @@ static void write_md(FILE *f, const table *t, const table *q, const char *machin
         fprintf(f, "\n");
     }
     fprintf(f, "\nPlots: `bench/results/fig6_<size>.png` (one point per test and renderer, log scale).\n\n");
+    write_filter_cost(f, t, sizes, ns);
 
     /* Full tables. */
     for (int z = 0; z < ns; z++) {

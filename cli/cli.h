@@ -38,6 +38,7 @@ typedef struct ef_cli_render_args {
     int rule;                   /* -1: each shape's own; else an ef_rule */
     int32_t fit_w, fit_h;       /* 0, 0: the file's own size */
     ef_cli_format fmt;
+    int filter, subpixel;       /* ef_filter, ef_subpixel: box, none (0, 0) by default */
 } ef_cli_render_args;
 int ef_cli_render_parse(int argc, char **argv, ef_cli_render_args *a);
 
@@ -71,8 +72,17 @@ typedef struct ef_cli_vectors_args {
     uint32_t ifaces;            /* default every interface */
     int force;
     int dump;                   /* --dump: the model's output named as a DUT's dumps */
+    int filter, subpixel;       /* ef_filter, ef_subpixel: box, none (0, 0) by default */
 } ef_cli_vectors_args;
 int ef_cli_vectors_parse(int argc, char **argv, ef_cli_vectors_args *a);
+
+/* filter_opts.c: --filter box|tent, --subpixel none|rgb|bgr (docs/spec.md 10).
+ * Returns 0 when argv[*i] is neither, 1 when parsed (i advanced), -1 after a
+ * usage error.  ef_cli_apply_filter sets them on ctx: -1 on success, else an
+ * exit code (the error reported). */
+struct ef_ctx;
+int ef_cli_filter_option(const char *cmd, int argc, char **argv, int *i, int *filter, int *subpixel, int seen[2]);
+int ef_cli_apply_filter(struct ef_ctx *ctx, const char *input, int filter, int subpixel);
 
 /* Exact decimal integer: one or more ASCII digits and nothing else (no sign,
  * no spaces, no base prefix), value in [min, max].  Returns 1 and stores it,

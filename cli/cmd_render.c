@@ -23,7 +23,7 @@ static const char *const CMD = "render";
 static void usage(FILE *f)
 {
     fputs("usage: edgeflag render INPUT -o OUTPUT [--samples 8|16|32] [--rule evenodd|nonzero]\n"
-          "                       [--size WxH]\n"
+          "                       [--size WxH] [--filter box|tent] [--subpixel none|rgb|bgr]\n"
           "\n"
           "Rasterizes INPUT (.svg, or .scene/.txt in the peerbench scene format) with the\n"
           "bit-exact model and writes OUTPUT; its extension picks the format:\n"
@@ -38,6 +38,10 @@ static void usage(FILE *f)
           "  --rule RULE        fill every shape with RULE (evenodd or nonzero) instead of\n"
           "                     its own\n"
           "  --size WxH         fit the drawing into a W x H pixel canvas (1..16384 each)\n"
+          "  --filter F         box (default: one-pixel box) or tent (2x2-pixel tent,\n"
+          "                     docs/spec.md 10.2)\n"
+          "  --subpixel S       none (default), rgb or bgr: per-channel sample offsets for\n"
+          "                     striped LCD panels (docs/spec.md 10.1)\n"
           "  -h, --help         show this text\n"
           "  --                 end of options (for an INPUT starting with '-')\n"
           "\n"
@@ -53,6 +57,7 @@ int ef_cli_render_parse(int argc, char **argv, render_args *a)
 {
     int i, only_positional = 0;
     int seen[3] = { 0, 0, 0 };   /* --samples, --rule, --size */
+    int seen_filter[2] = { 0, 0 };   /* --filter, --subpixel */
 
     memset(a, 0, sizeof *a);
     a->samples = 16;
@@ -93,6 +98,9 @@ int ef_cli_render_parse(int argc, char **argv, render_args *a)
             a->output = v;
         } else if ((r = ef_cli_scene_option(CMD, argc, argv, &i, &a->samples, &a->rule, &a->fit_w, &a->fit_h,
                                             seen)) != 0) {
+            if (r < 0)
+                return EF_CLI_EXIT_USAGE;
+        } else if ((r = ef_cli_filter_option(CMD, argc, argv, &i, &a->filter, &a->subpixel, seen_filter)) != 0) {
             if (r < 0)
                 return EF_CLI_EXIT_USAGE;
         } else {
@@ -226,6 +234,9 @@ int ef_cli_render(int argc, char **argv)
         rc = exit_for(st);
         goto out;
     }
+    if ((rc = ef_cli_apply_filter(ctx, a.input, a.filter, a.subpixel)) >= 0)
+        goto out;
+    rc = 0;
     st = ef_image_alloc(&img, scene.width, scene.height);
     if (st != EF_OK) {
         ef_cli_error("%s: image %" PRId32 "x%" PRId32 ": %s", a.input, scene.width, scene.height,
@@ -236,6 +247,12 @@ int ef_cli_render(int argc, char **argv)
     /* ef_scene_render composites onto what is there: start transparent. */
     memset(img.px, 0, img.stride * (size_t)img.height);
     st = ef_scene_render(ctx, &scene, a.rule, &img);
+    if (st == EF_ERR_ARG && (a.filter || a.subpixel)) {
+        ef_cli_error("%s: a vertex lies too close to the coordinate limit (+-32768 px) to be shifted for "
+                     "--filter/--subpixel (docs/spec.md 10.1)", a.input);
+        rc = EF_CLI_EXIT_INPUT;
+        goto out;
+    }
     if (st != EF_OK) {
         ef_cli_error("%s: %s", a.input, ef_strerror(st));
         rc = exit_for(st);

@@ -29,7 +29,7 @@ static void usage(FILE *f)
 {
     fputs("usage: edgeflag vectors INPUT -o DIR [--samples 8|16|32] [--rule nonzero|evenodd]\n"
           "                        [--size WxH] [--formats hex,vcd,bin] [--interfaces LIST] [--force]\n"
-          "                        [--dump]\n"
+          "                        [--dump] [--filter box|tent] [--subpixel none|rgb|bgr]\n"
           "\n"
           "Renders INPUT (.svg, .scene/.txt) with the timing model of the reference\n"
           "microarchitecture and writes every transfer at every interface, stamped with\n"
@@ -54,6 +54,9 @@ static void usage(FILE *f)
           "                     named (IFACE.actual.hex, vectors.actual.bin; no manifest):\n"
           "                     the model standing in for the DUT, to try a bench's or a\n"
           "                     regression's plumbing with `edgeflag check`\n"
+          "  --filter F         box (default) or tent: the 2x2-pixel tent (docs/spec.md 10)\n"
+          "  --subpixel S       none (default), rgb or bgr: per-channel sample offsets;\n"
+          "                     with either, the vectors follow docs/microarch.md section 5\n"
           "  -h, --help         show this text\n"
           "  --                 end of options (for an INPUT starting with '-')\n"
           "\n"
@@ -70,6 +73,7 @@ int ef_cli_vectors_parse(int argc, char **argv, ef_cli_vectors_args *a)
 {
     int i, only_positional = 0;
     int seen[3] = { 0, 0, 0 };   /* --samples, --rule, --size */
+    int seen_filter[2] = { 0, 0 };   /* --filter, --subpixel */
     int seen_formats = 0, seen_ifaces = 0;
 
     memset(a, 0, sizeof *a);
@@ -122,6 +126,9 @@ int ef_cli_vectors_parse(int argc, char **argv, ef_cli_vectors_args *a)
             a->dir = v;
         } else if ((r = ef_cli_scene_option(CMD, argc, argv, &i, &a->samples, &a->rule, &a->fit_w, &a->fit_h,
                                             seen)) != 0) {
+            if (r < 0)
+                return EF_CLI_EXIT_USAGE;
+        } else if ((r = ef_cli_filter_option(CMD, argc, argv, &i, &a->filter, &a->subpixel, seen_filter)) != 0) {
             if (r < 0)
                 return EF_CLI_EXIT_USAGE;
         } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "--formats", &v)) != 0) {
@@ -266,6 +273,8 @@ int ef_cli_vectors(int argc, char **argv)
         rc = exit_for(st);
         goto out;
     }
+    if ((rc = ef_cli_apply_filter(ctx, a.input, a.filter, a.subpixel)) >= 0)
+        goto out;
     ef_vec_collect_init(c, a.ifaces);
     memset(&info, 0, sizeof info);
     info.input = ef_vec_base_name(a.input);

@@ -38,6 +38,8 @@ ef_status ef_fill(ef_ctx *ctx, ef_image *img, const ef_polygon *poly, ef_rule ru
         return EF_ERR_ARG;
     if (ctx->trace)
         return ef_trace_fill(ctx, img, poly, rule, color);   /* the cycle-stamped pipeline */
+    if (ctx->filt)
+        return ef_filter_fill(ctx, img, poly, rule, color);  /* section 3.5 options (filter.c) */
     ef_blend b;
     uint8_t p[4] = { ef_mul255(color.r, color.a), ef_mul255(color.g, color.a), ef_mul255(color.b, color.a), color.a };
     memcpy(&b.solid, p, 4);

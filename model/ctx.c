@@ -75,6 +75,7 @@ void ef_ctx_destroy(ef_ctx *ctx)
     free(ctx->occ);
     free(ctx->crowd);
     free(ctx->trace);
+    ef_filt_free(ctx->filt);
     free(ctx);
 }
 

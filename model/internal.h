@@ -110,6 +110,7 @@ struct ef_ctx {
     ef_diag diag;
 
     struct ef_trace *trace; /* transaction trace (trace.c), NULL when off */
+    struct ef_filt *filt;   /* section 3.5 options (filter.c), NULL when off (the default) */
 };
 
 /* edge_setup.c: appends the edges of poly to ctx->edges (steps 1-4) and
@@ -226,6 +227,12 @@ int32_t ef_et_take(ef_ctx *ctx, int32_t row, uint32_t *n);
  * in this row (old + new). */
 void ef_plot_evenodd(ef_ctx *ctx, int32_t row, int32_t head, int32_t *xmin, int32_t *xmax);
 void ef_plot_nonzero(ef_ctx *ctx, int32_t row, int32_t head, int32_t *xmin, int32_t *xmax);
+
+/* filter.c: the section 3.5 options (docs/spec.md section 10); ef_fill
+ * hands a shape to ef_filter_fill when ctx->filt is set. */
+struct ef_filt;
+void ef_filt_free(struct ef_filt *f);
+ef_status ef_filter_fill(ef_ctx *ctx, ef_image *img, const ef_polygon *poly, ef_rule rule, ef_rgba8 color);
 
 /* composite.c: a shape's colour, premultiplied and prepared for the span
  * compositor below (docs/spec.md section 8). */

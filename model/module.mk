@@ -26,7 +26,7 @@ install: lib cli
 	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/include/edgeflag $(DESTDIR)$(PREFIX)/lib/pkgconfig
 	install -m 755 $(EDGEFLAG) rtl_vectors/regress/ef-regress-shard rtl_vectors/regress/ef-regress-merge \
 	    $(DESTDIR)$(PREFIX)/bin/
-	install -m 644 model/edgeflag.h model/ef_scene.h model/ef_trace.h $(DESTDIR)$(PREFIX)/include/edgeflag/
+	install -m 644 model/edgeflag.h model/ef_scene.h model/ef_trace.h model/ef_filter.h $(DESTDIR)$(PREFIX)/include/edgeflag/
 	install -m 644 $(LIB_A) $(DESTDIR)$(PREFIX)/lib/
 	install -m 755 $(LIB_SO) $(DESTDIR)$(PREFIX)/lib/libedgeflag.so.0
 	ln -sf libedgeflag.so.0 $(DESTDIR)$(PREFIX)/lib/libedgeflag.so

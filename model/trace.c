@@ -57,7 +57,7 @@ void ef_trace_emit(ef_trace *tr, int iface, uint64_t cycle, const uint64_t *v)
 }
 
 /* One command at the next command cycle. */
-static uint64_t command(ef_trace *tr, uint64_t op, uint64_t a, uint64_t b, uint64_t c, uint64_t d)
+uint64_t ef_trace_command(ef_trace *tr, uint64_t op, uint64_t a, uint64_t b, uint64_t c, uint64_t d)
 {
     const uint64_t t = tr->cmd_next, v[5] = { op, a, b, c, d };
     ef_trace_emit(tr, EF_IF_CMD, t, v);
@@ -76,7 +76,8 @@ ef_status ef_trace_frame_begin(ef_ctx *ctx)
     tr->cmd_next = 0;
     tr->end = 0;
     tr->in_frame = 1;
-    command(tr, EF_OP_FRAME, (uint64_t)ctx->width, (uint64_t)ctx->height, 0, 0);
+    /* c: the spec 10 options, {subpixel[1:0], filter[0]}; 0 (the default) without them */
+    ef_trace_command(tr, EF_OP_FRAME, (uint64_t)ctx->width, (uint64_t)ctx->height, ef_trace_filter_bits(ctx), 0);
     return EF_OK;
 }
 
@@ -85,7 +86,7 @@ ef_status ef_trace_frame_end(ef_ctx *ctx, uint64_t *cycles)
     if (!ctx || !ctx->trace || !ctx->trace->in_frame)
         return EF_ERR_ARG;
     ef_trace *tr = ctx->trace;
-    command(tr, EF_OP_FRAME_END, 0, 0, 0, 0);
+    ef_trace_command(tr, EF_OP_FRAME_END, 0, 0, 0, 0);
     tr->in_frame = 0;
     if (cycles)
         *cycles = tr->end;
@@ -105,7 +106,7 @@ static inline void contour_edge(const ef_polygon *poly, uint32_t b, uint32_t n, 
  * walking them from the last one pairs each with its input edge: an edge that
  * was dropped cannot equal the next kept one (dropping depends only on the
  * end points), so a match is never a coincidence. */
-static int record_of(const ef_edge *E, ef_point a, ef_point z)
+int ef_trace_record_of(const ef_edge *E, ef_point a, ef_point z)
 {
     const int down = a.y < z.y;
     const ef_point p0 = down ? a : z, p1 = down ? z : a;
@@ -118,6 +119,8 @@ ef_status ef_trace_fill(ef_ctx *ctx, ef_image *img, const ef_polygon *poly, ef_r
     ef_trace *tr = ctx->trace;
     if (!poly || (rule != EF_RULE_NONZERO && rule != EF_RULE_EVENODD))
         return EF_ERR_ARG;
+    if (ctx->filt)
+        return ef_trace_filter_fill(ctx, img, poly, rule, color);   /* spec 10 (trace_filter.c) */
     /* Edge setup first: a polygon it refuses sends no command at all. */
     int32_t row_min, row_max;
     ef_et_reset(ctx);
@@ -127,7 +130,7 @@ ef_status ef_trace_fill(ef_ctx *ctx, ef_image *img, const ef_polygon *poly, ef_r
     if (!tr->in_frame)
         ef_trace_frame_begin(ctx);
 
-    command(tr, EF_OP_SHAPE, rule == EF_RULE_EVENODD, (uint64_t)color.r << 16 | (uint64_t)color.g << 8 | color.b,
+    ef_trace_command(tr, EF_OP_SHAPE, rule == EF_RULE_EVENODD, (uint64_t)color.r << 16 | (uint64_t)color.g << 8 | color.b,
             color.a, 0);
     const int32_t h = ctx->h, c = ctx->c, w256 = ctx->width * EF_DEV_ONE;
     const unsigned log2n = ctx->samples == 8 ? 3 : ctx->samples == 16 ? 4 : 5;
@@ -137,10 +140,10 @@ ef_status ef_trace_fill(ef_ctx *ctx, ef_image *img, const ef_polygon *poly, ef_r
         for (uint32_t k = 0; k < n; k++) {
             ef_point a, z;
             contour_edge(poly, b, n, k, &a, &z);
-            const uint64_t t = command(tr, EF_OP_EDGE, bits(a.x), bits(a.y), bits(z.x), bits(z.y));
+            const uint64_t t = ef_trace_command(tr, EF_OP_EDGE, bits(a.x), bits(a.y), bits(z.x), bits(z.y));
             const uint64_t ve[5] = { 0, bits(a.x), bits(a.y), bits(z.x), bits(z.y) };
             ef_trace_emit(tr, EF_IF_SEG, t + EF_L_DEC, ve);
-            if (rec < 0 || !record_of(&ctx->edges[rec], a, z))
+            if (rec < 0 || !ef_trace_record_of(&ctx->edges[rec], a, z))
                 continue;                         /* horizontal or outside: no record */
             ef_edge E = ctx->edges[rec--];        /* a copy: the plotter starts the DDA itself */
             ef_dda_start(&E, h, c, w256, ctx->samples - 1, 0);
@@ -149,7 +152,7 @@ ef_status ef_trace_fill(ef_ctx *ctx, ef_image *img, const ef_polygon *poly, ef_r
             ef_trace_emit(tr, EF_IF_ET_WR, t + EF_L_DEC + EF_L_SETUP, vw);
         }
     }
-    const uint64_t t_end = command(tr, EF_OP_SHAPE_END, 0, 0, 0, 0);
+    const uint64_t t_end = ef_trace_command(tr, EF_OP_SHAPE_END, 0, 0, 0, 0);
     const uint64_t eos[10] = { 1 };    /* eos = 1, every other field 0 */
     ef_trace_emit(tr, EF_IF_SEG, t_end + EF_L_DEC, eos);
     ef_trace_emit(tr, EF_IF_ET_WR, t_end + EF_L_DEC + EF_L_SETUP, eos);

@@ -31,6 +31,17 @@ typedef struct ef_trace {
  * interface's field order; each cut to its width). */
 void ef_trace_emit(ef_trace *tr, int iface, uint64_t cycle, const uint64_t *v);
 
+/* trace.c: one command at the next command cycle (returns its cycle); whether
+ * record E is the one edge setup made of edge a -> z. */
+uint64_t ef_trace_command(ef_trace *tr, uint64_t op, uint64_t a, uint64_t b, uint64_t c, uint64_t d);
+int ef_trace_record_of(const ef_edge *E, ef_point a, ef_point z);
+
+/* trace_filter.c: the spec 10 options in the timing model (docs/microarch.md
+ * section 5): ef_fill with the trace and the options on, and FRAME's c field. */
+#define EF_L_FILT 4         /* weigh sweep visit -> pix: line read, adder tree, alpha, blend */
+ef_status ef_trace_filter_fill(ef_ctx *ctx, ef_image *img, const ef_polygon *poly, ef_rule rule, ef_rgba8 color);
+uint64_t ef_trace_filter_bits(const ef_ctx *ctx);
+
 /* trace.c: ef_fill with the trace on. */
 ef_status ef_trace_fill(ef_ctx *ctx, ef_image *img, const ef_polygon *poly, ef_rule rule, ef_rgba8 color);
 

@@ -31,6 +31,7 @@
 #include <string.h>
 
 #include "edgeflag.h"
+#include "ef_filter.h"
 
 #define W 48
 #define H 48
@@ -70,6 +71,16 @@ static double area_abs(const dpt *p, int n)
     for (int i = 0; i < n; i++)
         s += p[i].x * p[(i + 1) % n].y - p[(i + 1) % n].x * p[i].y;
     return fabs(s) / 2;
+}
+
+static double pixel_area_at(const dpt *poly, int n, double px, double py)
+{
+    dpt a[64], b[64];
+    int m = clip_half(poly, n, -1, 0, -px, a);
+    m = clip_half(a, m, 1, 0, px + 1, b);
+    m = clip_half(b, m, 0, -1, -py, a);
+    m = clip_half(a, m, 0, 1, py + 1, b);
+    return m >= 3 ? area_abs(b, m) : 0;
 }
 
 static double pixel_area(const dpt *poly, int n, int px, int py)
@@ -124,20 +135,151 @@ static int make_convex(ef_point *pts, dpt *d)
     return n;
 }
 
+/* ---- --filter: docs/spec.md section 10 against exact filtered coverage ----
+ * The tent's exact coverage of pixel (i, j) for a channel shifted by d px is
+ * the integral over the polygon of t(x - xc) t(y - yc), t(u) = 1 - |u| on
+ * [-1, 1], centre (xc, yc) = (i + 1/2 + d, j + 1/2).  On each of the base's
+ * four unit squares the kernel is a product of linear functions,
+ * (a0 + a1 u)(b0 + b1 v) in the square's local coordinates, so its integral
+ * over the polygon clipped to the square is a combination of the clipped
+ * polygon's moments A, Sx, Sy, Sxy (closed forms of Green's theorem). */
+static void moments(const dpt *p, int n, double ox, double oy, double m[4])
+{
+    double A = 0, Sx = 0, Sy = 0, Sxy = 0;
+    for (int i = 0; i < n; i++) {
+        const double x0 = p[i].x - ox, y0 = p[i].y - oy, x1 = p[(i + 1) % n].x - ox, y1 = p[(i + 1) % n].y - oy;
+        const double cr = x0 * y1 - x1 * y0;
+        A += cr;
+        Sx += (x0 + x1) * cr;
+        Sy += (y0 + y1) * cr;
+        Sxy += cr * (x0 * y1 + 2 * x0 * y0 + 2 * x1 * y1 + x1 * y0);
+    }
+    const double sg = A < 0 ? -1 : 1;
+    m[0] = sg * A / 2;
+    m[1] = sg * Sx / 6;
+    m[2] = sg * Sy / 6;
+    m[3] = sg * Sxy / 24;
+}
+
+static double clip_box(const dpt *poly, int n, double x0, double y0, double x1, double y1, dpt *out)
+{
+    dpt a[64];
+    int m = clip_half(poly, n, -1, 0, -x0, a);
+    m = clip_half(a, m, 1, 0, x1, out);
+    m = clip_half(out, m, 0, -1, -y0, a);
+    m = clip_half(a, m, 0, 1, y1, out);
+    return m;
+}
+
+static double tent_exact(const dpt *poly, int n, double xc, double yc)
+{
+    double total = 0;
+    for (int sx = 0; sx < 2; sx++)
+        for (int sy = 0; sy < 2; sy++) {
+            dpt c[64];
+            const double ox = xc - 1 + sx, oy = yc - 1 + sy;
+            const int m = (int)clip_box(poly, n, ox, oy, ox + 1, oy + 1, c);
+            if (m < 3)
+                continue;
+            double mo[4];
+            moments(c, m, ox, oy, mo);
+            /* left/top square: weight u (resp. v); right/bottom: 1 - u */
+            const double a0 = sx ? 1 : 0, a1 = sx ? -1 : 1, b0 = sy ? 1 : 0, b1 = sy ? -1 : 1;
+            total += a0 * b0 * mo[0] + a1 * b0 * mo[1] + a0 * b1 * mo[2] + a1 * b1 * mo[3];
+        }
+    return total;
+}
+
+static uint32_t fsum[W * H * 3];
+static void put_cov(void *u, int32_t y, int32_t x, const uint32_t sum[3])
+{
+    (void)u;
+    memcpy(&fsum[(y * W + x) * 3], sum, sizeof fsum[0] * 3);
+}
+
+/* Per filter setting and N: alpha of each channel against 255 x the exact
+ * filtered coverage, over the pixels the shape covers partly.  Bounds: no
+ * bias (|mean| <= 1 level), RMS below the box's bound for N, falling with N. */
+static int filter_check(int polys, uint64_t seed)
+{
+    static const struct { const char *name; ef_filter f; ef_subpixel s; } cfs[] = {
+        { "tent", EF_FILTER_TENT, EF_SUBPIXEL_NONE },
+        { "tent, RGB offsets", EF_FILTER_TENT, EF_SUBPIXEL_RGB },
+        { "box, RGB offsets", EF_FILTER_BOX, EF_SUBPIXEL_RGB },
+    };
+    /* the box's bounds; the tent (4N weighted samples) must do better than half of them */
+    static const double rms_bound[3] = { 16, 9, 6 };
+    int pass = 0, fail = 0;
+    for (int k = 0; k < 3; k++) {
+        double rms_prev = 1e9;
+        for (int t = 0; t < 3; t++) {
+            const int n = 8 << t;
+            rng_state = seed;
+            ef_ctx *ctx;
+            if (ef_ctx_create(&ctx, W, H, n) != EF_OK || ef_ctx_set_filter(ctx, cfs[k].f, cfs[k].s) != EF_OK)
+                return 70;
+            const double den = ef_filter_denominator(ctx);
+            double sum = 0, sum2 = 0, maxe = 0;
+            long count = 0;
+            for (int p = 0; p < polys; p++) {
+                ef_point pts[12];
+                dpt d[12];
+                const int np = make_convex(pts, d);
+                uint32_t start[2] = { 0, (uint32_t)np };
+                ef_polygon poly = { pts, start, 1 };
+                memset(fsum, 0, sizeof fsum);
+                if (ef_filter_coverage(ctx, &poly, (p & 1) ? EF_RULE_EVENODD : EF_RULE_NONZERO, put_cov, NULL) != EF_OK)
+                    return 70;
+                for (int c = 0; c < 3; c++) {
+                    const double shift = cfs[k].s == EF_SUBPIXEL_NONE ? 0 : (c - 1) * 85 / 256.0;
+                    for (int y = 0; y < H; y++)
+                        for (int x = 0; x < W; x++) {
+                            const double a = cfs[k].f == EF_FILTER_TENT ? tent_exact(d, np, x + 0.5 + shift, y + 0.5)
+                                                                        : pixel_area_at(d, np, x + shift, y);
+                            if (a <= 1e-12 || a >= 1 - 1e-12)
+                                continue;
+                            const double alpha = floor((255.0 * fsum[(y * W + x) * 3 + c] + den / 2) / den);
+                            const double e = alpha - 255 * a;
+                            sum += e;
+                            sum2 += e * e;
+                            maxe = fabs(e) > maxe ? fabs(e) : maxe;
+                            count++;
+                        }
+                }
+            }
+            ef_ctx_destroy(ctx);
+            const double mean = sum / (double)count, rms = sqrt(sum2 / (double)count);
+            const double bound = cfs[k].f == EF_FILTER_TENT ? rms_bound[t] / 2 : rms_bound[t];
+            const int ok = fabs(mean) <= 1.0 && rms <= bound && rms < rms_prev;
+            printf("area: %-18s N=%2d  %ld partial channel values of %d convex polygons: mean %+.3f, RMS %.3f, max %.1f levels %s\n",
+                   cfs[k].name, n, count, polys, mean, rms, maxe, ok ? "ok" : "FAILED");
+            ok ? pass++ : fail++;
+            rms_prev = rms;
+        }
+    }
+    printf("area: %d passed, %d failed\n", pass, fail);
+    return fail ? 1 : 0;
+}
+
 int main(int argc, char **argv)
 {
     int polys = 400;
     uint64_t seed = 20070101;
+    int filter = 0;
     for (int i = 1; i < argc; i++) {
-        if (!strcmp(argv[i], "--polygons") && i + 1 < argc)
+        if (!strcmp(argv[i], "--filter"))
+            filter = 1;
+        else if (!strcmp(argv[i], "--polygons") && i + 1 < argc)
             polys = atoi(argv[++i]);
         else if (!strcmp(argv[i], "--seed") && i + 1 < argc)
             seed = strtoull(argv[++i], NULL, 0);
         else {
-            fprintf(stderr, "usage: area_check [--polygons K] [--seed S]\n");
+            fprintf(stderr, "usage: area_check [--filter] [--polygons K] [--seed S]\n");
             return 2;
         }
     }
+    if (filter)
+        return filter_check(polys, seed);
     static const double rms_bound[3] = { 16, 9, 6 };
     double rms_prev = 1e9;
     int pass = 0, fail = 0;

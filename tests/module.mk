@@ -79,3 +79,4 @@ include tests/host/module.mk
 include tests/host/socket.mk
 include tests/sanitize/module.mk
 include tests/portability.mk
+include tests/filter/module.mk

@@ -126,6 +126,15 @@ for svg in "$svgdir"/*.svg; do
     done
 done
 for c in "${cfgs[@]}"; do o=$(opts_of $c); jobs+=("regress ($c)|$out/regress.scene|$o|"); done
+# the section 3.5 options (docs/spec.md 10): tent, channel offsets, both
+if "$ref/edgeflag" render --help 2>/dev/null | grep -q -- --filter; then
+    for o in "--samples 8 --filter tent" "--samples 16 --subpixel bgr" "--samples 32 --filter tent --subpixel rgb"; do
+        jobs+=("regress ($o)|$out/regress.scene|$o|")
+    done
+    for f in $(ls "$out"/*.scene | grep -v '/regress.scene$' | head -n 3); do
+        jobs+=("$(basename "$f" .scene) (16 tent rgb)|$f|--samples 16 --filter tent --subpixel rgb|")
+    done
+fi
 ngen=0
 if "$ref/edgeflag" gen --help >/dev/null 2>&1 && "$ref/edgeflag" gen -o "$out/gen" --level 1 >"$out/gen.log" 2>&1; then
     k=0
@@ -146,6 +155,9 @@ if "$ref/edgeflag" vectors --help >/dev/null 2>&1; then
     for f in $(ls "$out"/*.scene | grep -v '/regress.scene$' | head -n 2); do
         vjobs+=("vectors $(basename "$f" .scene) (8 file)|$f|--samples 8")
     done
+    if "$ref/edgeflag" vectors --help 2>/dev/null | grep -q -- --filter; then
+        vjobs+=("vectors regress (16 tent rgb)|$out/regress.scene|--samples 16 --filter tent --subpixel rgb")
+    fi
 fi
 
 # ------------------------------------------------------------------ renders
@@ -219,7 +231,7 @@ if [ "$fail" -eq 0 ]; then
 else
     echo "portability: builds ${names[*]#build-} do NOT all agree (see above)"
 fi
-echo "portability: ${#jobs[@]} images per build: $nsvg shared SVGs (dumps; SVG = dump on native builds) and regress_scene at 8/16/32 x file/evenodd/nonzero, and $ngen 'edgeflag gen' cases"
+echo "portability: ${#jobs[@]} images per build: $nsvg shared SVGs (dumps; SVG = dump on native builds) and regress_scene at 8/16/32 x file/evenodd/nonzero, and $ngen 'edgeflag gen' cases, and 6 with --filter/--subpixel (docs/spec.md 10)"
 echo "portability: ${#vjobs[@]} vector sets per build (hex and bin): regress_scene at 3 configurations and 2 SVG dumps"
 for s in "${skips[@]}"; do echo "portability: SKIPPED $s"; done
 echo "$pass passed, $fail failed"

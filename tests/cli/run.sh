@@ -399,6 +399,30 @@ else
     bad "patterns --emit-c" "rc=$rc; diff: $(diff out "$root/model/pattern_tables.c" | head -5 | tr '\n' ' ')"
 fi
 
+# ------------------------------------------- --filter, --subpixel (docs/spec.md 10)
+printf 'scene 6 4\nshape nonzero 200 100 50 255\ncontour 0.3 0.2 5.1 1.4 2.2 3.9\n' >opt.scene
+run render opt.scene -o box.pam --samples 16
+run render opt.scene -o box2.pam --samples 16 --filter box --subpixel none
+if [ $rc -eq 0 ] && cmp -s box.pam box2.pam; then ok "--filter box --subpixel none is the default, byte for byte"
+else bad "--filter box --subpixel none" "rc=$rc"; fi
+run render opt.scene -o tent.pam --samples 16 --filter tent --subpixel rgb
+if [ $rc -eq 0 ] && [ "$(size_of tent.pam)" = "$(size_of box.pam)" ] && ! cmp -s box.pam tent.pam; then
+    ok "--filter tent --subpixel rgb renders another image of the same size"
+else bad "--filter tent --subpixel rgb" "rc=$rc"; fi
+for o in "--filter gauss" "--subpixel vrgb" "--filter tent --filter box" "--subpixel"; do
+    # shellcheck disable=SC2086
+    run render opt.scene -o x.pam $o
+    if [ $rc -eq 2 ] && absent x.pam && grep -q -- "--" err; then ok "render $o: usage error, exit 2, nothing written"
+    else bad "render $o" "rc=$rc $(head -c 200 err)"; fi
+done
+printf 'scene 4 4\nshape nonzero 255 0 0 255\ncontour 32767.9 0 1 0 1 1\n' >far.scene
+run render far.scene -o far.pam --filter tent
+if [ $rc -eq 3 ] && absent far.pam && grep -q 'coordinate limit' err; then
+    ok "--filter tent with a vertex 0.1 px inside the limit: exit 3, named, nothing written"
+else bad "--filter tent far vertex" "rc=$rc $(head -c 200 err)"; fi
+run render far.scene -o far.pam
+if [ $rc -eq 0 ]; then ok "the same scene renders without the options"; else bad "far scene without options" "rc=$rc"; fi
+
 [ "$skip" -gt 0 ] && echo "cli: $skip skipped"
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

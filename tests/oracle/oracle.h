@@ -94,6 +94,17 @@ int64_t eo_sample_winding(const eo_polygon *p, int samples, int64_t i, int64_t j
 /* The same by the triangle-fan method (must be equal). */
 int64_t eo_sample_winding_fan(const eo_polygon *p, int samples, int64_t i, int64_t j, int s, int *err);
 
+/* docs/spec.md section 10 (tests/oracle/oracle_filter.c): per-pixel coverage
+ * sums with the tent filter (filter 1; 0 the box) and the per-channel sample
+ * offsets (subpixel 0 none, 1 RGB, 2 BGR) under one rule.  sums[(j*W + i)*3 + c]
+ * for c = R, G, B, over the denominator eo_filter_denominator (65536 N for the
+ * tent, N for the box).  EO_ERR_RANGE when a vertex moved by a channel's shift
+ * leaves |v| < 2^23; W, H <= 16383. */
+int eo_filter_eval(const eo_polygon *p, int samples, int W, int H, int filter, int subpixel, int evenodd,
+                   uint32_t *sums);
+uint32_t eo_filter_denominator(int filter, int samples);
+int eo_filter_shift(int subpixel, int colour);   /* Q16.8 shift of colour c's samples */
+
 /* Debug aids for the harness. */
 /* Prints the polygon as text: "contour c (n points): x,y x,y ...". */
 void eo_polygon_fprint(FILE *f, const eo_polygon *p);
