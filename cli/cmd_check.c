@@ -259,9 +259,8 @@ int chk_pair(chk_run *r, const char *ep, const char *ap, const ef_vec_manifest_f
     if (st != EF_OK)
         return chk_read_error(r, st, &err, ep, ap ? ap : "-");
     if (mf && mf->has_count && mf->count != total(&e)) {
-        snprintf(buf, sizeof buf, "%s:%" PRIu64 ":%" PRIu64 ": the manifest counts %" PRIu64
-                 " transactions in '%s', the file holds %" PRIu64, mname, mf->line, mf->col, mf->count, mf->name,
-                 total(&e));
+        snprintf(buf, sizeof buf, "%s: files[%zu].count: the manifest counts %" PRIu64
+                 " transactions in '%s', the file holds %" PRIu64, mname, mf->index, mf->count, mf->name, total(&e));
         rc = chk_input_error(r, EF_ERR_SYNTAX, buf, ep, ap ? ap : "-");
         goto out;
     }

@@ -29,7 +29,7 @@
 uint32_t ef_vec_crc32(uint32_t crc, const void *data, size_t n);
 
 /* SHA-256 (FIPS 180-4), by GNU Nettle.  Builds without the manifest
- * (WITH_MANIFEST=0: no Nettle, no JSON library) have no hashing. */
+ * (WITH_MANIFEST=0: no Nettle, no json-c) have no hashing. */
 #ifndef EF_NO_MANIFEST
 #include <nettle/sha2.h>
 typedef struct ef_vec_sha256 {
@@ -173,9 +173,12 @@ typedef struct ef_vec_file {
     uint64_t count, bytes;
     char sha256[65];
 } ef_vec_file;
-/* manifest.json; the string of info->input is escaped for JSON. */
-void ef_vec_manifest_write(ef_vec_out *o, const ef_vec_info *info, const ef_vec_collect *c,
-                           const ef_vec_file *files, size_t nfiles);
+#ifndef EF_NO_MANIFEST
+/* manifest.json, by json-c (docs/vectors.md section 6).  0, or -1 when out
+ * of memory (nothing written then). */
+int ef_vec_manifest_write(ef_vec_out *o, const ef_vec_info *info, const ef_vec_collect *c,
+                          const ef_vec_file *files, size_t nfiles);
+#endif
 
 /* ----------------------------------------------------------------- seed */
 

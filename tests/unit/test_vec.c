@@ -425,8 +425,10 @@ static void test_manifest(void **state)
     char *got;
     (void)state;
     small_run(&m.r, 1u << EF_IF_ET_RD);
-    /* quote, backslash, a control character, U+00E9 in UTF-8, a stray byte */
-    m.r.info.input = "q\"b\\s\x01\xc3\xa9\xff.svg";
+    /* quote, backslash, control characters, DEL, U+00E9 in UTF-8, a stray
+     * byte; the largest seed (json-c prints it exactly) */
+    m.r.info.input = "q\"b\\s\x01\t\x7f\xc3\xa9\xff.svg";
+    m.r.info.seed = UINT64_MAX;
     memset(m.f, 0, sizeof m.f);
     strcpy(m.f[0].name, "et_rd.expected.hex");
     m.f[0].format = "hex";
@@ -440,12 +442,12 @@ static void test_manifest(void **state)
                              "  \"format\": \"edgeflag-vectors\",\n"
                              "  \"version\": 1,\n"
                              "  \"generator\": \"edgeflag " EF_VERSION_STRING "\",\n"
-                             "  \"input\": \"q\\\"b\\\\s\\u0001\xc3\xa9\\ufffd.svg\",\n"
+                             "  \"input\": \"q\\\"b\\\\s\\u0001\\t\x7f\xc3\xa9\xef\xbf\xbd.svg\",\n"
                              "  \"width\": 7,\n"
                              "  \"height\": 5,\n"
                              "  \"samples\": 8,\n"
                              "  \"rule\": \"evenodd\",\n"
-                             "  \"seed\": 42,\n"
+                             "  \"seed\": 18446744073709551615,\n"
                              "  \"cycles\": 4,\n"
                              "  \"transactions\": 3,\n"
                              "  \"interfaces\": [\n"
