@@ -36,11 +36,11 @@ CPPFLAGS += -DEF_NO_PNG
 endif
 CMOCKA_LIBS  := $(shell $(PKG_CONFIG) --libs cmocka 2>/dev/null || echo -lcmocka)
 # WITH_MANIFEST=0 builds the vector tools without the manifest (manifest.json and its SHA-256):
-# no GNU Nettle and no Jansson, as the 32-bit and cross builds of the portability matrix must
+# no GNU Nettle and no json-c, as the 32-bit and cross builds of the portability matrix must
 # (Debian 12 cannot install their foreign -dev packages here).  VEC_LIBS links rtl_vectors/.
 WITH_MANIFEST ?= 1
 ifeq ($(WITH_MANIFEST),1)
-VEC_LIBS     := $(shell $(PKG_CONFIG) --libs nettle jansson 2>/dev/null || echo -lnettle -ljansson)
+VEC_LIBS     := $(shell $(PKG_CONFIG) --libs nettle json-c 2>/dev/null || echo -lnettle -ljson-c)
 else
 CPPFLAGS += -DEF_NO_MANIFEST
 VEC_LIBS     :=

@@ -8,6 +8,7 @@
 #ifndef EF_CLI_CHECK_H
 #define EF_CLI_CHECK_H
 
+#include <threads.h>
 #include <stdint.h>
 #include <stdio.h>
 
@@ -57,6 +58,21 @@ typedef struct chk_run {
  * NULL) and, when ap is not NULL, ACTUAL file ap, and compares every
  * interface both hold.  0, or the exit code of an input error (reported). */
 int chk_pair(chk_run *r, const char *ep, const char *ap, const ef_vec_manifest_file *mf, const char *mname);
+/* check_read.c: a dump read in a second thread while the caller reads the
+ * expected file (or at once, when no thread can be started). */
+typedef struct chk_async_read {
+    thrd_t thr;
+    int started;
+    const char *path;
+    int want, hint;       /* as ef_vec_read_path's */
+    ef_status st;         /* after chk_read_wait */
+    ef_vec_dump dump;
+    ef_vec_read_error err;
+} chk_async_read;
+void chk_read_start(chk_async_read *ar, const char *path, int want, int hint);
+void chk_read_wait(chk_async_read *ar);
+/* Waits and frees what was read. */
+void chk_read_drop(chk_async_read *ar);
 /* check_dir.c: two directories (r->a->expected, r->a->actual); as chk_pair. */
 int chk_dirs(chk_run *r);
 /* Reports an input error on stderr and as a JUnit <error>; the exit code

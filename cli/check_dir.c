@@ -95,8 +95,8 @@ static int dir_entry(chk_run *r, const char *name, const ef_vec_manifest_file *m
     }
     if (mf && !chk_is_file(ep)) {
         char buf[1024];
-        snprintf(buf, sizeof buf, "%s:%" PRIu64 ":%" PRIu64 ": the manifest names '%s', which is not in %s", mname,
-                 mf->line, mf->col, name, E);
+        snprintf(buf, sizeof buf, "%s: files[%zu].name: the manifest names '%s', which is not in %s", mname,
+                 mf->index, name, E);
         rc = chk_input_error(r, EF_ERR_SYNTAX, buf, ep, "-");
     } else if (ap) {
         rc = chk_pair(r, ep, ap, mf, mname);

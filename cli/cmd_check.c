@@ -233,6 +233,8 @@ static void keep_background(chk_run *r, ef_vec_dump *d)
     r->have_bg = 1;
 }
 
+static int ends_with(const char *s, const char *suffix);
+
 static uint64_t total(const ef_vec_dump *d)
 {
     uint64_t n = 0;
@@ -253,13 +255,24 @@ int chk_pair(chk_run *r, const char *ep, const char *ap, const ef_vec_manifest_f
     int rc = 0;
 
     memset(&a, 0, sizeof a);
-    st = ef_vec_read_path(ep, NULL, -1, mf && mf->iface >= 0 ? mf->iface : ef_vec_iface_from_name(ep), &e, &err);
-    if (st != EF_OK)
+    /* ACTUAL is read beside EXPECTED when the interface it will be asked for
+     * can be told now: EXPECTED binary (none), or hex with a known interface
+     * (its header must then name that one, or the guess is dropped below). */
+    const int ehint = mf && mf->iface >= 0 ? mf->iface : ef_vec_iface_from_name(ep);
+    const int ebin = ends_with(ep, ".bin"), guess = ebin ? -1 : ehint;
+    chk_async_read ar;
+    int spec = ap && (ebin || guess >= 0);
+    if (spec)
+        chk_read_start(&ar, ap, guess, guess >= 0 ? guess : ef_vec_iface_from_name(ap));
+    st = ef_vec_read_path(ep, NULL, -1, ehint, &e, &err);
+    if (st != EF_OK) {
+        if (spec)
+            chk_read_drop(&ar);
         return chk_read_error(r, st, &err, ep, ap ? ap : "-");
+    }
     if (mf && mf->has_count && mf->count != total(&e)) {
-        snprintf(buf, sizeof buf, "%s:%" PRIu64 ":%" PRIu64 ": the manifest counts %" PRIu64
-                 " transactions in '%s', the file holds %" PRIu64, mname, mf->line, mf->col, mf->count, mf->name,
-                 total(&e));
+        snprintf(buf, sizeof buf, "%s: files[%zu].count: the manifest counts %" PRIu64
+                 " transactions in '%s', the file holds %" PRIu64, mname, mf->index, mf->count, mf->name, total(&e));
         rc = chk_input_error(r, EF_ERR_SYNTAX, buf, ep, ap ? ap : "-");
         goto out;
     }
@@ -278,7 +291,19 @@ int chk_pair(chk_run *r, const char *ep, const char *ap, const ef_vec_manifest_f
     for (int i = 0; e.format == EF_VEC_FMT_HEX && i < EF_IF_COUNT; i++)
         if (e.mask >> i & 1u)
             want = i;
-    st = ef_vec_read_path(ap, NULL, want, want >= 0 ? want : ef_vec_iface_from_name(ap), &a, &err);
+    if (spec && want == guess) {
+        chk_read_wait(&ar);
+        spec = 0;
+        st = ar.st;
+        a = ar.dump;
+        err = ar.err;
+    } else {
+        if (spec) {
+            chk_read_drop(&ar);
+            spec = 0;
+        }
+        st = ef_vec_read_path(ap, NULL, want, want >= 0 ? want : ef_vec_iface_from_name(ap), &a, &err);
+    }
     if (st != EF_OK) {
         rc = chk_read_error(r, st, &err, ep, ap);
         goto out;
@@ -310,6 +335,8 @@ int chk_pair(chk_run *r, const char *ep, const char *ap, const ef_vec_manifest_f
                 name, ep, ap, e.seq[i].n, a.seq[i].n, r->mismatches - before, r->mismatches - before == 1 ? "" : "es");
     }
 out:
+    if (spec)
+        chk_read_drop(&ar);
     if (r->a->diff_image && rc == 0)
         keep_background(r, &e);
     ef_vec_dump_free(&e);

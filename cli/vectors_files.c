@@ -124,7 +124,8 @@ typedef struct body {
     size_t len;
 } body;
 
-static void fill(ef_vec_out *o, const ef_vec_file *f, const body *b)
+/* 0, or -1 when out of memory. */
+static int fill(ef_vec_out *o, const ef_vec_file *f, const body *b)
 {
     const ef_cli_vec_job *job = b->job;
     if (strcmp(f->format, "hex") == 0)
@@ -132,11 +133,14 @@ static void fill(ef_vec_out *o, const ef_vec_file *f, const body *b)
     else if (strcmp(f->format, "vcd") == 0)
         ef_vec_vcd_write(o, job->info, job->collect);
     else if (strcmp(f->format, "bin") == 0)
-        ef_vec_bin_write(o, job->info, job->collect);
+        return ef_vec_bin_write(o, job->info, job->collect);
+#ifndef EF_NO_MANIFEST
     else if (strcmp(f->name, MANIFEST) == 0)
-        ef_vec_manifest_write(o, job->info, job->collect, b->files, b->nfiles);
+        return ef_vec_manifest_write(o, job->info, job->collect, b->files, b->nfiles);
+#endif
     else
         ef_vec_out_write(o, b->bytes, b->len);
+    return 0;
 }
 
 /* Writes f atomically and records its size and hash in it. */
@@ -152,8 +156,14 @@ static int write_file(ef_vec_out *o, ef_vec_file *f, const body *b)
         ef_cli_error("cannot write '%s': %s", path, strerror(errno));
         return EF_CLI_EXIT_OUTPUT;
     }
-    ef_vec_out_init(o, af.fp, EF_VEC_OUT_SHA);
-    fill(o, f, b);
+    /* A second thread hashes and writes while this one formats. */
+    ef_vec_out_init(o, af.fp, EF_VEC_OUT_SHA | EF_VEC_OUT_THREAD);
+    if (fill(o, f, b) != 0) {
+        (void)ef_vec_out_finish(o, digest);     /* ends the thread */
+        ef_cli_atomic_abort(&af);
+        ef_cli_error("out of memory writing '%s'", path);
+        return EF_CLI_EXIT_INTERNAL;
+    }
     if (ef_vec_out_finish(o, digest) != 0) {
         int e = errno;
         ef_cli_atomic_abort(&af);

@@ -29,7 +29,7 @@
 uint32_t ef_vec_crc32(uint32_t crc, const void *data, size_t n);
 
 /* SHA-256 (FIPS 180-4), by GNU Nettle.  Builds without the manifest
- * (WITH_MANIFEST=0: no Nettle, no JSON library) have no hashing. */
+ * (WITH_MANIFEST=0: no Nettle, no json-c) have no hashing. */
 #ifndef EF_NO_MANIFEST
 #include <nettle/sha2.h>
 typedef struct ef_vec_sha256 {
@@ -50,8 +50,18 @@ void ef_vec_sha256_hex(const uint8_t digest[32], char out[65]);
 
 /* A buffered byte sink that counts, hashes (SHA-256) and optionally CRCs
  * what passes through, so the manifest's sizes and hashes describe exactly
- * the bytes written.  With fp NULL nothing is written (a counting pass). */
-enum { EF_VEC_OUT_SHA = 1, EF_VEC_OUT_CRC = 2 };
+ * the bytes written.  With fp NULL nothing is written (a counting pass).
+ *
+ * With EF_VEC_OUT_THREAD the hashing and writing of each full buffer happen
+ * in a second thread while the writer fills the other buffer (the SHA-256
+ * is a quarter of `edgeflag vectors`' work, the file system's copy another
+ * tenth); the bytes, their order, the hash and the CRC are the same.  If
+ * the thread cannot be started the sink works without it.  Every
+ * ef_vec_out_init must be followed by ef_vec_out_finish, which ends the
+ * thread. */
+enum { EF_VEC_OUT_SHA = 1, EF_VEC_OUT_CRC = 2, EF_VEC_OUT_THREAD = 4 };
+#define EF_VEC_OUT_BUF (1u << 16)
+struct ef_vec_out_worker;
 typedef struct ef_vec_out {
     FILE *fp;
     unsigned flags;
@@ -60,10 +70,31 @@ typedef struct ef_vec_out {
     uint64_t bytes;        /* written (or counted) so far */
     int err;               /* errno of the first failed write; later writes are dropped */
     size_t used;
-    unsigned char buf[1 << 16];
+    unsigned char *buf;    /* the buffer being filled: one of mem */
+    struct ef_vec_out_worker *worker;   /* NULL: hashing and writing in this thread */
+    unsigned char mem[2][EF_VEC_OUT_BUF];
 } ef_vec_out;
 void ef_vec_out_init(ef_vec_out *o, FILE *fp, unsigned flags);
+/* Writes n bytes; a large block (a whole buffer or more) goes to the hash
+ * and the file without being copied. */
 void ef_vec_out_write(ef_vec_out *o, const void *data, size_t n);
+/* Hands what is buffered to the hash and the file (the buffer is then empty). */
+void ef_vec_out_drain(ef_vec_out *o);
+/* The writers' fast path: room for n bytes (n <= EF_VEC_OUT_ROOM) at the
+ * end of the buffer, filled in place and then counted with
+ * ef_vec_out_advance(o, m), m <= n.  Saves a copy and a call per line. */
+#define EF_VEC_OUT_ROOM 8192u
+static inline unsigned char *ef_vec_out_room(ef_vec_out *o, size_t n)
+{
+    if (EF_VEC_OUT_BUF - o->used < n)
+        ef_vec_out_drain(o);
+    return o->buf + o->used;
+}
+static inline void ef_vec_out_advance(ef_vec_out *o, size_t n)
+{
+    o->used += n;
+    o->bytes += n;
+}
 void ef_vec_out_puts(ef_vec_out *o, const char *s);
 void ef_vec_out_u64(ef_vec_out *o, uint64_t v);      /* decimal */
 /* Pushes the buffer out and finishes the hash (digest may be NULL).
@@ -158,8 +189,10 @@ void ef_vec_hex_write(ef_vec_out *o, const ef_vec_info *info, const ef_vec_colle
 /* vectors.vcd: every signal of the interfaces in info->mask. */
 void ef_vec_vcd_write(ef_vec_out *o, const ef_vec_info *info, const ef_vec_collect *c);
 
-/* vectors.bin: the 104-byte header (two CRCs), then the merged records. */
-void ef_vec_bin_write(ef_vec_out *o, const ef_vec_info *info, const ef_vec_collect *c);
+/* vectors.bin: the 104-byte header (two CRCs), then the merged records
+ * (built in memory first: the header's CRC covers them).  0, or -1 when out
+ * of memory (nothing written then). */
+int ef_vec_bin_write(ef_vec_out *o, const ef_vec_info *info, const ef_vec_collect *c);
 /* The header alone (records_crc = the CRC-32 of the records). */
 /* Record of t into r (docs/vectors.md section 4): interface, payload length
  * L = ceil(P/8), 48-bit cycle in 8 bytes, L payload bytes least significant
@@ -182,9 +215,12 @@ typedef struct ef_vec_file {
     uint64_t count, bytes;
     char sha256[65];
 } ef_vec_file;
-/* manifest.json; the string of info->input is escaped for JSON. */
-void ef_vec_manifest_write(ef_vec_out *o, const ef_vec_info *info, const ef_vec_collect *c,
-                           const ef_vec_file *files, size_t nfiles);
+#ifndef EF_NO_MANIFEST
+/* manifest.json, by json-c (docs/vectors.md section 6).  0, or -1 when out
+ * of memory (nothing written then). */
+int ef_vec_manifest_write(ef_vec_out *o, const ef_vec_info *info, const ef_vec_collect *c,
+                          const ef_vec_file *files, size_t nfiles);
+#endif
 
 /* ----------------------------------------------------------------- seed */
 

@@ -134,7 +134,7 @@ typedef struct ef_vec_manifest_file {
     int iface;            /* its "interface", or -1 */
     int has_count;
     uint64_t count;
-    uint64_t line, col;   /* where its name is, for messages */
+    size_t index;         /* its place in "files" (from 0), for messages: files[K] */
 } ef_vec_manifest_file;
 
 typedef struct ef_vec_manifest {
@@ -143,9 +143,11 @@ typedef struct ef_vec_manifest {
     ef_vec_manifest_file *files;
 } ef_vec_manifest;
 
-/* manifest.json (docs/vectors.md section 6): strict JSON (RFC 8259), at most
- * 1 MiB and 64 levels deep; "files" must be an array of objects whose
- * "name" is a plain file name in the manifest's own directory. */
+/* manifest.json (docs/vectors.md section 6), parsed by json-c: at most 1 MiB
+ * and 64 levels deep, a syntax error at its FILE:LINE:COL; "files" must be
+ * an array of objects whose "name" is a plain file name in the manifest's
+ * own directory, and a value refused is named by its key ("FILE: files[4].
+ * name: ...").  EF_ERR_UNSUPPORTED in a build without json-c (WITH_MANIFEST=0). */
 ef_status ef_vec_read_manifest(const char *name, const uint8_t *data, size_t len, ef_vec_manifest *out,
                                ef_vec_read_error *err);
 ef_status ef_vec_read_manifest_path(const char *path, const char *name, ef_vec_manifest *out,

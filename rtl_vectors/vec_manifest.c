@@ -2,18 +2,35 @@
  * vec_manifest.c - manifest.json (docs/vectors.md section 6): the run's
  * parameters, the recorded interfaces with their widths and counts, and
  * every file written with its size and SHA-256.  Written last by the
- * command, so its presence marks a complete directory.  The layout is fixed
- * (one key order, two-space indentation, one interface or file per line) so
- * that the same run gives the same bytes and a line-oriented tool (grep,
- * sed) can read it as well as a JSON parser.
+ * command, so its presence marks a complete directory.
+ *
+ * The JSON is json-c's (Debian's libjson-c): it escapes the strings and
+ * prints every integer exactly, the seed's full 0..2^64-1 included
+ * (json_object_new_uint64; Jansson's integers are signed 64-bit, so a seed
+ * of 2^63 or more could not be written as a number).  The layout is fixed
+ * so that the same run gives the same bytes and a line-oriented tool (grep,
+ * sed) reads it as well as a JSON parser: json-c's pretty printer (two-space
+ * indentation, one key per line) for the top level, and each interface and
+ * file entry on one line in json-c's spaced form ({ "k": v, ... }).  An
+ * entry is put in the tree as a placeholder whose serializer prints the
+ * entry's own one-line text.  Builds without the manifest (WITH_MANIFEST=0)
+ * have no json-c and write none.
  */
 #include "ef_vec.h"
 
+#ifndef EF_NO_MANIFEST
+
+#include <json-c/json.h>
+#include <stdlib.h>
 #include <string.h>
+
+#define FLAGS_LINE (JSON_C_TO_STRING_SPACED | JSON_C_TO_STRING_NOSLASHESCAPE)
+#define FLAGS_TOP (JSON_C_TO_STRING_PRETTY | JSON_C_TO_STRING_SPACED | JSON_C_TO_STRING_NOSLASHESCAPE)
 
 /* Length of the UTF-8 sequence starting at p (at most n bytes available)
  * if it is well-formed (RFC 3629: shortest form, no surrogates, <= U+10FFFF),
- * else 0. */
+ * else 0.  json-c copies string bytes as they are, so a file name that is
+ * not UTF-8 would make the manifest invalid JSON: such bytes become U+FFFD. */
 static size_t utf8_len(const unsigned char *p, size_t n)
 {
     size_t len;
@@ -40,95 +57,161 @@ static size_t utf8_len(const unsigned char *p, size_t n)
     return len;
 }
 
-/* A JSON string (RFC 8259): '"' and '\' escaped, control characters as
- * \u00XX, well-formed UTF-8 copied, and each byte of anything else as
- * \uFFFD, so the manifest is valid UTF-8 whatever the file name's bytes. */
-static void out_json_string(ef_vec_out *o, const char *s)
+/* s as a json-c string, every byte that is not well-formed UTF-8 replaced
+ * by U+FFFD; NULL when out of memory. */
+static json_object *utf8_string(const char *s)
 {
-    static const char hex[] = "0123456789abcdef";
+    size_t n = strlen(s), o = 0;
     const unsigned char *p = (const unsigned char *)s;
-    size_t n = strlen(s);
-    ef_vec_out_puts(o, "\"");
+    char *d = n < SIZE_MAX / 3 ? malloc(3 * n + 1) : NULL;
+    json_object *j;
+    if (!d)
+        return NULL;
     while (n) {
         size_t len = utf8_len(p, n);
-        if (len == 1 && (*p == '"' || *p == '\\')) {
-            char e[2] = { '\\', (char)*p };
-            ef_vec_out_write(o, e, 2);
-        } else if (len == 1 && (*p < 0x20 || *p == 0x7f)) {
-            char e[6] = { '\\', 'u', '0', '0', hex[*p >> 4], hex[*p & 15] };
-            ef_vec_out_write(o, e, 6);
-        } else if (len == 0) {
-            ef_vec_out_puts(o, "\\ufffd");
+        if (len == 0) {
+            memcpy(d + o, "\xef\xbf\xbd", 3);
+            o += 3;
             len = 1;
         } else {
-            ef_vec_out_write(o, p, len);
+            memcpy(d + o, p, len);
+            o += len;
         }
         p += len;
         n -= len;
     }
-    ef_vec_out_puts(o, "\"");
+    j = json_object_new_string_len(d, (int)o);
+    free(d);
+    return j;
 }
 
-static void key_u64(ef_vec_out *o, const char *key, uint64_t v, const char *after)
+/* The placeholder's serializer: the entry (its userdata) on one line. */
+static int entry_to_string(json_object *jso, struct printbuf *pb, int level, int flags)
 {
-    ef_vec_out_puts(o, "\"");
-    ef_vec_out_puts(o, key);
-    ef_vec_out_puts(o, "\": ");
-    ef_vec_out_u64(o, v);
-    ef_vec_out_puts(o, after);
+    size_t n = 0;
+    const char *s = json_object_to_json_string_length(json_object_get_userdata(jso), FLAGS_LINE, &n);
+    (void)level;
+    (void)flags;
+    return s ? printbuf_memappend(pb, s, (int)n) : -1;
 }
 
-static void key_str(ef_vec_out *o, const char *key, const char *v, const char *after)
+static void entry_free(json_object *jso, void *userdata)
 {
-    ef_vec_out_puts(o, "\"");
-    ef_vec_out_puts(o, key);
-    ef_vec_out_puts(o, "\": ");
-    out_json_string(o, v);
-    ef_vec_out_puts(o, after);
+    (void)jso;
+    json_object_put(userdata);
 }
 
-void ef_vec_manifest_write(ef_vec_out *o, const ef_vec_info *info, const ef_vec_collect *c,
-                           const ef_vec_file *files, size_t nfiles)
+/* Appends entry to array as a one-line placeholder; takes entry. */
+static int add_entry(json_object *array, json_object *entry)
 {
-    int first = 1;
+    json_object *ph = entry ? json_object_new_boolean(0) : NULL;
+    if (!ph) {
+        json_object_put(entry);
+        return -1;
+    }
+    json_object_set_serializer(ph, entry_to_string, entry, entry_free);
+    if (json_object_array_add(array, ph) != 0) {
+        json_object_put(ph);
+        return -1;
+    }
+    return 0;
+}
 
-    ef_vec_out_puts(o, "{\n  ");
-    key_str(o, "format", "edgeflag-vectors", ",\n  ");
-    key_u64(o, "version", EF_VEC_FORMAT, ",\n  ");
-    key_str(o, "generator", "edgeflag " EF_VERSION_STRING, ",\n  ");
-    key_str(o, "input", info->input, ",\n  ");
-    key_u64(o, "width", (uint64_t)info->width, ",\n  ");
-    key_u64(o, "height", (uint64_t)info->height, ",\n  ");
-    key_u64(o, "samples", (uint64_t)info->samples, ",\n  ");
-    key_str(o, "rule", ef_vec_rule_name(info->rule), ",\n  ");
-    key_u64(o, "seed", info->seed, ",\n  ");
-    key_u64(o, "cycles", info->cycles, ",\n  ");
-    key_u64(o, "transactions", ef_vec_collect_total(c, info->mask), ",\n  ");
-    ef_vec_out_puts(o, "\"interfaces\": [");
+/* json_object_object_add that takes v even on failure, counting failures:
+ * a NULL v other than a wanted null is a failed allocation. */
+static void put(json_object *o, const char *key, json_object *v, int *bad)
+{
+    if (!v || json_object_object_add(o, key, v) != 0) {
+        json_object_put(v);
+        ++*bad;
+    }
+}
+
+static void put_null(json_object *o, const char *key, int *bad)
+{
+    if (json_object_object_add(o, key, NULL) != 0)
+        ++*bad;
+}
+
+static json_object *manifest_tree(const ef_vec_info *info, const ef_vec_collect *c, const ef_vec_file *files,
+                                  size_t nfiles)
+{
+    json_object *top = json_object_new_object(), *ifs = json_object_new_array(), *fs = json_object_new_array();
+    int bad = 0;
+
+    if (!top || !ifs || !fs) {
+        json_object_put(top);
+        json_object_put(ifs);
+        json_object_put(fs);
+        return NULL;
+    }
+    put(top, "format", json_object_new_string("edgeflag-vectors"), &bad);
+    put(top, "version", json_object_new_uint64(EF_VEC_FORMAT), &bad);
+    put(top, "generator", json_object_new_string("edgeflag " EF_VERSION_STRING), &bad);
+    put(top, "input", utf8_string(info->input), &bad);
+    put(top, "width", json_object_new_uint64((uint64_t)info->width), &bad);
+    put(top, "height", json_object_new_uint64((uint64_t)info->height), &bad);
+    put(top, "samples", json_object_new_uint64((uint64_t)info->samples), &bad);
+    put(top, "rule", json_object_new_string(ef_vec_rule_name(info->rule)), &bad);
+    put(top, "seed", json_object_new_uint64(info->seed), &bad);
+    put(top, "cycles", json_object_new_uint64(info->cycles), &bad);
+    put(top, "transactions", json_object_new_uint64(ef_vec_collect_total(c, info->mask)), &bad);
     for (int i = 0; i < EF_IF_COUNT; i++) {
         const ef_iface_desc *d = ef_iface_get(i);
+        json_object *e;
         if (!(info->mask >> i & 1u))
             continue;
-        ef_vec_out_puts(o, first ? "\n    { " : ",\n    { ");
-        first = 0;
-        key_str(o, "name", d->name, ", ");
-        key_u64(o, "bits", d->width, ", ");
-        key_u64(o, "count", ef_vec_collect_count(c, i), " }");
+        if ((e = json_object_new_object()) == NULL) {
+            bad++;
+            continue;
+        }
+        put(e, "name", json_object_new_string(d->name), &bad);
+        put(e, "bits", json_object_new_uint64(d->width), &bad);
+        put(e, "count", json_object_new_uint64(ef_vec_collect_count(c, i)), &bad);
+        bad += add_entry(ifs, e) != 0;
     }
-    ef_vec_out_puts(o, "\n  ],\n  \"files\": [");
+    put(top, "interfaces", ifs, &bad);
     for (size_t k = 0; k < nfiles; k++) {
         const ef_vec_file *f = &files[k];
-        ef_vec_out_puts(o, k ? ",\n    { " : "\n    { ");
-        key_str(o, "name", f->name, ", ");
-        key_str(o, "format", f->format, ", ");
+        json_object *e = json_object_new_object();
+        if (!e) {
+            bad++;
+            continue;
+        }
+        put(e, "name", utf8_string(f->name), &bad);
+        put(e, "format", json_object_new_string(f->format), &bad);
         if (f->iface >= 0)
-            key_str(o, "interface", ef_iface_get(f->iface)->name, ", ");
+            put(e, "interface", json_object_new_string(ef_iface_get(f->iface)->name), &bad);
         else
-            ef_vec_out_puts(o, "\"interface\": null, ");
-        key_str(o, "role", f->role, ", ");
-        key_u64(o, "count", f->count, ", ");
-        key_u64(o, "bytes", f->bytes, ", ");
-        key_str(o, "sha256", f->sha256, " }");
+            put_null(e, "interface", &bad);
+        put(e, "role", json_object_new_string(f->role), &bad);
+        put(e, "count", json_object_new_uint64(f->count), &bad);
+        put(e, "bytes", json_object_new_uint64(f->bytes), &bad);
+        put(e, "sha256", json_object_new_string(f->sha256), &bad);
+        bad += add_entry(fs, e) != 0;
     }
-    ef_vec_out_puts(o, nfiles ? "\n  ]\n}\n" : "]\n}\n");
+    put(top, "files", fs, &bad);
+    if (bad) {
+        json_object_put(top);
+        return NULL;
+    }
+    return top;
 }
+
+int ef_vec_manifest_write(ef_vec_out *o, const ef_vec_info *info, const ef_vec_collect *c,
+                          const ef_vec_file *files, size_t nfiles)
+{
+    json_object *top = manifest_tree(info, c, files, nfiles);
+    size_t n = 0;
+    const char *s = top ? json_object_to_json_string_length(top, FLAGS_TOP, &n) : NULL;
+    if (!s) {
+        json_object_put(top);
+        return -1;
+    }
+    ef_vec_out_write(o, s, n);
+    ef_vec_out_puts(o, "\n");
+    json_object_put(top);
+    return 0;
+}
+
+#endif /* EF_NO_MANIFEST */

@@ -24,6 +24,13 @@ static uint64_t le(const uint8_t *p, unsigned n)
     return v;
 }
 
+/* Eight little-endian bytes, in one expression (one load where it can be). */
+static uint64_t le64(const uint8_t *p)
+{
+    return (uint64_t)p[0] | (uint64_t)p[1] << 8 | (uint64_t)p[2] << 16 | (uint64_t)p[3] << 24 |
+           (uint64_t)p[4] << 32 | (uint64_t)p[5] << 40 | (uint64_t)p[6] << 48 | (uint64_t)p[7] << 56;
+}
+
 static ef_status bad_magic(const uint8_t *hd, size_t got, const char *name, ef_vec_read_error *err)
 {
     /* The magic is built to show how a transfer damaged it (as PNG's is). */
@@ -107,13 +114,21 @@ static ef_status read_header(ef_vr_src *s, const char *name, ef_vec_dump *out, u
 /* One record at offset off (record number rec).  1 and the record, 0 at a
  * clean end of the stream, or -1 with err set. */
 static int read_record(ef_vr_src *s, const char *name, ef_vec_dump *out, uint64_t rec, uint64_t off,
-                       uint32_t *crc, ef_vec_read_error *err)
+                       ef_vec_read_error *err)
 {
-    uint8_t pre[10], pl[32];
-    size_t n = ef_vr_read(s, pre, sizeof pre);
-    if (n == 0)
+    uint8_t buf[10 + 32];
+    const uint8_t *pre = buf, *pl = buf + 10;
+    size_t n, m;
+    /* A record whole in the current chunk (all but a few per chunk) is read
+     * where it is; the rest are copied together across the chunk boundary. */
+    const int direct = s->n - s->pos >= sizeof buf;
+    if (direct) {
+        pre = s->p + s->pos;
+        pl = pre + 10;
+        n = 10;
+    } else if ((n = ef_vr_read(s, buf, 10)) == 0) {
         return 0;
-    *crc = ef_vec_read_crc32(*crc, pre, n);
+    }
     const unsigned iface = pre[0];
     const ef_iface_desc *d = ef_iface_get((int)iface);
     if (!d || !(out->mask >> iface & 1u)) {
@@ -132,21 +147,28 @@ static int read_record(ef_vr_src *s, const char *name, ef_vec_dump *out, uint64_
                       "payload length %u, interface %s has %u bytes", pre[1], d->name, want);
         return -1;
     }
-    size_t m = n == sizeof pre ? ef_vr_read(s, pl, want) : 0;
-    *crc = ef_vec_read_crc32(*crc, pl, m);
-    if (n < sizeof pre || m < want) {
+    if (direct) {
+        s->pos += 10u + want;
+        m = want;
+    } else {
+        m = n == 10 ? ef_vr_read(s, buf + 10, want) : 0;
+    }
+    if (n < 10 || m < want) {
         ef_vr_err_bin(err, EF_ERR_SYNTAX, name, EF_VEC_AT_RECORD, rec, off, "truncated record: %zu of %u bytes",
                       n + m, 10u + want);
         return -1;
     }
-    const uint64_t cycle = le(pre + 2, 8);
+    const uint64_t cycle = le64(pre + 2);
     if (cycle >> EF_CYCLE_BITS) {
         ef_vr_err_bin(err, EF_ERR_RANGE, name, EF_VEC_AT_RECORD, rec, off,
                       "cycle %" PRIu64 " does not fit %u bits", cycle, EF_CYCLE_BITS);
         return -1;
     }
     uint64_t w[EF_TXN_WORDS] = { 0 };
-    for (unsigned b = 0; b < want; b++)
+    unsigned b = 0;
+    for (; b + 8 <= want; b += 8)
+        w[b / 8] = le64(pl + b);
+    for (; b < want; b++)
         w[b / 8] |= (uint64_t)pl[b] << (8 * (b % 8));
     const unsigned top = d->width % 64u;
     if (top && (w[d->width / 64u] >> top)) {
@@ -165,7 +187,7 @@ static int read_record(ef_vr_src *s, const char *name, ef_vec_dump *out, uint64_
 ef_status ef_vr_bin(ef_vr_src *s, const char *name, ef_vec_dump *out, ef_vec_read_error *err)
 {
     uint64_t counts[EF_IF_COUNT];
-    uint32_t stored_crc = 0, crc = 0;
+    uint32_t stored_crc = 0, crc;
     uint64_t rec = 0;
     int r;
 
@@ -173,9 +195,13 @@ ef_status ef_vr_bin(ef_vr_src *s, const char *name, ef_vec_dump *out, ef_vec_rea
     ef_status st = read_header(s, name, out, counts, &stored_crc, err);
     if (st != EF_OK)
         goto fail;
+    for (int i = 0; i < EF_IF_COUNT; i++)
+        if (out->mask >> i & 1u)
+            ef_vr_reserve(out, i, counts[i], s->size, 10u + (ef_iface_get(i)->width + 7u) / 8u, 1);
+    ef_vr_crc_start(s);     /* the records' CRC: every byte after the header */
     for (;;) {
         const uint64_t off = ef_vr_tell(s);
-        r = read_record(s, name, out, rec + 1, off, &crc, err);
+        r = read_record(s, name, out, rec + 1, off, err);
         if (r <= 0) {
             if (r < 0) {
                 st = err->status;
@@ -189,6 +215,7 @@ ef_status ef_vr_bin(ef_vr_src *s, const char *name, ef_vec_dump *out, ef_vec_rea
         st = EF_ERR_IO;
         goto fail;
     }
+    crc = ef_vr_crc_end(s);
     for (int i = 0; i < EF_IF_COUNT; i++)
         if (counts[i] != out->seq[i].n) {
             st = ef_vr_err_bin(err, EF_ERR_SYNTAX, name, EF_VEC_AT_END, rec, ef_vr_tell(s),

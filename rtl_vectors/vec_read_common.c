@@ -12,6 +12,7 @@
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 const uint8_t ef_vec_bin_magic[8] = { 0x89, 'E', 'F', 'V', '\r', '\n', 0x1a, '\n' };
 
@@ -30,12 +31,32 @@ void ef_vr_src_mem(ef_vr_src *s, const uint8_t *data, size_t len)
     memset(s, 0, sizeof *s);
     s->p = data;
     s->n = data ? len : 0;
+    s->size = s->n;
+}
+
+void ef_vr_crc_start(ef_vr_src *s)
+{
+    s->crc_on = 1;
+    s->crc = 0;
+    s->crc_from = s->pos;
+}
+
+uint32_t ef_vr_crc_end(ef_vr_src *s)
+{
+    if (s->crc_on && s->pos > s->crc_from)
+        s->crc = ef_vec_read_crc32(s->crc, s->p + s->crc_from, s->pos - s->crc_from);
+    s->crc_from = s->pos;
+    return s->crc;
 }
 
 int ef_vr_refill(ef_vr_src *s)
 {
     if (!s->fp || s->ioerr)
         return -1;
+    if (s->crc_on) {                /* the chunk is used up: all of it is consumed */
+        s->crc = ef_vec_read_crc32(s->crc, s->p + s->crc_from, s->n - s->crc_from);
+        s->crc_from = 0;
+    }
     s->base += s->n;
     s->n = s->pos = 0;
     errno = 0;
@@ -101,30 +122,34 @@ static int grow(void *pp, size_t cap, size_t sz)
     return 0;
 }
 
-int ef_vr_append(ef_vec_dump *d, int iface, uint64_t cycle, const uint64_t *pay, uint64_t loc, uint64_t off,
-                 int with_off)
+void ef_vr_reserve(ef_vec_dump *d, int iface, uint64_t n, uint64_t size, unsigned min_bytes, int with_off)
 {
     ef_vec_seq *q = &d->seq[iface];
-    if (q->n == q->cap) {
-        /* Doubling: the memory stays within twice what the transactions
-         * need, and the transactions within a constant factor of the input
-         * (every transaction took at least two bytes of it). */
-        if (q->cap > SIZE_MAX / 2u)
-            return -1;
-        size_t cap = q->cap ? q->cap * 2u : 64u;
-        if (cap > SIZE_MAX / (q->nw ? q->nw : 1u))
-            return -1;
-        if (grow(&q->cycle, cap, sizeof *q->cycle) || grow(&q->pay, cap * q->nw, sizeof *q->pay) ||
-            grow(&q->loc, cap, sizeof *q->loc) || (with_off && grow(&q->off, cap, sizeof *q->off)))
-            return -1;
-        q->cap = cap;
-    }
-    q->cycle[q->n] = cycle;
-    memcpy(q->pay + q->n * q->nw, pay, q->nw * sizeof *pay);
-    q->loc[q->n] = loc;
-    if (with_off)
-        q->off[q->n] = off;
-    q->n++;
+    if (size / min_bytes < n)
+        n = size / min_bytes;
+    if (n <= q->cap || n > SIZE_MAX / 8u / (q->nw ? q->nw : 1u))
+        return;
+    if (grow(&q->cycle, (size_t)n, sizeof *q->cycle) || grow(&q->pay, (size_t)n * q->nw, sizeof *q->pay) ||
+        grow(&q->loc, (size_t)n, sizeof *q->loc) || (with_off && grow(&q->off, (size_t)n, sizeof *q->off)))
+        return;     /* the arrays that did grow are still valid at the old capacity */
+    q->cap = (size_t)n;
+}
+
+/* The full arrays of q doubled: 0, or -1 when out of memory. */
+int ef_vr_grow(ef_vec_seq *q, int with_off)
+{
+    /* Doubling: the memory stays within twice what the transactions
+     * need, and the transactions within a constant factor of the input
+     * (every transaction took at least two bytes of it). */
+    if (q->cap > SIZE_MAX / 2u)
+        return -1;
+    size_t cap = q->cap ? q->cap * 2u : 64u;
+    if (cap > SIZE_MAX / (q->nw ? q->nw : 1u))
+        return -1;
+    if (grow(&q->cycle, cap, sizeof *q->cycle) || grow(&q->pay, cap * q->nw, sizeof *q->pay) ||
+        grow(&q->loc, cap, sizeof *q->loc) || (with_off && grow(&q->off, cap, sizeof *q->off)))
+        return -1;
+    q->cap = cap;
     return 0;
 }
 
@@ -280,6 +305,9 @@ ef_status ef_vec_read_fp(FILE *fp, const char *name, int binary, int want, int h
     ef_vr_dump_init(out, 0);
     memset(&s, 0, sizeof s);
     s.fp = fp;
+    struct stat sb;
+    if (fstat(fileno(fp), &sb) == 0 && S_ISREG(sb.st_mode) && sb.st_size > 0)
+        s.size = (uint64_t)sb.st_size;
     s.buf = malloc(EF_VR_CHUNK);
     if (!s.buf)
         return ef_vr_err_file(err, EF_ERR_NOMEM, name, "out of memory");

@@ -45,6 +45,8 @@ typedef struct hex_state {
     int ctrunc;
     int have_count;
     uint64_t count, count_line, count_col, nwords;
+    uint64_t size;                  /* of the input, when known: bounds the count's reservation */
+    unsigned pwidth;                /* payload bits of iface, once known */
 } hex_state;
 
 static int is_hex(int c)
@@ -216,6 +218,7 @@ static ef_status header_line(hex_state *h)
                                   "malformed header: 'count N' expected");
         h->have_count = 1;
         h->count = v;
+        ef_vr_reserve(h->out, h->iface, v, h->size, 2, 0);    /* a word takes a digit and a newline at least */
         h->count_line = h->sline;
         h->count_col = text_col(h, i0);
     }
@@ -235,6 +238,7 @@ static ef_status word_start(hex_state *h)
     }
     h->words_seen = 1;
     h->maxd = ef_vr_word_digits(h->iface);
+    h->pwidth = ef_iface_get(h->iface)->width;
     memset(h->w, 0, sizeof h->w);
     h->nd = 0;
     h->wline = h->line;
@@ -425,6 +429,113 @@ static ef_status at_end(hex_state *h, uint64_t size)
     return EF_OK;
 }
 
+/* Digit values, 0xFF for a byte that is not a hex digit (a constant table:
+ * two threads of check read two files at once). */
+#define HV(c) ((c) >= '0' && (c) <= '9'   ? (c) - '0'                                                          \
+               : (c) >= 'a' && (c) <= 'f' ? (c) - 'a' + 10                                                     \
+               : (c) >= 'A' && (c) <= 'F' ? (c) - 'A' + 10                                                     \
+                                          : 0xFF)
+#define HV16(r) HV(r + 0), HV(r + 1), HV(r + 2), HV(r + 3), HV(r + 4), HV(r + 5), HV(r + 6), HV(r + 7),         \
+                HV(r + 8), HV(r + 9), HV(r + 10), HV(r + 11), HV(r + 12), HV(r + 13), HV(r + 14), HV(r + 15)
+static const uint8_t hexval[256] = {
+    HV16(0x00), HV16(0x10), HV16(0x20), HV16(0x30), HV16(0x40), HV16(0x50), HV16(0x60), HV16(0x70),
+    HV16(0x80), HV16(0x90), HV16(0xa0), HV16(0xb0), HV16(0xc0), HV16(0xd0), HV16(0xe0), HV16(0xf0),
+};
+#undef HV16
+#undef HV
+
+/* Eight hex digits at p, the first the most significant, as a 32-bit
+ * value: 1, or 0 if any byte is not a hex digit.  SWAR (one 64-bit word,
+ * a byte per digit): no byte may have its top bit set, so the per-byte
+ * additions of the range tests cannot carry into the next byte; a byte is
+ * a digit when it is in '0'..'9' or, with 0x20 set, in 'a'..'f' (which
+ * takes 'A'..'F' and nothing else).  The bytes are assembled by shifts, so
+ * the host's byte order does not matter. */
+static int hex8(const uint8_t *p, uint32_t *out)
+{
+    const uint64_t ones = UINT64_C(0x0101010101010101), high = ones * 0x80u;
+    /* One expression, which compilers turn into one load where they can. */
+    const uint64_t x = (uint64_t)p[0] | (uint64_t)p[1] << 8 | (uint64_t)p[2] << 16 | (uint64_t)p[3] << 24 |
+                       (uint64_t)p[4] << 32 | (uint64_t)p[5] << 40 | (uint64_t)p[6] << 48 | (uint64_t)p[7] << 56;
+    if (x & high)       /* first: with a byte >= 0x80 the sums below would carry */
+        return 0;
+    const uint64_t lower = x | ones * 0x20u;
+    const uint64_t digit = (x + ones * (0x80u - '0')) & ~(x + ones * (0x7Fu - '9'));
+    const uint64_t alpha = (lower + ones * (0x80u - 'a')) & ~(lower + ones * (0x7Fu - 'f'));
+    if (((digit | alpha) & high) != high)
+        return 0;
+    /* Each byte's value: its low nibble, plus 9 for a letter ('a' = 0x61). */
+    const uint64_t nib = (x & ones * 0x0Fu) + ((alpha & high) >> 7) * 9u;
+    /* Byte 0 is the first (most significant) digit: pair bytes, then pairs
+     * of pairs, then halves. */
+    const uint64_t t1 = ((nib << 4) | (nib >> 8)) & UINT64_C(0x00FF00FF00FF00FF);
+    const uint64_t t2 = ((t1 << 8) | (t1 >> 16)) & UINT64_C(0x0000FFFF0000FFFF);
+    *out = (uint32_t)((t2 << 16) | (t2 >> 32));
+    return 1;
+}
+
+/* The common line, read whole: at the start of a line, with the interface
+ * known, exactly the word's digit count of hex digits and a '\n', all in the
+ * current chunk, and a value that fits the word (what the writer writes and
+ * a `$fwrite("%h\n")` of a register of the word's width gives).  Such a line
+ * means the same to the state machine - a word of at most maxd significant
+ * digits, ended by the newline - so taking it here changes no result; any
+ * other line (comments, CR LF, '_', other widths, errors) is left to the
+ * state machine, byte by byte.  Returns 1 when the line was taken. */
+static int fast_line(hex_state *h, ef_vr_src *s, ef_status *st)
+{
+    const unsigned nd = h->maxd;
+    const uint8_t *p = s->p + s->pos;
+    uint64_t w[4] = { 0, 0, 0, 0 };
+    unsigned bad = 0;
+
+    if (s->n - s->pos <= nd || p[nd] != '\n')
+        return 0;
+    /* Eight digits at a time from the right (32 bits each), the rest, the
+     * most significant digits, one at a time. */
+    unsigned left = nd, blk = 0;
+    for (; left >= 8; left -= 8, blk++) {
+        uint32_t v;
+        if (!hex8(p + left - 8, &v))
+            return 0;
+        w[blk / 2] |= (uint64_t)v << (32 * (blk % 2));
+    }
+    uint64_t v = 0;
+    for (unsigned j = 0; j < left; j++) {
+        const unsigned d = hexval[p[j]];
+        bad |= d;
+        v = v << 4 | (d & 15u);
+    }
+    if (bad & 0xF0u)
+        return 0;
+    w[blk / 2] |= v << (32 * (blk % 2));
+    /* The word is { cycle[47:0], payload[P-1:0] }: the payload is w's low
+     * P bits, the cycle the 48 above them, and nothing may be above those. */
+    const unsigned pw = h->pwidth, top = EF_CYCLE_BITS + pw, cw = pw / 64, cs = pw % 64;
+    if (top % 64 && w[top / 64] >> (top % 64))
+        return 0;   /* too wide: the state machine reports it */
+    for (unsigned k = (top + 63) / 64; k < 4; k++)
+        if (w[k])
+            return 0;
+    uint64_t pay[EF_TXN_WORDS] = { 0 };
+    for (unsigned k = 0; k < cw; k++)
+        pay[k] = w[k];
+    if (cs)
+        pay[cw] = w[cw] & ((UINT64_C(1) << cs) - 1u);
+    uint64_t cycle = w[cw] >> cs;
+    if (cs > 64 - EF_CYCLE_BITS)   /* masked: no bit shifted out */
+        cycle |= (w[cw + 1] & (UINT64_MAX >> (64 - cs))) << (64 - cs);
+    cycle &= (UINT64_C(1) << EF_CYCLE_BITS) - 1u;
+    if (ef_vr_append(h->out, h->iface, cycle, pay, h->line, 0, 0)) {
+        *st = ef_vr_err_file(h->err, EF_ERR_NOMEM, h->name, "out of memory");
+        return 1;
+    }
+    h->nwords++;
+    h->line++;
+    s->pos += nd + 1u;
+    return 1;
+}
+
 ef_status ef_vr_hex(ef_vr_src *s, const char *name, int want, int hint, ef_vec_dump *out, ef_vec_read_error *err)
 {
     hex_state h;
@@ -439,8 +550,17 @@ ef_status ef_vr_hex(ef_vr_src *s, const char *name, int want, int hint, ef_vec_d
     h.out = out;
     h.err = err;
     h.line = 1;
+    h.size = s->size;
     ef_vr_dump_init(out, EF_VEC_FMT_HEX);
     for (;;) {
+        /* At a line's start after the first word (col 0, nothing pending). */
+        if (h.state == S_NORMAL && h.col == 0 && h.words_seen) {
+            if (fast_line(&h, s, &st)) {
+                if (st != EF_OK)
+                    break;
+                continue;
+            }
+        }
         uint64_t offset = ef_vr_tell(s);
         int c = ef_vr_getc(s);
         if (c < 0)

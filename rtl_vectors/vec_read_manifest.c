@@ -1,14 +1,20 @@
 /*
  * vec_read_manifest.c - reader of manifest.json (docs/vectors.md section 6)
- * for `edgeflag check`'s directory mode.
+ * for `edgeflag check`'s directory mode, by json-c (Debian's libjson-c).
  *
- * A strict RFC 8259 recursive-descent parser that keeps only what check
- * uses - the frame size and, per file, its name, format, role, interface
- * and count - instead of building a tree: the manifest is small, but it is
- * input, so the parser bounds its size (1 MiB) and depth (64) and reports
- * every error at its line and column.  A file name must be a plain name in
- * the manifest's own folder: a name with '/' or ".." would make check read
- * (and trust as expected data) a file outside it.
+ * json-c parses (strict mode, UTF-8 validated, at most 64 levels deep) and
+ * reports a syntax error at a byte offset, turned here into a line and a
+ * column; this file then checks what check uses - the frame size and, per
+ * file, its name, format, role, interface and count - and names the key of
+ * a value it refuses (`files[4].name`).  json-c rather than Jansson: counts
+ * and seeds go up to 2^64 - 1, and Jansson's integers are signed 64-bit (a
+ * manifest of a seed of 2^63 or more would not even parse).  The manifest
+ * is input, so its size is bounded (1 MiB).  A file name must be a plain
+ * name in the manifest's own folder: a name with '/' or ".." would make
+ * check read (and trust as expected data) a file outside it.
+ *
+ * Builds without the manifest (WITH_MANIFEST=0) have no json-c: the reader
+ * refuses every manifest as unsupported, so check stops instead of passing.
  */
 #include "vec_read_internal.h"
 
@@ -20,76 +26,23 @@
 #define MANIFEST_MAX (1u << 20)
 #define DEPTH_MAX 64
 
-enum { C_OTHER, C_TOP, C_FILES, C_FILE };
+#ifndef EF_NO_MANIFEST
 
-typedef struct jp {
-    const uint8_t *p;
-    size_t n, i;
-    uint64_t line, col;        /* of p[i] */
-    unsigned cont;             /* continuation bytes due after p[i - 1] */
-    int depth;
-    size_t cap;                /* of m->files */
+#include <json-c/json.h>
+
+typedef struct mctx {
     const char *name;
     ef_vec_manifest *m;
     ef_vec_read_error *err;
-} jp;
-
-typedef struct jstr {
-    char *s;
-    size_t len;
-} jstr;
-
-static ef_status fail(jp *j, ef_status st, uint64_t line, uint64_t col, const char *msg, const char *arg)
-{
-    return ef_vr_err_line(j->err, st, j->name, line, col, "%s%s", msg, arg ? arg : "");
-}
-
-static ef_status nomem(jp *j) { return ef_vr_err_file(j->err, EF_ERR_NOMEM, j->name, "out of memory"); }
-
-/* Past p[i]: lines count '\n', columns count characters (a UTF-8
- * sequence's continuation bytes do not move the column). */
-static void adv(jp *j)
-{
-    uint8_t c = j->p[j->i++];
-    if (c == '\n') {
-        j->line++;
-        j->col = 1;
-        j->cont = 0;
-        return;
-    }
-    if (j->cont > 0 && (c & 0xC0u) == 0x80u)
-        j->cont--;
-    else
-        j->cont = c >= 0xF0 ? 3 : c >= 0xE0 ? 2 : c >= 0xC0 ? 1 : 0;
-    /* The next byte moves the column unless it continues this character. */
-    if (!(j->cont > 0 && j->i < j->n && (j->p[j->i] & 0xC0u) == 0x80u))
-        j->col++;
-}
-
-static void ws(jp *j)
-{
-    while (j->i < j->n && (j->p[j->i] == ' ' || j->p[j->i] == '\t' || j->p[j->i] == '\n' || j->p[j->i] == '\r'))
-        adv(j);
-}
-
-static int peek(const jp *j) { return j->i < j->n ? j->p[j->i] : -1; }
-
-static ef_status unexpected(jp *j, const char *what)
-{
-    char q[8];
-    if (peek(j) < 0)
-        return fail(j, EF_ERR_SYNTAX, j->line, j->col, what, " expected, end of file found");
-    ef_vr_quote_byte(peek(j), q);
-    return ef_vr_err_line(j->err, EF_ERR_SYNTAX, j->name, j->line, j->col, "%s expected, %s found", what, q);
-}
+} mctx;
 
 /* A name quoted for a message: printable ASCII as is, anything else \xNN,
  * at most 80 characters. */
-static void quote_name(const jstr *s, char *out, size_t size)
+static void quote_name(const char *s, size_t len, char *out, size_t size)
 {
     size_t o = 0;
-    for (size_t k = 0; k < s->len && o + 5 < size; k++) {
-        unsigned char c = (unsigned char)s->s[k];
+    for (size_t k = 0; k < len && o + 5 < size; k++) {
+        unsigned char c = (unsigned char)s[k];
         if (k == 80) {
             snprintf(out + o, size - o, "...");
             return;
@@ -99,404 +52,220 @@ static void quote_name(const jstr *s, char *out, size_t size)
     out[o < size ? o : size - 1] = '\0';
 }
 
-static void put_utf8(char *d, size_t *o, uint32_t u)
+/* Line and column (characters: UTF-8 continuation bytes do not move it) of
+ * byte offset off. */
+static void place(const uint8_t *p, size_t off, uint64_t *line, uint64_t *col)
 {
-    if (u < 0x80) {
-        d[(*o)++] = (char)u;
-    } else if (u < 0x800) {
-        d[(*o)++] = (char)(0xC0u | (u >> 6));
-        d[(*o)++] = (char)(0x80u | (u & 0x3Fu));
-    } else if (u < 0x10000) {
-        d[(*o)++] = (char)(0xE0u | (u >> 12));
-        d[(*o)++] = (char)(0x80u | ((u >> 6) & 0x3Fu));
-        d[(*o)++] = (char)(0x80u | (u & 0x3Fu));
-    } else {
-        d[(*o)++] = (char)(0xF0u | (u >> 18));
-        d[(*o)++] = (char)(0x80u | ((u >> 12) & 0x3Fu));
-        d[(*o)++] = (char)(0x80u | ((u >> 6) & 0x3Fu));
-        d[(*o)++] = (char)(0x80u | (u & 0x3Fu));
+    *line = *col = 1;
+    for (size_t i = 0; i < off; i++) {
+        if (p[i] == '\n') {
+            ++*line;
+            *col = 1;
+        } else if ((p[i] & 0xC0u) != 0x80u) {
+            ++*col;
+        }
     }
 }
 
-static int hex4(const jp *j, size_t at, uint32_t *u)
+static ef_status syntax(const mctx *c, const uint8_t *p, size_t n, size_t off, const char *what)
 {
-    uint32_t v = 0;
-    if (at + 4 > j->n)
-        return 0;
-    for (size_t k = at; k < at + 4; k++) {
-        int c = j->p[k];
-        uint32_t d = c >= '0' && c <= '9' ? (uint32_t)(c - '0')
-                     : (c | 0x20) >= 'a' && (c | 0x20) <= 'f' ? (uint32_t)((c | 0x20) - 'a' + 10)
-                                                              : 16u;
-        if (d > 15)
-            return 0;
-        v = v * 16u + d;
-    }
-    *u = v;
-    return 1;
+    uint64_t line, col;
+    char q[8];
+    place(p, off, &line, &col);
+    if (off >= n)
+        return ef_vr_err_line(c->err, EF_ERR_SYNTAX, c->name, line, col, "%s, end of file found", what);
+    ef_vr_quote_byte(p[off], q);
+    return ef_vr_err_line(c->err, EF_ERR_SYNTAX, c->name, line, col, "%s, %s found", what, q);
 }
 
-/* Length of the valid UTF-8 sequence at p[i] (RFC 3629: no overlongs, no
- * surrogates, at most U+10FFFF), or 0. */
-static size_t utf8_len(const uint8_t *p, size_t n, size_t i)
+/* A value refused: "FILE: KEY: message". */
+static ef_status bad_key(const mctx *c, ef_status st, const char *key, const char *msg, const char *arg)
 {
-    uint8_t c = p[i];
-    size_t len = c < 0x80 ? 1 : c >= 0xC2 && c <= 0xDF ? 2 : c >= 0xE0 && c <= 0xEF ? 3 : c >= 0xF0 && c <= 0xF4 ? 4 : 0;
-    if (!len || i + len > n)
-        return 0;
-    for (size_t k = 1; k < len; k++)
-        if ((p[i + k] & 0xC0u) != 0x80u)
-            return 0;
-    if ((c == 0xE0 && p[i + 1] < 0xA0) || (c == 0xED && p[i + 1] > 0x9F) || (c == 0xF0 && p[i + 1] < 0x90) ||
-        (c == 0xF4 && p[i + 1] > 0x8F))
-        return 0;
-    return len;
+    return ef_vr_err_file(c->err, st, c->name, "%s: %s%s", key, msg, arg ? arg : "");
 }
 
-/* A string at p[i] == '"'; its decoded bytes in *out (malloc'ed, NUL-terminated). */
-static ef_status string(jp *j, jstr *out)
+static int plain_name(const char *s, size_t len)
 {
-    size_t cap = 16, o = 0;
-    char *d = malloc(cap);
-    if (!d)
-        return nomem(j);
-    adv(j);
-    for (;;) {
-        if (cap - o < 8) {
-            char *nd = cap < SIZE_MAX / 2 ? realloc(d, cap * 2) : NULL;
-            if (!nd) {
-                free(d);
-                return nomem(j);
-            }
-            d = nd;
-            cap *= 2;
-        }
-        int c = peek(j);
-        if (c < 0) {
-            free(d);
-            return fail(j, EF_ERR_SYNTAX, j->line, j->col, "unterminated string", NULL);
-        }
-        if (c == '"') {
-            adv(j);
-            break;
-        }
-        if (c < 0x20) {
-            free(d);
-            return unexpected(j, "a string character (control characters must be escaped)");
-        }
-        if (c == '\\') {
-            uint64_t l0 = j->line, c0 = j->col;
-            adv(j);
-            int e = peek(j);
-            const char *simple = "\"\\/bfnrt", *val = "\"\\/\b\f\n\r\t";
-            const char *hit = e > 0 ? strchr(simple, e) : NULL;
-            if (hit) {
-                d[o++] = val[hit - simple];
-                adv(j);
-                continue;
-            }
-            uint32_t u, lo;
-            if (e != 'u' || !hex4(j, j->i + 1, &u)) {
-                free(d);
-                return fail(j, EF_ERR_SYNTAX, l0, c0, "invalid escape in a string", NULL);
-            }
-            for (int k = 0; k < 5; k++)
-                adv(j);
-            if (u >= 0xD800 && u <= 0xDBFF && j->i + 1 < j->n && j->p[j->i] == '\\' && j->p[j->i + 1] == 'u' &&
-                hex4(j, j->i + 2, &lo) && lo >= 0xDC00 && lo <= 0xDFFF) {
-                for (int k = 0; k < 6; k++)
-                    adv(j);
-                u = 0x10000u + ((u - 0xD800u) << 10) + (lo - 0xDC00u);
-            } else if (u >= 0xD800 && u <= 0xDFFF) {
-                free(d);
-                return fail(j, EF_ERR_SYNTAX, l0, c0, "unpaired surrogate escape in a string", NULL);
-            }
-            put_utf8(d, &o, u);
-            continue;
-        }
-        size_t len = utf8_len(j->p, j->n, j->i);
-        if (!len) {
-            free(d);
-            return unexpected(j, "valid UTF-8");
-        }
-        for (size_t k = 0; k < len; k++) {
-            d[o++] = (char)j->p[j->i];
-            adv(j);
-        }
+    return len > 0 && strlen(s) == len && !strchr(s, '/') && !strstr(s, "..") && strcmp(s, ".") != 0;
+}
+
+/* width or height, when present: an integer 1..EF_MAX_CANVAS. */
+static ef_status size_member(const mctx *c, json_object *top, const char *key, int32_t *out)
+{
+    json_object *v;
+    if (!json_object_object_get_ex(top, key, &v))
+        return EF_OK;
+    if (!json_object_is_type(v, json_type_int) || json_object_get_int64(v) < 1 ||
+        json_object_get_int64(v) > EF_MAX_CANVAS) {
+        char msg[64];
+        snprintf(msg, sizeof msg, "must be an integer 1..%d", EF_MAX_CANVAS);
+        return bad_key(c, EF_ERR_RANGE, key, msg, NULL);
     }
-    d[o] = '\0';
-    out->s = d;
-    out->len = o;
+    *out = (int32_t)json_object_get_int64(v);
     return EF_OK;
 }
 
-/* A number; *is_uint and *v when it is a non-negative integer below 2^64. */
-static ef_status number(jp *j, int *is_uint, uint64_t *v)
+/* A string member ("format", "role"): absent or null leaves *out NULL. */
+static ef_status string_member(const mctx *c, json_object *e, const char *path, const char *key, char **out)
 {
-    int neg = 0, frac = 0, big = 0;
-    uint64_t x = 0;
-    if (peek(j) == '-') {
-        neg = 1;
-        adv(j);
-    }
-    if (peek(j) == '0') {
-        adv(j);
-    } else if (peek(j) >= '1' && peek(j) <= '9') {
-        while (peek(j) >= '0' && peek(j) <= '9') {
-            uint64_t dg = (uint64_t)(peek(j) - '0');
-            if (x > (UINT64_MAX - dg) / 10u)
-                big = 1;
-            else
-                x = x * 10u + dg;
-            adv(j);
-        }
-    } else {
-        return unexpected(j, "a digit");
-    }
-    if (peek(j) == '.') {
-        frac = 1;
-        adv(j);
-        if (!(peek(j) >= '0' && peek(j) <= '9'))
-            return unexpected(j, "a digit");
-        while (peek(j) >= '0' && peek(j) <= '9')
-            adv(j);
-    }
-    if (peek(j) == 'e' || peek(j) == 'E') {
-        frac = 1;
-        adv(j);
-        if (peek(j) == '+' || peek(j) == '-')
-            adv(j);
-        if (!(peek(j) >= '0' && peek(j) <= '9'))
-            return unexpected(j, "a digit");
-        while (peek(j) >= '0' && peek(j) <= '9')
-            adv(j);
-    }
-    *is_uint = !neg && !frac && !big;
-    *v = x;
+    json_object *v;
+    char k[80];
+    if (!json_object_object_get_ex(e, key, &v) || !v)
+        return EF_OK;
+    snprintf(k, sizeof k, "%s.%s", path, key);
+    if (!json_object_is_type(v, json_type_string))
+        return bad_key(c, EF_ERR_SYNTAX, k, "a string or null expected", NULL);
+    if ((*out = strdup(json_object_get_string(v))) == NULL)
+        return ef_vr_err_file(c->err, EF_ERR_NOMEM, c->name, "out of memory");
     return EF_OK;
 }
 
-static ef_status value(jp *j, int ctx);
-
-static int plain_name(const jstr *s)
+static ef_status file_entry(const mctx *c, json_object *e, size_t k, ef_vec_manifest_file *f)
 {
-    return s->len > 0 && strlen(s->s) == s->len && !strchr(s->s, '/') && !strstr(s->s, "..") &&
-           strcmp(s->s, ".") != 0;
-}
+    json_object *v;
+    char path[40], key[80], q[512];
+    ef_status st;
 
-/* A member `key` of a file entry, at the value. */
-static ef_status file_member(jp *j, const char *key)
-{
-    ef_vec_manifest_file *f = &j->m->files[j->m->nfiles - 1];
-    uint64_t l0 = j->line, c0 = j->col;
-    int is_str = peek(j) == '"', want_str = strcmp(key, "name") == 0 || strcmp(key, "format") == 0 ||
-                                            strcmp(key, "role") == 0 || strcmp(key, "interface") == 0;
-    if (strcmp(key, "count") == 0) {
-        int u;
-        if (!(peek(j) == '-' || (peek(j) >= '0' && peek(j) <= '9')))
-            return unexpected(j, "a count (an integer)");
-        ef_status st = number(j, &u, &f->count);
-        if (st != EF_OK)
-            return st;
-        if (!u)
-            return fail(j, EF_ERR_RANGE, l0, c0, "a file's count must be an integer 0..2^64-1", NULL);
+    memset(f, 0, sizeof *f);
+    f->iface = -1;
+    f->index = k;
+    snprintf(path, sizeof path, "files[%zu]", k);
+    if (!json_object_is_type(e, json_type_object))
+        return bad_key(c, EF_ERR_SYNTAX, path, "a file entry (an object) expected", NULL);
+    snprintf(key, sizeof key, "%s.name", path);
+    if (!json_object_object_get_ex(e, "name", &v) || !v)
+        return bad_key(c, EF_ERR_SYNTAX, path, "a file entry without a \"name\"", NULL);
+    if (!json_object_is_type(v, json_type_string))
+        return bad_key(c, EF_ERR_SYNTAX, key, "a string expected", NULL);
+    const char *s = json_object_get_string(v);
+    size_t len = (size_t)json_object_get_string_len(v);
+    quote_name(s, len, q, sizeof q);
+    if (!plain_name(s, len))
+        return ef_vr_err_file(c->err, EF_ERR_SYNTAX, c->name,
+                              "%s: manifest names a file outside its folder: '%s' (names must be plain file names)",
+                              key, q);
+    if ((f->name = strdup(s)) == NULL)
+        return ef_vr_err_file(c->err, EF_ERR_NOMEM, c->name, "out of memory");
+    if ((st = string_member(c, e, path, "format", &f->format)) != EF_OK ||
+        (st = string_member(c, e, path, "role", &f->role)) != EF_OK)
+        return st;
+    if (json_object_object_get_ex(e, "interface", &v) && v) {
+        snprintf(key, sizeof key, "%s.interface", path);
+        if (!json_object_is_type(v, json_type_string))
+            return bad_key(c, EF_ERR_SYNTAX, key, "a string or null expected", NULL);
+        quote_name(json_object_get_string(v), (size_t)json_object_get_string_len(v), q, sizeof q);
+        if ((f->iface = ef_iface_find(json_object_get_string(v))) < 0)
+            return ef_vr_err_file(c->err, EF_ERR_SYNTAX, c->name, "%s: unknown interface '%s'", key, q);
+    }
+    if (json_object_object_get_ex(e, "count", &v)) {
+        snprintf(key, sizeof key, "%s.count", path);
+        /* json-c keeps integers of 2^63 or more as unsigned; a negative one
+         * reads as a negative int64. */
+        if (!v || !json_object_is_type(v, json_type_int) || json_object_get_int64(v) < 0)
+            return bad_key(c, EF_ERR_RANGE, key, "a file's count must be an integer 0..2^64-1", NULL);
+        f->count = json_object_get_uint64(v);
         f->has_count = 1;
-        return EF_OK;
     }
-    if (!want_str || (!is_str && peek(j) == 'n'))
-        return value(j, C_OTHER);   /* other members, and null ("interface": null for the VCD) */
-    if (!is_str)
-        return unexpected(j, "a string or null");
-    jstr s;
-    char q[512];
-    ef_status st = string(j, &s);
+    return EF_OK;
+}
+
+static ef_status walk(const mctx *c, json_object *top)
+{
+    ef_vec_manifest *m = c->m;
+    json_object *fs;
+    ef_status st;
+
+    if ((st = size_member(c, top, "width", &m->width)) != EF_OK ||
+        (st = size_member(c, top, "height", &m->height)) != EF_OK)
+        return st;
+    if (!json_object_object_get_ex(top, "files", &fs))
+        return EF_OK;
+    if (!json_object_is_type(fs, json_type_array))
+        return bad_key(c, EF_ERR_SYNTAX, "files", "an array expected", NULL);
+    size_t n = json_object_array_length(fs);
+    if (!n)
+        return EF_OK;
+    if ((m->files = calloc(n, sizeof *m->files)) == NULL)
+        return ef_vr_err_file(c->err, EF_ERR_NOMEM, c->name, "out of memory");
+    for (size_t k = 0; k < n; k++) {
+        m->nfiles = k + 1;
+        if ((st = file_entry(c, json_object_array_get_idx(fs, k), k, &m->files[k])) != EF_OK)
+            return st;
+    }
+    return EF_OK;
+}
+
+ef_status ef_vec_read_manifest(const char *name, const uint8_t *data, size_t len, ef_vec_manifest *out,
+                               ef_vec_read_error *err)
+{
+    mctx c = { name, out, err };
+    struct json_tokener *tok;
+    json_object *top;
+    ef_status st;
+    size_t first = 0, end;
+
+    memset(out, 0, sizeof *out);
+    if (len > MANIFEST_MAX)
+        return ef_vr_err_file(err, EF_ERR_SYNTAX, name, "manifest larger than 1 MiB");
+    if (!data)
+        len = 0;
+    while (first < len && (data[first] == ' ' || data[first] == '\t' || data[first] == '\n' || data[first] == '\r'))
+        first++;
+    if (first == len || data[first] != '{')
+        return syntax(&c, data, len, first, "the manifest object '{' expected");
+    /* json-c reads a NUL byte as the end of its input: refuse it here, at
+     * its place, rather than take the bytes before it for the manifest. */
+    const uint8_t *nul = memchr(data, 0, len);
+    if ((tok = json_tokener_new_ex(DEPTH_MAX)) == NULL)
+        return ef_vr_err_file(err, EF_ERR_NOMEM, name, "out of memory");
+    /* Trailing bytes are json-c's to allow and ours to refuse, with a
+     * clearer message than json-c's "unexpected character". */
+    json_tokener_set_flags(tok, JSON_TOKENER_STRICT | JSON_TOKENER_VALIDATE_UTF8 | JSON_TOKENER_ALLOW_TRAILING_CHARS);
+    top = json_tokener_parse_ex(tok, (const char *)data, nul ? (int)(nul - data) : (int)len);
+    enum json_tokener_error je = json_tokener_get_error(tok);
+    end = json_tokener_get_parse_end(tok);
+    json_tokener_free(tok);
+    if (!top) {
+        if (je == json_tokener_error_depth) {
+            uint64_t line, col;
+            place(data, end, &line, &col);
+            st = ef_vr_err_line(err, EF_ERR_SYNTAX, name, line, col, "nested deeper than 64 levels");
+        } else if (je == json_tokener_continue)
+            st = syntax(&c, data, len, nul ? (size_t)(nul - data) : len,
+                        nul ? "JSON: a NUL byte" : "JSON: unexpected end of file (the manifest is cut short)");
+        else {
+            char what[96];
+            snprintf(what, sizeof what, "JSON: %s", json_tokener_error_desc(je));
+            st = syntax(&c, data, len, end, what);
+        }
+        return st;
+    }
+    /* Nothing but white space after the object. */
+    while (end < len && (data[end] == ' ' || data[end] == '\t' || data[end] == '\n' || data[end] == '\r'))
+        end++;
+    if (end < len)
+        st = syntax(&c, data, len, end, "the end of the file expected");
+    else
+        st = walk(&c, top);
+    json_object_put(top);
     if (st != EF_OK)
-        return st;
-    if (strcmp(key, "name") == 0) {
-        quote_name(&s, q, sizeof q);
-        if (!plain_name(&s)) {
-            free(s.s);
-            return ef_vr_err_line(j->err, EF_ERR_SYNTAX, j->name, l0, c0,
-                                  "manifest names a file outside its folder: '%s' (names must be plain file names)",
-                                  q);
-        }
-        free(f->name);
-        f->name = s.s;
-        f->line = l0;
-        f->col = c0;
-    } else if (strcmp(key, "interface") == 0) {
-        int i = ef_iface_find(s.s);
-        quote_name(&s, q, sizeof q);
-        free(s.s);
-        if (i < 0)
-            return ef_vr_err_line(j->err, EF_ERR_SYNTAX, j->name, l0, c0, "unknown interface '%s'", q);
-        f->iface = i;
-    } else {
-        char **dst = strcmp(key, "format") == 0 ? &f->format : &f->role;
-        free(*dst);
-        *dst = s.s;
-    }
-    return EF_OK;
-}
-
-static ef_status top_member(jp *j, const char *key)
-{
-    uint64_t l0 = j->line, c0 = j->col;
-    if (strcmp(key, "width") == 0 || strcmp(key, "height") == 0) {
-        int u;
-        uint64_t v;
-        if (!(peek(j) == '-' || (peek(j) >= '0' && peek(j) <= '9')))
-            return unexpected(j, "an integer");
-        ef_status st = number(j, &u, &v);
-        if (st != EF_OK)
-            return st;
-        if (!u || v < 1 || v > EF_MAX_CANVAS)
-            return ef_vr_err_line(j->err, EF_ERR_RANGE, j->name, l0, c0, "%s must be an integer 1..%d", key,
-                                  EF_MAX_CANVAS);
-        *(key[0] == 'w' ? &j->m->width : &j->m->height) = (int32_t)v;
-        return EF_OK;
-    }
-    if (strcmp(key, "files") == 0) {
-        if (peek(j) != '[')
-            return unexpected(j, "'files': an array");
-        return value(j, C_FILES);
-    }
-    return value(j, C_OTHER);
-}
-
-static ef_status new_file(jp *j)
-{
-    ef_vec_manifest *m = j->m;
-    /* Each entry took at least "{}" of the input, so this stays bounded. */
-    if (m->nfiles == j->cap) {
-        size_t cap = j->cap ? j->cap * 2 : 8;
-        ef_vec_manifest_file *nf = realloc(m->files, cap * sizeof *nf);
-        if (!nf)
-            return nomem(j);
-        m->files = nf;
-        j->cap = cap;
-    }
-    ef_vec_manifest_file *nf = m->files;
-    memset(&nf[m->nfiles], 0, sizeof *nf);
-    nf[m->nfiles].iface = -1;
-    nf[m->nfiles].line = j->line;
-    nf[m->nfiles].col = j->col;
-    m->nfiles++;
-    return EF_OK;
-}
-
-static ef_status object(jp *j, int ctx)
-{
-    ef_status st;
-    uint64_t l0 = j->line, c0 = j->col;
-    if (ctx == C_FILE && (st = new_file(j)) != EF_OK)
-        return st;
-    adv(j);
-    ws(j);
-    if (peek(j) == '}') {
-        adv(j);
-    } else {
-        for (;;) {
-            jstr key;
-            ws(j);
-            if (peek(j) != '"')
-                return unexpected(j, "a member name (a string)");
-            if ((st = string(j, &key)) != EF_OK)
-                return st;
-            ws(j);
-            if (peek(j) != ':') {
-                free(key.s);
-                return unexpected(j, "':'");
-            }
-            adv(j);
-            ws(j);
-            st = ctx == C_TOP ? top_member(j, key.s) : ctx == C_FILE ? file_member(j, key.s) : value(j, C_OTHER);
-            free(key.s);
-            if (st != EF_OK)
-                return st;
-            ws(j);
-            if (peek(j) == ',') {
-                adv(j);
-                continue;
-            }
-            if (peek(j) == '}') {
-                adv(j);
-                break;
-            }
-            return unexpected(j, "',' or '}'");
-        }
-    }
-    if (ctx == C_FILE && !j->m->files[j->m->nfiles - 1].name)
-        return fail(j, EF_ERR_SYNTAX, l0, c0, "a file entry without a \"name\"", NULL);
-    return EF_OK;
-}
-
-static ef_status array(jp *j, int ctx)
-{
-    ef_status st;
-    adv(j);
-    ws(j);
-    if (peek(j) == ']') {
-        adv(j);
-        return EF_OK;
-    }
-    for (;;) {
-        ws(j);
-        if (ctx == C_FILES && peek(j) != '{')
-            return unexpected(j, "a file entry (an object)");
-        if ((st = value(j, ctx == C_FILES ? C_FILE : C_OTHER)) != EF_OK)
-            return st;
-        ws(j);
-        if (peek(j) == ',') {
-            adv(j);
-            continue;
-        }
-        if (peek(j) == ']') {
-            adv(j);
-            return EF_OK;
-        }
-        return unexpected(j, "',' or ']'");
-    }
-}
-
-static ef_status literal(jp *j, const char *word)
-{
-    size_t n = strlen(word);
-    if (j->n - j->i < n || memcmp(j->p + j->i, word, n) != 0)
-        return unexpected(j, "a JSON value");
-    for (size_t k = 0; k < n; k++)
-        adv(j);
-    return EF_OK;
-}
-
-static ef_status value(jp *j, int ctx)
-{
-    ef_status st;
-    if (j->depth >= DEPTH_MAX)
-        return fail(j, EF_ERR_SYNTAX, j->line, j->col, "nested deeper than 64 levels", NULL);
-    int c = peek(j);
-    j->depth++;
-    if (c == '{') {
-        st = object(j, ctx);
-    } else if (c == '[') {
-        st = array(j, ctx);
-    } else if (c == '"') {
-        jstr s;
-        st = string(j, &s);
-        if (st == EF_OK)
-            free(s.s);
-    } else if (c == '-' || (c >= '0' && c <= '9')) {
-        int u;
-        uint64_t v;
-        st = number(j, &u, &v);
-    } else if (c == 't' || c == 'f' || c == 'n') {
-        st = literal(j, c == 't' ? "true" : c == 'f' ? "false" : "null");
-    } else {
-        st = unexpected(j, "a JSON value");
-    }
-    j->depth--;
+        ef_vec_manifest_free(out);
     return st;
 }
+
+#else /* EF_NO_MANIFEST */
+
+ef_status ef_vec_read_manifest(const char *name, const uint8_t *data, size_t len, ef_vec_manifest *out,
+                               ef_vec_read_error *err)
+{
+    (void)data;
+    (void)len;
+    memset(out, 0, sizeof *out);
+    return ef_vr_err_file(err, EF_ERR_UNSUPPORTED, name,
+                          "this build reads no manifest (built with WITH_MANIFEST=0, without json-c)");
+}
+
+#endif /* EF_NO_MANIFEST */
 
 void ef_vec_manifest_free(ef_vec_manifest *m)
 {
@@ -507,32 +276,6 @@ void ef_vec_manifest_free(ef_vec_manifest *m)
     }
     free(m->files);
     memset(m, 0, sizeof *m);
-}
-
-ef_status ef_vec_read_manifest(const char *name, const uint8_t *data, size_t len, ef_vec_manifest *out,
-                               ef_vec_read_error *err)
-{
-    jp j;
-    memset(out, 0, sizeof *out);
-    if (len > MANIFEST_MAX)
-        return ef_vr_err_file(err, EF_ERR_SYNTAX, name, "manifest larger than 1 MiB");
-    memset(&j, 0, sizeof j);
-    j.p = data;
-    j.n = data ? len : 0;
-    j.line = j.col = 1;
-    j.name = name;
-    j.m = out;
-    j.err = err;
-    ws(&j);
-    ef_status st = peek(&j) == '{' ? value(&j, C_TOP) : unexpected(&j, "the manifest object '{'");
-    if (st == EF_OK) {
-        ws(&j);
-        if (j.i < j.n)
-            st = unexpected(&j, "the end of the file");
-    }
-    if (st != EF_OK)
-        ef_vec_manifest_free(out);
-    return st;
 }
 
 ef_status ef_vec_read_manifest_path(const char *path, const char *name, ef_vec_manifest *out,

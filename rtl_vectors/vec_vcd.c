@@ -16,7 +16,7 @@
 
 /* Identifier codes are printable ASCII; '$' is left out so that no code can
  * read like a keyword ("$end") to a careless tokenizer. */
-static void make_id(unsigned n, char *id)
+static unsigned make_id(unsigned n, char *id)
 {
     char tmp[8];
     unsigned k = 0;
@@ -25,42 +25,124 @@ static void make_id(unsigned n, char *id)
         tmp[k++] = (char)(d + 33u >= '$' ? d + 34u : d + 33u);
         n /= 93u;
     } while (n);
+    memset(id, 0, 8);
     for (unsigned i = 0; i < k; i++)
         id[i] = tmp[k - 1 - i];
-    id[k] = '\0';
+    return k;
 }
 
 typedef struct sig {
-    char id[8];
+    char id[8];             /* NUL-padded: copied 8 bytes at a time, idlen of them kept */
+    unsigned idlen;
     unsigned width;
 } sig;
 
-/* Signals of one interface: valid, ready, then the fields. */
+/* Signals of one interface: valid, ready, then the fields, with where each
+ * field's bits are in a collected record (ef_vec_list: the cycle, then the
+ * payload words) and its cursor into the interface's transactions. */
 typedef struct iface_sigs {
     sig valid, ready, field[EF_IF_MAX_FIELDS];
+    unsigned nfields;
+    unsigned word[EF_IF_MAX_FIELDS], shift[EF_IF_MAX_FIELDS];
+    uint64_t mask[EF_IF_MAX_FIELDS];
     uint64_t last[EF_IF_MAX_FIELDS];
     int on;                 /* valid in the previous cycle */
+    const uint64_t *rec;    /* the next transaction */
+    size_t left;            /* transactions from rec on */
+    unsigned stride;        /* words per record */
 } iface_sigs;
 
-static void out_value(ef_vec_out *o, const sig *s, uint64_t v)
+/* Eight binary digits of each byte value; one row more, so that copying 8
+ * bytes from inside the last row stays in the table. */
+static const char BIN8[257][8] = {
+#define B8(b) { '0' + ((b) >> 7 & 1), '0' + ((b) >> 6 & 1), '0' + ((b) >> 5 & 1), '0' + ((b) >> 4 & 1), \
+                '0' + ((b) >> 3 & 1), '0' + ((b) >> 2 & 1), '0' + ((b) >> 1 & 1), '0' + ((b) & 1) }
+#define B16(r) B8(r + 0), B8(r + 1), B8(r + 2), B8(r + 3), B8(r + 4), B8(r + 5), B8(r + 6), B8(r + 7), \
+               B8(r + 8), B8(r + 9), B8(r + 10), B8(r + 11), B8(r + 12), B8(r + 13), B8(r + 14), B8(r + 15)
+    B16(0x00), B16(0x10), B16(0x20), B16(0x30), B16(0x40), B16(0x50), B16(0x60), B16(0x70),
+    B16(0x80), B16(0x90), B16(0xa0), B16(0xb0), B16(0xc0), B16(0xd0), B16(0xe0), B16(0xf0),
+#undef B16
+#undef B8
+};
+
+/* Bytes one value change may take: 'b', 64 digits, ' ', an id copied 8
+ * bytes wide, '\n'. */
+#define VALUE_MAX (1 + 64 + 1 + 8 + 1)
+
+/* A scalar change: "0!" or "1!" and a newline. */
+static inline unsigned char *put_bit(unsigned char *p, unsigned bit, const sig *s)
 {
-    char buf[72];
-    unsigned n = 0;
-    if (s->width == 1) {
-        buf[n++] = (char)('0' + (v & 1u));
-    } else {
-        /* Leading zeros are dropped (VCD left-extends a vector with 0). */
-        int top = 63;
-        while (top > 0 && !(v >> top & 1u))
-            top--;
-        buf[n++] = 'b';
-        for (int b = top; b >= 0; b--)
-            buf[n++] = (char)('0' + (v >> b & 1u));
-        buf[n++] = ' ';
+    *p++ = (unsigned char)('0' + bit);
+    memcpy(p, s->id, 8);
+    p += s->idlen;
+    *p++ = '\n';
+    return p;
+}
+
+/* Binary digits of v without leading zeros, 1 for zero. */
+static inline unsigned bit_length(uint64_t v)
+{
+#if defined(__GNUC__)
+    return v ? 64u - (unsigned)__builtin_clzll(v) : 1u;
+#else
+    unsigned nb = 1;
+    for (uint64_t x = v >> 1; x; x >>= 1)
+        nb++;
+    return nb;
+#endif
+}
+
+/* A change of s to v: a one-bit signal as a scalar, a vector as 'b' and its
+ * binary digits without leading zeros (VCD left-extends a vector with 0),
+ * "b0" for zero, eight digits at a time from the table. */
+static inline unsigned char *put_value(unsigned char *p, const sig *s, uint64_t v)
+{
+    if (s->width == 1)
+        return put_bit(p, (unsigned)(v & 1u), s);
+    const unsigned nb = bit_length(v);
+    unsigned g = (nb - 1) / 8, top = nb - 8 * g;     /* g whole bytes below a top group of 1..8 digits */
+    *p++ = 'b';
+    memcpy(p, BIN8[v >> (8 * g) & 0xFFu] + (8 - top), 8);
+    p += top;
+    for (; g > 0; g--) {
+        memcpy(p, BIN8[v >> (8 * (g - 1)) & 0xFFu], 8);
+        p += 8;
     }
-    ef_vec_out_write(o, buf, n);
-    ef_vec_out_puts(o, s->id);
-    ef_vec_out_puts(o, "\n");
+    *p++ = ' ';
+    memcpy(p, s->id, 8);
+    p += s->idlen;
+    *p++ = '\n';
+    return p;
+}
+
+/* The decimal digits of the cycle number c, kept by counting up, so that the
+ * two timestamps of a cycle, 10c and 10c + 5, are its digits and a '0' or a
+ * '5' (c = 0 is the empty string: "#0", "#5"). */
+typedef struct counter {
+    char d[24];
+    unsigned start;         /* the digits are d[start..23] */
+} counter;
+
+static void counter_next(counter *k)
+{
+    unsigned i = sizeof k->d;
+    while (i > k->start && k->d[i - 1] == '9')
+        k->d[--i] = '0';
+    if (i > k->start)
+        k->d[i - 1]++;
+    else
+        k->d[--k->start] = '1';
+}
+
+static inline unsigned char *put_time(unsigned char *p, const counter *k, char last)
+{
+    const unsigned n = (unsigned)sizeof k->d - k->start;
+    *p++ = '#';
+    memcpy(p, k->d + k->start, n);
+    p += n;
+    *p++ = (unsigned char)last;
+    *p++ = '\n';
+    return p;
 }
 
 static void out_var(ef_vec_out *o, const sig *s, const char *name)
@@ -79,16 +161,7 @@ static void out_var(ef_vec_out *o, const sig *s, const char *name)
     ef_vec_out_puts(o, " $end\n");
 }
 
-static void out_time(ef_vec_out *o, uint64_t t)
-{
-    char buf[24];
-    buf[0] = '#';
-    size_t n = ef_vec_u64_dec(t, buf + 1);
-    buf[1 + n] = '\n';
-    ef_vec_out_write(o, buf, n + 2);
-}
-
-static void header(ef_vec_out *o, const ef_vec_info *info, iface_sigs *s, const sig *clk)
+static void header(ef_vec_out *o, const ef_vec_info *info, const iface_sigs *s, const sig *clk)
 {
     ef_vec_out_puts(o, "$comment\n  edgeflag vectors format 1\n  ");
     ef_vec_out_run_line(o, info);
@@ -115,91 +188,114 @@ static void header(ef_vec_out *o, const ef_vec_info *info, iface_sigs *s, const 
     ef_vec_out_puts(o, "$upscope $end\n$enddefinitions $end\n");
 }
 
-/* The changes at the falling edge that starts cycle c; got[i] says whether
- * interface i transfers t[i] in c.  With all set, everything is dumped (the
- * $dumpvars of time 0). */
-static void changes(ef_vec_out *o, uint32_t mask, iface_sigs *s, const int *got, const ef_txn *t, int all)
+/* The changes at the falling edge that starts cycle cyc: each interface's
+ * valid, and its fields when it transfers (a field keeps its value between
+ * transfers, so only a transfer can change it).  With all set, everything
+ * is dumped (the $dumpvars of time 0). */
+static unsigned char *changes(unsigned char *p, iface_sigs *const *on, unsigned n, uint64_t cyc, int all)
 {
-    for (int i = 0; i < EF_IF_COUNT; i++) {
-        const ef_iface_desc *d = ef_iface_get(i);
-        if (!(mask >> i & 1u))
-            continue;
-        if (all || got[i] != s[i].on)
-            out_value(o, &s[i].valid, (uint64_t)got[i]);
+    for (unsigned j = 0; j < n; j++) {
+        iface_sigs *s = on[j];
+        const int got = s->left && s->rec[0] == cyc;    /* at most one per cycle (collector) */
+        if (all || got != s->on)
+            p = put_bit(p, (unsigned)got, &s->valid);
         if (all)
-            out_value(o, &s[i].ready, 1);
-        s[i].on = got[i];
-        for (unsigned k = 0; k < d->nfields; k++) {
-            uint64_t v = got[i] ? ef_txn_field(&t[i], k) : s[i].last[k];
-            if (all || v != s[i].last[k])
-                out_value(o, &s[i].field[k], v);
-            s[i].last[k] = v;
+            p = put_bit(p, 1, &s->ready);
+        s->on = got;
+        if (!got && !all)
+            continue;
+        for (unsigned k = 0; k < s->nfields; k++) {
+            uint64_t v = s->last[k];
+            if (got) {
+                const uint64_t *w = s->rec + 1 + s->word[k];
+                v = w[0] >> s->shift[k];
+                if (s->shift[k] && s->shift[k] + s->field[k].width > 64)    /* masked: no bit shifted out */
+                    v |= (w[1] & (UINT64_MAX >> (64 - s->shift[k]))) << (64 - s->shift[k]);
+                v &= s->mask[k];
+            }
+            if (all || v != s->last[k])
+                p = put_value(p, &s->field[k], v);
+            s->last[k] = v;
+        }
+        if (got) {
+            s->rec += s->stride;
+            s->left--;
         }
     }
+    return p;
 }
 
 void ef_vec_vcd_write(ef_vec_out *o, const ef_vec_info *info, const ef_vec_collect *c)
 {
-    iface_sigs s[EF_IF_COUNT];
-    sig clk = { "", 1 };
-    unsigned nid = 0;
-    ef_vec_merge m;
-    ef_txn next, t[EF_IF_COUNT];
-    int have, got[EF_IF_COUNT];
+    iface_sigs s[EF_IF_COUNT], *on[EF_IF_COUNT];
+    sig clk;
+    unsigned nid = 0, non = 0;
+    size_t room = 2 * (1 + sizeof ((counter *)0)->d + 2) + 2 * (1 + 8 + 1) + sizeof "$dumpvars\n$end\n";
+    counter k;
     uint64_t cycles = info->cycles, end = ef_vec_collect_end(c, info->mask);
 
     if (end > cycles)       /* the caller checks; never cut a transfer off */
         cycles = end;
     memset(s, 0, sizeof s);
-    memset(t, 0, sizeof t);
-    make_id(nid++, clk.id);
+    memset(&clk, 0, sizeof clk);
+    clk.idlen = make_id(nid++, clk.id);
+    clk.width = 1;
     for (int i = 0; i < EF_IF_COUNT; i++) {
         const ef_iface_desc *d = ef_iface_get(i);
+        const ef_vec_list *l = &c->list[i];
+        unsigned lsb = d->width;
         if (!(info->mask >> i & 1u))
             continue;
-        make_id(nid++, s[i].valid.id);
+        on[non++] = &s[i];
+        s[i].valid.idlen = make_id(nid++, s[i].valid.id);
         s[i].valid.width = 1;
-        make_id(nid++, s[i].ready.id);
+        s[i].ready.idlen = make_id(nid++, s[i].ready.id);
         s[i].ready.width = 1;
-        for (unsigned k = 0; k < d->nfields; k++) {
-            make_id(nid++, s[i].field[k].id);
-            s[i].field[k].width = d->field[k].width;
+        s[i].nfields = d->nfields;
+        room += 2 * VALUE_MAX;
+        for (unsigned f = 0; f < d->nfields; f++) {
+            const unsigned w = d->field[f].width;
+            s[i].field[f].idlen = make_id(nid++, s[i].field[f].id);
+            s[i].field[f].width = w;
+            lsb -= w;                       /* fields are most significant first */
+            s[i].word[f] = lsb / 64;
+            s[i].shift[f] = lsb % 64;
+            s[i].mask[f] = w >= 64 ? ~UINT64_C(0) : (UINT64_C(1) << w) - 1u;
+            room += VALUE_MAX;
         }
+        s[i].stride = 1u + l->nw;
+        s[i].rec = l->rec;
+        s[i].left = l->count;
     }
     header(o, info, s, &clk);
 
-    ef_vec_merge_init(&m, c, info->mask);
-    have = ef_vec_merge_next(&m, &next);
-    for (uint64_t cyc = 0; cyc < cycles; cyc++) {
-        memset(got, 0, sizeof got);
-        while (have && next.cycle == cyc) {     /* at most one per interface (collector) */
-            got[next.iface] = 1;
-            t[next.iface] = next;
-            have = ef_vec_merge_next(&m, &next);
-        }
-        out_time(o, 10u * cyc);
+    memset(&k, 0, sizeof k);
+    k.start = sizeof k.d;
+    for (uint64_t cyc = 0; cyc < cycles; cyc++, counter_next(&k)) {
+        unsigned char *const p0 = ef_vec_out_room(o, room);
+        unsigned char *p = put_time(p0, &k, '0');
         if (cyc == 0) {
-            ef_vec_out_puts(o, "$dumpvars\n");
-            out_value(o, &clk, 0);
-            changes(o, info->mask, s, got, t, 1);
-            ef_vec_out_puts(o, "$end\n");
+            memcpy(p, "$dumpvars\n", 10);
+            p = changes(put_bit(p + 10, 0, &clk), on, non, cyc, 1);
+            memcpy(p, "$end\n", 5);
+            p += 5;
         } else {
-            out_value(o, &clk, 0);
-            changes(o, info->mask, s, got, t, 0);
+            p = changes(put_bit(p, 0, &clk), on, non, cyc, 0);
         }
-        out_time(o, 10u * cyc + 5u);
-        out_value(o, &clk, 1);
+        p = put_bit(put_time(p, &k, '5'), 1, &clk);
+        ef_vec_out_advance(o, (size_t)(p - p0));
     }
-    /* The end of the last cycle: the clock falls and every valid drops. */
-    memset(got, 0, sizeof got);
-    out_time(o, 10u * cycles);
+    /* The end of the last cycle: the clock falls and every valid drops (no
+     * list has a transaction left, so nothing transfers). */
+    unsigned char *const p0 = ef_vec_out_room(o, room);
+    unsigned char *p = put_time(p0, &k, '0');
     if (cycles == 0) {
-        ef_vec_out_puts(o, "$dumpvars\n");
-        out_value(o, &clk, 0);
-        changes(o, info->mask, s, got, t, 1);
-        ef_vec_out_puts(o, "$end\n");
+        memcpy(p, "$dumpvars\n", 10);
+        p = changes(put_bit(p + 10, 0, &clk), on, non, cycles, 1);
+        memcpy(p, "$end\n", 5);
+        p += 5;
     } else {
-        out_value(o, &clk, 0);
-        changes(o, info->mask, s, got, t, 0);
+        p = changes(put_bit(p, 0, &clk), on, non, cycles, 0);
     }
+    ef_vec_out_advance(o, (size_t)(p - p0));
 }

@@ -9,7 +9,7 @@
 #   tools/install-deps.sh farm     + GNU parallel, Slurm and munge for `make farm-test` (docs/regress.md)
 set -euo pipefail
 
-pkgs=(gcc make pkg-config libexpat1-dev libpng-dev nettle-dev libjansson-dev zlib1g-dev)
+pkgs=(gcc make pkg-config libexpat1-dev libpng-dev nettle-dev libjson-c-dev zlib1g-dev)
 optional=()
 if [ "${1:-}" = test ] || [ "${1:-}" = portability ]; then
     pkgs+=(libcmocka-dev clang gcc-multilib libclang-rt-14-dev)

@@ -220,13 +220,14 @@ run check N A
     ok "no manifest: a warning, then every *.expected.hex compared" || bad "EXPECTED without a manifest" "exit $rc"
 rm -rf N && cp -R V N
 ml=$(grep -n '"name": "span.expected.hex"' N/manifest.json | cut -d: -f1)
+fl=$(grep -n '"files": \[' N/manifest.json | cut -d: -f1)
 sed -i "${ml}s/\"count\": [0-9]*/\"count\": 1/" N/manifest.json
 run check N A
-[ $rc = 2 ] && grep -Eq "^edgeflag: N/manifest.json:$ml:[0-9]+: the manifest counts 1 transactions in 'span.expected.hex', the file holds" err &&
-    ok "a manifest count that disagrees with its file: exit 2 at the manifest's line" || bad "manifest count" "exit $rc"
+[ $rc = 2 ] && grep -Eq "^edgeflag: N/manifest.json: files\[$((ml - fl - 1))\]\.count: the manifest counts 1 transactions in 'span.expected.hex', the file holds" err &&
+    ok "a manifest count that disagrees with its file: exit 2 naming the entry's key" || bad "manifest count" "exit $rc"
 rm -rf N && cp -R V N && rm N/plot.expected.hex
 run check N A
-[ $rc = 2 ] && grep -Eq "^edgeflag: N/manifest.json:[0-9]+:[0-9]+: the manifest names 'plot.expected.hex', which is not in N$" err &&
+[ $rc = 2 ] && grep -Eq "^edgeflag: N/manifest.json: files\[[0-9]+\]\.name: the manifest names 'plot.expected.hex', which is not in N$" err &&
     ok "a manifest naming a missing file: exit 2" || bad "manifest naming a missing file" "exit $rc"
 
 # ------------------------------------------------------------ hex mutations

@@ -425,8 +425,10 @@ static void test_manifest(void **state)
     char *got;
     (void)state;
     small_run(&m.r, 1u << EF_IF_ET_RD);
-    /* quote, backslash, a control character, U+00E9 in UTF-8, a stray byte */
-    m.r.info.input = "q\"b\\s\x01\xc3\xa9\xff.svg";
+    /* quote, backslash, control characters, DEL, U+00E9 in UTF-8, a stray
+     * byte; the largest seed (json-c prints it exactly) */
+    m.r.info.input = "q\"b\\s\x01\t\x7f\xc3\xa9\xff.svg";
+    m.r.info.seed = UINT64_MAX;
     memset(m.f, 0, sizeof m.f);
     strcpy(m.f[0].name, "et_rd.expected.hex");
     m.f[0].format = "hex";
@@ -440,12 +442,12 @@ static void test_manifest(void **state)
                              "  \"format\": \"edgeflag-vectors\",\n"
                              "  \"version\": 1,\n"
                              "  \"generator\": \"edgeflag " EF_VERSION_STRING "\",\n"
-                             "  \"input\": \"q\\\"b\\\\s\\u0001\xc3\xa9\\ufffd.svg\",\n"
+                             "  \"input\": \"q\\\"b\\\\s\\u0001\\t\x7f\xc3\xa9\xef\xbf\xbd.svg\",\n"
                              "  \"width\": 7,\n"
                              "  \"height\": 5,\n"
                              "  \"samples\": 8,\n"
                              "  \"rule\": \"evenodd\",\n"
-                             "  \"seed\": 42,\n"
+                             "  \"seed\": 18446744073709551615,\n"
                              "  \"cycles\": 4,\n"
                              "  \"transactions\": 3,\n"
                              "  \"interfaces\": [\n"
@@ -478,6 +480,63 @@ static void test_out_hash(void **state)
     assert_true(o.crc == ef_vec_crc32(0, got, n));
     free(got);
     ef_vec_collect_free(&r.c);
+}
+
+/* The sink with its second thread (EF_VEC_OUT_THREAD) gives the same bytes,
+ * SHA-256 and CRC as without, over many buffers: lines of every length
+ * (buffers end mid-line), room-and-advance writes and blocks larger than a
+ * buffer (handed to the thread without a copy). */
+static void test_out_thread(void **state)
+{
+    char *bytes[2];
+    size_t len[2];
+    uint8_t digest[2][32];
+    uint32_t crc[2];
+    char *big = malloc(3 * EF_VEC_OUT_BUF + 17);
+    (void)state;
+    assert_non_null(big);
+    for (size_t i = 0; i < 3 * EF_VEC_OUT_BUF + 17; i++)
+        big[i] = (char)('a' + i % 23);
+    for (int t = 0; t < 2; t++) {
+        FILE *fp = open_memstream(&bytes[t], &len[t]);
+        ef_vec_out *o = malloc(sizeof *o);
+        assert_non_null(fp);
+        assert_non_null(o);
+        ef_vec_out_init(o, fp, EF_VEC_OUT_SHA | EF_VEC_OUT_CRC | (t ? EF_VEC_OUT_THREAD : 0u));
+        if (t)
+            assert_non_null(o->worker);
+        for (unsigned k = 0; k < 40000; k++) {
+            if (k % 1000 == 999) {
+                ef_vec_out_write(o, big, EF_VEC_OUT_BUF + k % 7);
+            } else if (k % 2) {
+                unsigned char *p = ef_vec_out_room(o, 64);
+                unsigned n = k % 61;
+                memset(p, '0' + (int)(k % 10), n);
+                p[n] = '\n';
+                ef_vec_out_advance(o, n + 1u);
+            } else {
+                ef_vec_out_u64(o, (uint64_t)k * 2654435761u);
+                ef_vec_out_puts(o, "\n");
+            }
+        }
+        assert_int_equal(ef_vec_out_finish(o, digest[t]), 0);
+        assert_null(o->worker);
+        crc[t] = o->crc;
+        assert_int_equal(fclose(fp), 0);
+        assert_true(o->bytes == len[t]);
+        free(o);
+    }
+    assert_true(len[0] > 10u * EF_VEC_OUT_BUF && len[0] == len[1]);
+    assert_memory_equal(bytes[0], bytes[1], len[0]);
+    assert_memory_equal(digest[0], digest[1], 32);
+    assert_true(crc[0] == crc[1] && crc[0] == ef_vec_crc32(0, bytes[0], len[0]));
+    char h1[65], h2[65];
+    sha_hex(bytes[1], len[1], h1);
+    ef_vec_sha256_hex(digest[1], h2);
+    assert_string_equal(h1, h2);
+    free(bytes[0]);
+    free(bytes[1]);
+    free(big);
 }
 
 /* ------------------------------------------------------------ seed */
@@ -521,6 +580,7 @@ int main(void)
         cmocka_unit_test(test_bin),
         cmocka_unit_test(test_manifest),
         cmocka_unit_test(test_out_hash),
+        cmocka_unit_test(test_out_thread),
         cmocka_unit_test(test_seed),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

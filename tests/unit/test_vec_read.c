@@ -280,38 +280,70 @@ static void test_manifest(void **state)
     assert_string_equal(m.files[0].name, "pix.expected.hex");
     assert_int_equal(m.files[0].iface, EF_IF_PIX);
     assert_true(m.files[0].has_count && m.files[0].count == 12);
-    assert_int_equal(m.files[0].line, 2);
+    assert_int_equal(m.files[2].index, 2);
     assert_int_equal(m.files[1].iface, -1);
     assert_string_equal(m.files[2].name, "caf\xc3\xa9\xf0\x9f\x98\x80.hex");
     ef_vec_manifest_free(&m);
 
+    /* line 0: a value refused after parsing, named by its key (FILE: KEY: ...);
+     * else a syntax error at LINE:COL. */
     static const struct {
         const char *text;
         uint64_t line, col;
         const char *msg;
     } bad[] = {
-        { "{ \"files\": [ { \"name\": \"../x.hex\" } ] }", 1, 24, "manifest names a file outside its folder" },
-        { "{ \"files\": [ { \"name\": \"a/b.hex\" } ] }", 1, 24, "manifest names a file outside its folder" },
-        { "{ \"files\": [ { \"name\": \"a\\u0000b\" } ] }", 1, 24, "manifest names a file outside its folder" },
-        { "{ \"files\": [ { \"format\": \"hex\" } ] }", 1, 14, "a file entry without a \"name\"" },
-        { "{ \"files\": [ 1 ] }", 1, 14, "a file entry (an object) expected" },
-        { "{ \"files\": [ { \"name\": \"a\", \"interface\": \"foo\" } ] }", 1, 42, "unknown interface 'foo'" },
-        { "{ \"width\": 0 }", 1, 12, "width must be an integer 1..16384" },
-        { "{ \"x\": \"\\ud800\" }", 1, 9, "unpaired surrogate" },
-        { "{ \"x\": 1 } x", 1, 12, "the end of the file expected" },
-        { "{ \"x\": 01 }", 1, 9, "',' or '}' expected" },
-        { "[]", 1, 1, "the manifest object '{' expected" },
-        { "{ \"\xc3\xa9\": \"\xff\" }", 1, 9, "valid UTF-8 expected" },
+        { "{ \"files\": [ { \"name\": \"../x.hex\" } ] }", 0, 0,
+          "files[0].name: manifest names a file outside its folder" },
+        { "{ \"files\": [ { \"name\": \"a/b.hex\" } ] }", 0, 0,
+          "files[0].name: manifest names a file outside its folder" },
+        { "{ \"files\": [ { \"name\": \"a\\u0000b\" } ] }", 0, 0,
+          "files[0].name: manifest names a file outside its folder: 'a\\x00b'" },
+        { "{ \"files\": [ { \"name\": \"ok\" }, { \"format\": \"hex\" } ] }", 0, 0,
+          "files[1]: a file entry without a \"name\"" },
+        { "{ \"files\": [ 1 ] }", 0, 0, "files[0]: a file entry (an object) expected" },
+        { "{ \"files\": { } }", 0, 0, "files: an array expected" },
+        { "{ \"files\": [ { \"name\": \"a\", \"interface\": \"foo\" } ] }", 0, 0,
+          "files[0].interface: unknown interface 'foo'" },
+        { "{ \"files\": [ { \"name\": \"a\", \"count\": -1 } ] }", 0, 0,
+          "files[0].count: a file's count must be an integer 0..2^64-1" },
+        { "{ \"files\": [ { \"name\": \"a\", \"count\": 1.5 } ] }", 0, 0,
+          "files[0].count: a file's count must be an integer 0..2^64-1" },
+        { "{ \"files\": [ { \"name\": \"a\", \"role\": 3 } ] }", 0, 0,
+          "files[0].role: a string or null expected" },
+        { "{ \"width\": 0 }", 0, 0, "width: must be an integer 1..16384" },
+        { "{ \"height\": \"1\" }", 0, 0, "height: must be an integer 1..16384" },
+        { "{ \"x\": 1 } x", 1, 12, "the end of the file expected, 'x' found" },
+        { "{ \"x\": 1,\n  }", 2, 3, "JSON: unexpected character, '}' found" },
+        { "{ \"x\": [1 2] }", 1, 11, "JSON: array value separator ',' expected, '2' found" },
+        { "{ \"x\": 1", 1, 9, "JSON: unexpected end of file (the manifest is cut short), end of file found" },
+        { "[]", 1, 1, "the manifest object '{' expected, '[' found" },
+        { "  ", 1, 3, "the manifest object '{' expected, end of file found" },
+        { "{ \"\xc3\xa9\": \"\xff\" }", 1, 9, "JSON: invalid utf-8 string, '\\xff' found" },
+        { "{ \"x\": /* c */ 1 }", 1, 8, "JSON: unexpected character, '/' found" },
     };
     for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
         ef_status st = manifest(bad[k].text, &m, &e);
-        if (st == EF_OK || e.line != bad[k].line || e.col != bad[k].col ||
-            strncmp(e.msg, bad[k].msg, strlen(bad[k].msg)) != 0)
+        int where_ok = bad[k].line ? e.at == EF_VEC_AT_LINE && e.line == bad[k].line && e.col == bad[k].col
+                                   : e.at == EF_VEC_AT_FILE;
+        if (st == EF_OK || !where_ok || strncmp(e.msg, bad[k].msg, strlen(bad[k].msg)) != 0)
             fail_msg("'%s': %d at %llu:%llu '%s', want %llu:%llu '%s'", bad[k].text, (int)st,
                      (unsigned long long)e.line, (unsigned long long)e.col, e.msg, (unsigned long long)bad[k].line,
                      (unsigned long long)bad[k].col, bad[k].msg);
         assert_int_equal(m.nfiles, 0);
     }
+    /* A NUL byte (json-c would end its input there) is refused at its place. */
+    static const char nul[] = "{ \"x\": \"a\0b\" }";
+    assert_int_equal(ef_vec_read_manifest("manifest.json", (const uint8_t *)nul, sizeof nul - 1, &m, &e), EF_ERR_SYNTAX);
+    assert_true(e.line == 1 && e.col == 10 && strncmp(e.msg, "JSON: a NUL byte", 16) == 0);
+    static const char nul_after[] = "{ }\n\0";
+    assert_int_equal(ef_vec_read_manifest("manifest.json", (const uint8_t *)nul_after, sizeof nul_after - 1, &m, &e),
+                     EF_ERR_SYNTAX);
+    assert_true(e.line == 2 && e.col == 1 && strncmp(e.msg, "the end of the file expected", 28) == 0);
+    /* Counts and sizes beyond 32 bits, up to 2^64 - 1, are read exactly. */
+    assert_int_equal(manifest("{ \"files\": [ { \"name\": \"a\", \"count\": 18446744073709551615 },"
+                              " { \"name\": \"b\", \"count\": 9223372036854775808 } ] }", &m, &e), EF_OK);
+    assert_true(m.files[0].count == UINT64_MAX && m.files[1].count == UINT64_C(9223372036854775808));
+    ef_vec_manifest_free(&m);
     char deep[200];
     memset(deep, '[', 100);
     snprintf(deep + 100, sizeof deep - 100, "%s", "");
