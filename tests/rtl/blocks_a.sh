@@ -22,7 +22,7 @@
 RTLA=$root/rtl_vectors/rtl
 A_DEC="$RTLA/ef_dec.v"
 A_SETUP="$RTLA/ef_setup.v $RTLA/ef_div.v"
-A_ETM="$RTLA/ef_etm.v"
+A_ETM="$RTLA/ef_etm.v $RTLA/ef_slb_ram.v"
 inc=$work/inc
 if ! "$EF" vectors --rtl-headers -o "$inc" >"$work/logs/rtl_headers.log" 2>&1 ||
    [ ! -s "$inc/ef_ifaces.vh" ] || [ ! -s "$inc/ef_ifaces_pkg.sv" ]; then
