@@ -73,6 +73,7 @@ typedef struct ef_cli_vectors_args {
     int force;
     int dump;                   /* --dump: the model's output named as a DUT's dumps */
     int filter, subpixel;       /* ef_filter, ef_subpixel: box, none (0, 0) by default */
+    int rtl_headers;            /* --rtl-headers: only ef_ifaces.vh and ef_ifaces_pkg.sv, no INPUT */
 } ef_cli_vectors_args;
 int ef_cli_vectors_parse(int argc, char **argv, ef_cli_vectors_args *a);
 
