@@ -21,7 +21,7 @@
 /* The prototypes Verilator generates (its __Dpi.h), here so that a
  * mismatch between this file and the package's imports fails to compile
  * in C too: ef_model_pkg.sv must say the same. */
-void *ef_dpi_create(int samples, int width_max, int height_max, int edges_max, int rule, int *status);
+void *ef_dpi_create(int samples, int width_max, int height_max, int edges_max, int rule, int ifaces, int *status);
 void ef_dpi_destroy(void *h);
 int ef_dpi_cmd(void *h, const svBitVecVal *word);
 int ef_dpi_pop(void *h, int iface, long long *cycle, svBitVecVal *payload);
@@ -37,7 +37,8 @@ long long ef_dpi_frame_cycles(void *h);
 long long ef_dpi_commands(void *h);
 int ef_dpi_field_is(int iface, const char *name, const svBitVecVal *ones);
 
-void *ef_dpi_create(int samples, int width_max, int height_max, int edges_max, int rule, int *status)
+/* ifaces: the interfaces to keep (bit i = interface i), 0 for all. */
+void *ef_dpi_create(int samples, int width_max, int height_max, int edges_max, int rule, int ifaces, int *status)
 {
     ef_mstream_params p;
     ef_mstream_params_default(&p);
@@ -46,6 +47,7 @@ void *ef_dpi_create(int samples, int width_max, int height_max, int edges_max, i
     p.height_max = height_max;
     p.edges_max = edges_max > 0 ? (uint32_t)edges_max : 0;
     p.rule = rule;
+    p.ifaces = ifaces == 0 ? EF_IF_ALL : (uint32_t)ifaces;
     ef_mstream *m = NULL;
     *status = ef_mstream_create(&m, &p);
     return m;

@@ -103,10 +103,13 @@ package ef_model_pkg;
     // ------------------------------------------------------------ DPI-C
     // A model.  samples 8/16/32; width_max x height_max: the largest canvas a
     // FRAME may set (the RTL's W_MAX, H_MAX); edges_max: most EDGE commands in
-    // a shape (E_MAX); rule: EF_MS_RULE_CMD or 0/1.  null and status < 0 on
-    // a bad parameter.
+    // a shape (E_MAX); rule: EF_MS_RULE_CMD or 0/1; ifaces: the interfaces
+    // whose transactions are kept, bit i = interface i (0: all; a bench keeps
+    // what it pops, the rest costs memory).  null and status < 0 on a bad
+    // parameter.
     import "DPI-C" function chandle ef_dpi_create(input int samples, input int width_max, input int height_max,
-                                                  input int edges_max, input int rule, output int status);
+                                                  input int edges_max, input int rule, input int ifaces,
+                                                  output int status);
     import "DPI-C" function void ef_dpi_destroy(input chandle h);
     // Feeds one command; EF_MS_OK or an error (< 0; sticky; ef_dpi_message
     // names the command by number).

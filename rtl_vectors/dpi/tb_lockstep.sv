@@ -192,13 +192,18 @@ module tb_lockstep #(
         return next_expected(EF_IF_PLOT, t, p, 1'b0) == EF_MS_END && fed == stim.size() && !plot_valid && idle;
     endfunction
     localparam int CHECKED[1] = '{EF_IF_SPAN};   // the interfaces this DUT shows
+    // What the model keeps: what the bench drives from it and what it checks.
+    localparam int KEEP = (1 << EF_IF_CMD) | (1 << EF_IF_PLOT) | (1 << EF_IF_SPAN);
     // ------------------------------------------------------------ end of DUT
 
     // ------------------------------------------------------------ stimulus
+    // The stamps are not used (the model times the commands), but a file
+    // whose stamps go backwards is not a command stream: refused.
     function automatic void read_stim(string name);
         int fd, line = 0, n;
         string s;
         bit [48+EF_CMD_BITS-1:0] word;
+        bit [47:0] last = '0;
         fd = $fopen(name, "r");
         if (fd == 0) begin
             $display("tb_lockstep: FAIL cannot open %s", name);
@@ -213,6 +218,12 @@ module tb_lockstep #(
                 $display("tb_lockstep: FAIL %s:%0d: not a hex word", name, line);
                 $fatal(1, "tb_lockstep: bad stimulus");
             end
+            if (stim.size() > 0 && word[48+EF_CMD_BITS-1:EF_CMD_BITS] <= last) begin
+                $display("tb_lockstep: FAIL %s:%0d: cycle stamp %0d does not follow the previous one, %0d",
+                         name, line, word[48+EF_CMD_BITS-1:EF_CMD_BITS], last);
+                $fatal(1, "tb_lockstep: bad stimulus");
+            end
+            last = word[48+EF_CMD_BITS-1:EF_CMD_BITS];
             stim.push_back(word[EF_CMD_BITS-1:0]);   // the payload; the model decides the timing
             stim_line.push_back(line);
         end
@@ -235,7 +246,7 @@ module tb_lockstep #(
             timeout = 64'd50_000_000;
         if (ef_check_layout() != 0)
             $fatal(1, "tb_lockstep: ef_model_pkg's structs differ from the model's interface table");
-        model = ef_dpi_create(samples, W_MAX, H_MAX, E_MAX, rule, st);
+        model = ef_dpi_create(samples, W_MAX, H_MAX, E_MAX, rule, KEEP, st);
         if (st != EF_MS_OK)
             $fatal(1, "tb_lockstep: ef_dpi_create: %s", ef_dpi_strerror(st));
         read_stim(stim_name);

@@ -19,8 +19,9 @@
 #      the simulation time, interface span, that span's cycle, and `len` as
 #      the one differing field (expected len = actual + 1); with +cov_lag=1
 #      (COV one cycle slower per span) it must stop at a span reported late
-#      by 1 cycle; and a command stream over the DUT's W_MAX is refused
-#      naming the file, line and the limit.
+#      by 1 cycle; a command stream over the DUT's W_MAX is refused naming
+#      the file, line and the limit, and one whose stamps go backwards naming
+#      the file and line.
 # The three Verilator builds run side by side at -O0 (the C++ compile is
 # most of this stage's time; the simulations take well under a second).
 #
@@ -125,10 +126,9 @@ wait
 # run NAME VECDIR [plusargs]: the bench on VECDIR/cmd.stim.hex; output in $work/NAME.sim
 run() {
     local bin=$work/vl_$1/obj/tb name=$2 dir=$3; shift 3
-    # (in a subshell: the simulation aborts on a mismatch, and the shell that
-    # waits for it would print "Aborted" on our output)
-    ( "$bin" +cmd="$dir/cmd.stim.hex" "$@" >"$work/$name.sim" 2>&1 ) 2>/dev/null
-    echo $? >"$work/$name.rc"
+    # (in a subshell with its stderr closed: the simulation aborts on a
+    # mismatch, and the shell that waits for it prints "Aborted")
+    ( "$bin" +cmd="$dir/cmd.stim.hex" "$@" >"$work/$name.sim" 2>&1; echo $? >"$work/$name.rc" ) 2>/dev/null
 }
 
 # pass_run NAME VECDIR: PASS, exit 0, as many spans checked as the file holds
@@ -170,6 +170,19 @@ if vl ns8; then
         ok "lockstep refuses a canvas over W_MAX: ${line#tb_lockstep: FAIL }"
     else
         cat "$work/wide.sim"; bad "lockstep wide: want the FRAME refused at cmd.stim.hex:5"
+    fi
+
+    # Stamps that go backwards (words 2 and 3 swapped: line 7 is earlier than line 6).
+    mkdir -p "$work/back"
+    awk 'NR == 6 { held = $0; next } NR == 7 { print; print held; next } { print }' \
+        "$work/t8/cmd.stim.hex" >"$work/back/cmd.stim.hex"
+    run ns8 back "$work/back"
+    line=$(grep -m1 '^tb_lockstep: FAIL' "$work/back.sim")
+    if [ "$(cat "$work/back.rc")" != 0 ] &&
+       printf '%s\n' "$line" | grep -Eq "back/cmd.stim.hex:7: cycle stamp [0-9]+ does not follow the previous one, [0-9]+$"; then
+        ok "lockstep refuses stamps that go backwards: ${line#tb_lockstep: FAIL }"
+    else
+        cat "$work/back.sim"; bad "lockstep back: want cmd.stim.hex:7 refused"
     fi
 fi
 if vl ns32; then
