@@ -557,17 +557,15 @@ int ef_mstream_expect(ef_mstream *m, const ef_txn *actual, int check_cycle)
     ef_mstream_format(&e, NULL, fe, sizeof fe);
     ef_mstream_format(actual, &e, fa, sizeof fa);
     where(&e, at, sizeof at);
-    if (!fields_ok)
-        set_msg(m, "%s: fields differ: expected %s; actual %s%s", at, fe, fa,
-                cycle_ok ? "" : "; and the cycle differs too (see below)");
+    if (!fields_ok && cycle_ok)
+        set_msg(m, "%s: fields differ: expected %s; actual %s", at, fe, fa);
+    else if (!fields_ok)
+        set_msg(m, "%s: fields differ: expected %s; actual %s; and the cycle differs too (expected %" PRIu64
+                ", actual %" PRIu64 ")", at, fe, fa, e.cycle, actual->cycle);
     else
         set_msg(m, "%s: cycle differs: expected %" PRIu64 ", actual %" PRIu64 " (%s by %" PRIu64 "): %s", at,
                 e.cycle, actual->cycle, actual->cycle > e.cycle ? "late" : "early",
                 actual->cycle > e.cycle ? actual->cycle - e.cycle : e.cycle - actual->cycle, fe);
-    if (!fields_ok && !cycle_ok) {
-        const size_t n = strlen(m->msg) - strlen("see below)");
-        snprintf(m->msg + n, sizeof m->msg - n, "expected %" PRIu64 ", actual %" PRIu64 ")", e.cycle, actual->cycle);
-    }
     return EF_MS_MISMATCH;
 }
 

@@ -319,7 +319,7 @@ static void test_expect(void **state)
         assert_int_equal(ef_mstream_cmd(m, w), EF_MS_OK);
     }
     const ef_vec_seq *q = &s->want[EF_IF_SPAN].seq[EF_IF_SPAN];
-    assert_true(q->n >= 4);
+    assert_true(q->n >= 5);
     ef_txn t;
     ef_vec_dump_txn(&s->want[EF_IF_SPAN], EF_IF_SPAN, 0, &t);
     assert_int_equal(ef_mstream_expect(m, &t, 1), EF_MS_OK);
@@ -344,8 +344,18 @@ static void test_expect(void **state)
     t.cycle += 2;                                     /* --transactions style: the cycle is not compared */
     assert_int_equal(ef_mstream_expect(m, &t, 0), EF_MS_OK);
 
-    assert_int_equal(ef_mstream_expect_done(m, EF_IF_SPAN), q->n > 4 ? EF_MS_MISMATCH : EF_MS_OK);
-    if (q->n > 4 && !strstr(ef_mstream_message(m), "missing transaction: expected y="))
+    ef_vec_dump_txn(&s->want[EF_IF_SPAN], EF_IF_SPAN, 4, &t);
+    const uint64_t c4 = t.cycle;
+    t.cycle -= 1;                                     /* one early, and the mask differs */
+    ef_txn_set_field(&t, 3, ef_txn_field(&t, 3) ^ 1u);
+    assert_int_equal(ef_mstream_expect(m, &t, 1), EF_MS_MISMATCH);
+    snprintf(want, sizeof want, "*; and the cycle differs too (expected %" PRIu64 ", actual %" PRIu64 ")", c4,
+             c4 - 1);
+    if (!strstr(ef_mstream_message(m), want) || !strstr(ef_mstream_message(m), "mask=0x"))
+        fail_msg("message '%s' (want '%s')", ef_mstream_message(m), want);
+
+    assert_int_equal(ef_mstream_expect_done(m, EF_IF_SPAN), q->n > 5 ? EF_MS_MISMATCH : EF_MS_OK);
+    if (q->n > 5 && !strstr(ef_mstream_message(m), "missing transaction: expected y="))
         fail_msg("message '%s'", ef_mstream_message(m));
     while (ef_mstream_pop(m, EF_IF_SPAN, &t) == EF_MS_OK)
         ;
