@@ -18,6 +18,8 @@ if [ "${1:-}" = test ] || [ "${1:-}" = portability ]; then
     pkgs+=(iverilog verilator gtkwave libxml2-utils)
     # the regression flow's shards run under GNU parallel in make test (docs/regress.md)
     pkgs+=(parallel)
+    # test-dpi runs the DPI-C lockstep bench once under valgrind's memcheck (docs/dpi.md)
+    pkgs+=(valgrind)
     # `make portability` builds static aarch64 and s390x (big-endian) programs
     # with clang --target and runs them under qemu-user.  gcc-aarch64-linux-gnu
     # cannot be installed beside gcc-multilib in Debian 12; these can.  Best

@@ -29,3 +29,9 @@ $(DPI_TEST): tests/dpi/test_model_stream.c $(DPI_OBJ) $(RTLV_OBJ) $(LIB_A)
 # tests/dpi/run.sh runs the C part alone, saying that the bench is skipped.
 test-dpi: cli $(DPI_TEST) $(if $(shell command -v verilator 2>/dev/null),$(DPI_LIB))
 	@bash tests/dpi/run.sh $(BUILD)
+
+# Not in `make test`: the lockstep bench over all 261 gen level-1 cases x NS 8/16/32
+# x 3 rule settings (tests/dpi/sweep.sh; numbers in docs/dpi.md).
+.PHONY: dpi-sweep
+dpi-sweep: cli $(DPI_LIB)
+	@bash tests/dpi/sweep.sh $(BUILD)

@@ -64,7 +64,9 @@ module tb_lockstep #(
     longint n_checked[EF_IF_COUNT];
 
     // ------------------------------------------------------------ the model
+    bit done = 1'b0;
     function automatic void die(string what);
+        done = 1'b1;
         $display("tb_lockstep: FAIL at time %t, cycle %0d: %s", $time, cyc, what);
         $fatal(1, "tb_lockstep: stopped at the first mismatch");
     endfunction
@@ -253,8 +255,13 @@ module tb_lockstep #(
         foreach (n_checked[i]) n_checked[i] = 0;
     end
 
+    // done: the run has ended (PASS or the first mismatch).  $finish ends the
+    // simulation after the current time step, so nothing may run after it
+    // in this block (the model is destroyed only in the final block).
     always @(posedge clk) begin
-        if (!running) begin
+        if (done) begin
+            // nothing: the simulation is ending
+        end else if (!running) begin
             if (!rst && init_done) begin
                 running <= 1'b1;
                 cyc = 0;
@@ -262,19 +269,26 @@ module tb_lockstep #(
             end
         end else begin
             observe();
-            if (finished()) begin
+            if (!done && finished()) begin
                 foreach (CHECKED[k])
-                    if (ef_dpi_expect_done(model, CHECKED[k]) != EF_MS_OK)
+                    if (!done && ef_dpi_expect_done(model, CHECKED[k]) != EF_MS_OK)
                         die(ef_dpi_message(model));
-                $display("tb_lockstep: PASS NS=%0d: %0d commands, %0d spans checked in lockstep, frame of %0d cycles (model), %0d simulated",
-                         NS, fed, n_checked[EF_IF_SPAN], ef_dpi_frame_cycles(model), cyc + 1);
-                ef_dpi_destroy(model);
-                $finish;
+                if (!done) begin
+                    $display("tb_lockstep: PASS NS=%0d: %0d commands, %0d spans checked in lockstep, frame of %0d cycles (model), %0d simulated",
+                             NS, fed, n_checked[EF_IF_SPAN], ef_dpi_frame_cycles(model), cyc + 1);
+                    done = 1'b1;
+                    $finish;
+                end
+            end else if (!done) begin
+                if (cyc > timeout)
+                    die($sformatf("timeout: %0d commands of %0d fed", fed, stim.size()));
+                cyc = cyc + 1;
+                present(cyc);
             end
-            if (cyc > timeout)
-                die($sformatf("timeout: %0d commands of %0d fed", fed, stim.size()));
-            cyc = cyc + 1;
-            present(cyc);
         end
     end
+
+    final
+        if (model != null)
+            ef_dpi_destroy(model);
 endmodule

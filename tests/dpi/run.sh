@@ -13,7 +13,8 @@
 #      (each shape's rule, and +rule=evenodd) and on the gen case, with as
 #      many spans checked as span.expected.hex holds (NS = 8 and 32); the
 #      package's structs are checked against the model's interface table at
-#      start-up;
+#      start-up; the gen case once more under valgrind's memcheck (when
+#      installed) with no error;
 #   3. the loop can fail: built with -DEF_TB_FAULT_SPAN_SHORT (every span the
 #      DUT produces one pixel short) it must stop at the first span, naming
 #      the simulation time, interface span, that span's cycle, and `len` as
@@ -149,6 +150,20 @@ if vl ns8; then
     run ns8 tiger8 "$work/t8";              pass_run tiger8 "$work/t8"
     run ns8 tiger8e "$work/t8" +rule=evenodd; pass_run tiger8e "$work/t8e"
     run ns8 gen8 "$work/g8";                pass_run gen8 "$work/g8"
+
+    # Under valgrind (when installed): no invalid access between the bench and
+    # the C side (a bench that used the model after destroying it crashed
+    # only now and then; memcheck sees it every time).
+    if command -v valgrind >/dev/null 2>&1; then
+        if ( valgrind -q --error-exitcode=99 "$work/vl_ns8/obj/tb" +cmd="$work/g8/cmd.stim.hex" \
+                 >"$work/vg.sim" 2>&1 ) 2>/dev/null && grep -q '^tb_lockstep: PASS' "$work/vg.sim"; then
+            ok "lockstep gen8 under valgrind memcheck: no errors"
+        else
+            cat "$work/vg.sim"; bad "lockstep gen8 under valgrind memcheck"
+        fi
+    else
+        echo "test-dpi: valgrind not installed: the memcheck run is SKIPPED"
+    fi
 
     # COV one cycle slower per span (+cov_lag=1): the DUT's spans come late.
     run ns8 slow "$work/t8" +cov_lag=1
