@@ -1,5 +1,6 @@
 // tb_lockstep: an RTL and the C reference model in lockstep through DPI-C
-// (ef_model_pkg.sv; docs/dpi.md).  The example to copy.
+// (ef_model_pkg.sv, with the generated ef_ifaces_pkg.sv; docs/dpi.md).  The
+// example to copy.
 //
 // The model is the scoreboard.  The bench reads a command stream (the cmd
 // payloads of a cmd.stim.hex from `edgeflag vectors`; any source of commands
@@ -41,6 +42,7 @@ module tb_lockstep #(
     parameter int H_MAX = 1024,
     parameter int E_MAX = 1 << 22
 );
+    import ef_ifaces_pkg::*;   // generated: edgeflag vectors --rtl-headers
     import ef_model_pkg::*;
 
     bit clk = 1'b0;
@@ -54,7 +56,7 @@ module tb_lockstep #(
         end
 
     chandle model;
-    bit [EF_CMD_BITS-1:0] stim[$];    // the command stream, in order
+    bit [CMD_W-1:0] stim[$];    // the command stream, in order
     string stim_name;
     int    stim_line[$];              // its line numbers, for messages
     int    fed = 0;                   // commands fed to the model so far
@@ -125,7 +127,7 @@ module tb_lockstep #(
     // ------------------------------------------------------------ DUT
     // ef_slb_fill: plot in, span out, configuration registers.
     bit        plot_valid = 1'b0;
-    ef_plot_t  plot = '0;
+    plot_t  plot = '0;
     bit        span_ready = 1'b0;
     bit [14:0] cfg_width = 15'd1;
     bit        cfg_rule = 1'b0;
@@ -160,7 +162,7 @@ module tb_lockstep #(
         if (plot_valid && !plot_ready)
             die($sformatf("plot: the DUT is not ready in the plot's stamped cycle (reference schedule): %p", plot));
         if (span_valid && span_ready) begin
-            check(EF_IF_SPAN, cyc, ef_payload_t'(ef_span_t'{y: span_y, x: span_x, len: span_len, mask: span_mask}));
+            check(IF_SPAN, cyc, ef_payload_t'(span_t'{y: span_y, x: span_x, len: span_len, mask: span_mask}));
             cov_free = cyc + longint'(span_len) + cov_lag;
         end
     endfunction
@@ -170,18 +172,18 @@ module tb_lockstep #(
     function automatic void present(longint c);
         longint t;
         ef_payload_t p;
-        ef_cmd_t cmd;
-        while (next_expected(EF_IF_CMD, t, p, 1'b0) == EF_MS_OK && t <= c) begin
-            void'(ef_dpi_pop(model, EF_IF_CMD, t, p));
-            cmd = ef_cmd_t'(p[EF_CMD_BITS-1:0]);
-            if (cmd.op == EF_OP_FRAME) cfg_width <= cmd.a[14:0];
-            if (cmd.op == EF_OP_SHAPE) cfg_rule <= cmd.a[0];
+        cmd_t cmd;
+        while (next_expected(IF_CMD, t, p, 1'b0) == EF_MS_OK && t <= c) begin
+            void'(ef_dpi_pop(model, IF_CMD, t, p));
+            cmd = cmd_t'(p[CMD_W-1:0]);
+            if (cmd.op == OP_FRAME) cfg_width <= cmd.a[14:0];
+            if (cmd.op == OP_SHAPE) cfg_rule <= cmd.a[0];
         end
         plot_valid <= 1'b0;
-        if (next_expected(EF_IF_PLOT, t, p, 1'b0) == EF_MS_OK && t == c) begin
-            void'(ef_dpi_pop(model, EF_IF_PLOT, t, p));
+        if (next_expected(IF_PLOT, t, p, 1'b0) == EF_MS_OK && t == c) begin
+            void'(ef_dpi_pop(model, IF_PLOT, t, p));
             plot_valid <= 1'b1;
-            plot <= ef_plot_t'(p[EF_PLOT_BITS-1:0]);
+            plot <= plot_t'(p[PLOT_W-1:0]);
         end
         span_ready <= c >= cov_free;
     endfunction
@@ -191,11 +193,11 @@ module tb_lockstep #(
     function automatic bit finished();
         longint t;
         ef_payload_t p;
-        return next_expected(EF_IF_PLOT, t, p, 1'b0) == EF_MS_END && fed == stim.size() && !plot_valid && idle;
+        return next_expected(IF_PLOT, t, p, 1'b0) == EF_MS_END && fed == stim.size() && !plot_valid && idle;
     endfunction
-    localparam int CHECKED[1] = '{EF_IF_SPAN};   // the interfaces this DUT shows
+    localparam int CHECKED[1] = '{IF_SPAN};   // the interfaces this DUT shows
     // What the model keeps: what the bench drives from it and what it checks.
-    localparam int KEEP = (1 << EF_IF_CMD) | (1 << EF_IF_PLOT) | (1 << EF_IF_SPAN);
+    localparam int KEEP = (1 << IF_CMD) | (1 << IF_PLOT) | (1 << IF_SPAN);
     // ------------------------------------------------------------ end of DUT
 
     // ------------------------------------------------------------ stimulus
@@ -204,7 +206,7 @@ module tb_lockstep #(
     function automatic void read_stim(string name);
         int fd, line = 0, n;
         string s;
-        bit [48+EF_CMD_BITS-1:0] word;
+        bit [48+CMD_W-1:0] word;
         bit [47:0] last = '0;
         fd = $fopen(name, "r");
         if (fd == 0) begin
@@ -220,13 +222,13 @@ module tb_lockstep #(
                 $display("tb_lockstep: FAIL %s:%0d: not a hex word", name, line);
                 $fatal(1, "tb_lockstep: bad stimulus");
             end
-            if (stim.size() > 0 && word[48+EF_CMD_BITS-1:EF_CMD_BITS] <= last) begin
+            if (stim.size() > 0 && word[48+CMD_W-1:CMD_W] <= last) begin
                 $display("tb_lockstep: FAIL %s:%0d: cycle stamp %0d does not follow the previous one, %0d",
-                         name, line, word[48+EF_CMD_BITS-1:EF_CMD_BITS], last);
+                         name, line, word[48+CMD_W-1:CMD_W], last);
                 $fatal(1, "tb_lockstep: bad stimulus");
             end
-            last = word[48+EF_CMD_BITS-1:EF_CMD_BITS];
-            stim.push_back(word[EF_CMD_BITS-1:0]);   // the payload; the model decides the timing
+            last = word[48+CMD_W-1:CMD_W];
+            stim.push_back(word[CMD_W-1:0]);   // the payload; the model decides the timing
             stim_line.push_back(line);
         end
         $fclose(fd);
@@ -247,7 +249,7 @@ module tb_lockstep #(
         if (!$value$plusargs("timeout=%d", timeout))
             timeout = 64'd50_000_000;
         if (ef_check_layout() != 0)
-            $fatal(1, "tb_lockstep: ef_model_pkg's structs differ from the model's interface table");
+            $fatal(1, "tb_lockstep: ef_ifaces_pkg (generated by another edgeflag?) differs from the linked model's interface table");
         model = ef_dpi_create(samples, W_MAX, H_MAX, E_MAX, rule, KEEP, st);
         if (st != EF_MS_OK)
             $fatal(1, "tb_lockstep: ef_dpi_create: %s", ef_dpi_strerror(st));
@@ -275,7 +277,7 @@ module tb_lockstep #(
                         die(ef_dpi_message(model));
                 if (!done) begin
                     $display("tb_lockstep: PASS NS=%0d: %0d commands, %0d spans checked in lockstep, frame of %0d cycles (model), %0d simulated",
-                             NS, fed, n_checked[EF_IF_SPAN], ef_dpi_frame_cycles(model), cyc + 1);
+                             NS, fed, n_checked[IF_SPAN], ef_dpi_frame_cycles(model), cyc + 1);
                     done = 1'b1;
                     $finish;
                 end

@@ -95,6 +95,8 @@ if ! command -v verilator >/dev/null 2>&1; then
     [ "$fail" -eq 0 ]; exit
 fi
 echo "test-dpi: $(verilator --version)"
+# The interface package the bench and ef_model_pkg import (docs/vectors.md section 8).
+"$EF" vectors --rtl-headers -o "$work/hdr" >"$work/hdr.log" 2>&1 || { cat "$work/hdr.log"; exit 1; }
 [ -e "$build/libef_dpi.a" ] || { echo "test-dpi: $build/libef_dpi.a not built (make test-dpi builds it)"; exit 1; }
 
 # vl_build NAME NS W_MAX H_MAX [-DFAULT]: builds tb_lockstep into
@@ -105,7 +107,7 @@ vl_build() {
     mkdir -p "$d"
     if ! verilator --binary --timing --timescale 1ns/1ns -j 1 --Mdir "$d/obj" --top-module tb_lockstep \
             -MAKEFLAGS "OPT_FAST=-O0 OPT_SLOW=-O0 OPT_GLOBAL=-O0" \
-            -GNS="$ns" -GW_MAX="$w" -GH_MAX="$h" "$@" "$DPI/ef_model_pkg.sv" "$DPI/tb_lockstep.sv" $RTL \
+            -GNS="$ns" -GW_MAX="$w" -GH_MAX="$h" "$@" "$work/hdr/ef_ifaces_pkg.sv" "$DPI/ef_model_pkg.sv" "$DPI/tb_lockstep.sv" $RTL \
             "$build/libef_dpi.a" -o tb >"$d/build.log" 2>&1; then
         echo "verilator build failed" >"$d/status"; return
     fi

@@ -28,10 +28,11 @@ tmpbase=${TMPDIR:-/tmp}
 work=$(mktemp -d "$tmpbase/edgeflag-dpi-sweep.XXXXXX") || exit 1
 if [ -n "${EF_DPI_KEEP:-}" ]; then echo "dpi-sweep: keeping $work"; else trap 'rm -rf "$work"' EXIT; fi
 t0=$(date +%s)
+"$EF" vectors --rtl-headers -o "$work/hdr" >"$work/hdr.log" 2>&1 || { cat "$work/hdr.log"; exit 1; }
 
 for ns in 8 16 32; do
     verilator --binary --timing --timescale 1ns/1ns -j 2 --Mdir "$work/vl$ns" --top-module tb_lockstep \
-        -GNS="$ns" -GW_MAX=16384 -GH_MAX=16384 "$DPI/ef_model_pkg.sv" "$DPI/tb_lockstep.sv" $RTL \
+        -GNS="$ns" -GW_MAX=16384 -GH_MAX=16384 "$work/hdr/ef_ifaces_pkg.sv" "$DPI/ef_model_pkg.sv" "$DPI/tb_lockstep.sv" $RTL \
         "$build/libef_dpi.a" -o tb >"$work/build$ns.log" 2>&1 ||
         { tail -n 30 "$work/build$ns.log"; echo "dpi-sweep: verilator build NS=$ns failed"; exit 1; }
 done
