@@ -91,8 +91,8 @@ module tb_lockstep #(
     function automatic int next_expected(int iface, output longint c, output ef_payload_t p, input bit pop);
         int st;
         forever begin
-            // A DPI call never goes in a ?: or after && / ||: Verilator 5.006
-            // evaluates both sides (it takes DPI imports for pure functions).
+            // A call with side effects never goes in a ?: or after && / ||:
+            // both sides of such an expression ran here under Verilator 5.006.
             if (pop)
                 st = ef_dpi_pop(model, iface, c, p);
             else
@@ -261,6 +261,8 @@ module tb_lockstep #(
     // simulation after the current time step, so nothing may run after it
     // in this block (the model is destroyed only in the final block).
     always @(posedge clk) begin
+        bit fin;
+        int st;
         if (done) begin
             // nothing: the simulation is ending
         end else if (!running) begin
@@ -271,10 +273,15 @@ module tb_lockstep #(
             end
         end else begin
             observe();
-            if (!done && finished()) begin
-                foreach (CHECKED[k])
-                    if (!done && ef_dpi_expect_done(model, CHECKED[k]) != EF_MS_OK)
+            fin = 1'b0;
+            if (!done)
+                fin = finished();    // (its own statement: it feeds the model)
+            if (fin) begin
+                foreach (CHECKED[k]) begin
+                    st = ef_dpi_expect_done(model, CHECKED[k]);
+                    if (st != EF_MS_OK && !done)
                         die(ef_dpi_message(model));
+                end
                 if (!done) begin
                     $display("tb_lockstep: PASS NS=%0d: %0d commands, %0d spans checked in lockstep, frame of %0d cycles (model), %0d simulated",
                              NS, fed, n_checked[IF_SPAN], ef_dpi_frame_cycles(model), cyc + 1);
