@@ -57,6 +57,7 @@ $(BUILD)/%.o: %.c
 include fixed/module.mk
 include model/module.mk
 include rtl_vectors/module.mk
+include rtl_vectors/dpi/module.mk
 include cli/module.mk
 include host/module.mk
 include tests/module.mk

@@ -25,6 +25,8 @@ if [ "${1:-}" = test ] || [ "${1:-}" = portability ]; then
     pkgs+=(libgpiod-dev libumockdev-dev umockdev meson ninja-build)
     # tests/host/pyboard.py: the socket transport's board written from docs/board.md (test-host-socket)
     pkgs+=(python3)
+    # test-dpi runs the DPI-C lockstep bench once under valgrind's memcheck (docs/dpi.md)
+    pkgs+=(valgrind)
     # `make portability` builds static aarch64 and s390x (big-endian) programs
     # with clang --target and runs them under qemu-user.  gcc-aarch64-linux-gnu
     # cannot be installed beside gcc-multilib in Debian 12; these can.  Best

@@ -1,0 +1,233 @@
+#!/usr/bin/env bash
+# tests/dpi/run.sh - `make test-dpi`: the reference model as a command stream
+# (rtl_vectors/dpi/ef_model_stream.h) and its DPI-C lockstep bench (docs/dpi.md).
+#
+#   1. the stream against the files `edgeflag vectors` wrote for the same
+#      scenes (tests/dpi/test_model_stream.c, cmocka): the tiger at 160x120
+#      (8 samples, each shape's rule; 16 samples with the rule override
+#      against a --rule evenodd run) and an `edgeflag gen` random case of
+#      several shapes at 32 samples;
+#   2. Verilator (--binary --timing) builds rtl_vectors/dpi/tb_lockstep.sv:
+#      ef_slb_fill fed the model's plots, its spans checked by the model
+#      through DPI-C, in lockstep, cycle for cycle; it must PASS on the tiger
+#      (each shape's rule, and +rule=evenodd) and on the gen case, with as
+#      many spans checked as span.expected.hex holds (NS = 8 and 32); the
+#      package's structs are checked against the model's interface table at
+#      start-up; the gen case once more under valgrind's memcheck (when
+#      installed) with no error;
+#   3. the loop can fail: built with -DEF_TB_FAULT_SPAN_SHORT (every span the
+#      DUT produces one pixel short) it must stop at the first span, naming
+#      the simulation time, interface span, that span's cycle, and `len` as
+#      the one differing field (expected len = actual + 1); with +cov_lag=1
+#      (COV one cycle slower per span) it must stop at a span reported late
+#      by 1 cycle; a command stream over the DUT's W_MAX is refused naming
+#      the file, line and the limit, and one whose stamps go backwards naming
+#      the file and line.
+# The three Verilator builds run side by side at -O0 (the C++ compile is
+# most of this stage's time; the simulations take well under a second).
+#
+# usage: bash tests/dpi/run.sh BUILD_DIR   (EF_DPI_KEEP=1 keeps the work dir)
+# Skips part 2 and 3, saying so, without verilator.  Ends with "N passed,
+# M failed"; exit 0 only if nothing failed.
+set -u
+export LC_ALL=C
+ulimit -c 0                       # $fatal aborts the simulation: no core files
+
+build=${1:?usage: tests/dpi/run.sh BUILD_DIR}
+root=$(cd "$(dirname "$0")/../.." && pwd)
+case $build in /*) ;; *) build=$PWD/$build ;; esac
+EF=$build/edgeflag
+DPI=$root/rtl_vectors/dpi
+RTL="$root/rtl_vectors/rtl/ef_slb_fill.v $root/rtl_vectors/rtl/ef_slb_ram.v"
+for f in "$EF" "$build/tests/test_model_stream"; do
+    [ -e "$f" ] || { echo "test-dpi: $f not built (make test-dpi builds it)"; exit 1; }
+done
+
+tmpbase=${TMPDIR:-/tmp}
+[ -z "${TMPDIR:-}" ] && [ -d /dev/shm ] && [ -w /dev/shm ] && tmpbase=/dev/shm
+work=$(mktemp -d "$tmpbase/edgeflag-dpi.XXXXXX") || exit 1
+if [ -n "${EF_DPI_KEEP:-}" ]; then echo "test-dpi: keeping $work"; else trap 'rm -rf "$work"' EXIT; fi
+
+pass=0 fail=0
+ok()  { pass=$((pass + 1)); echo "PASS $*"; }
+bad() { fail=$((fail + 1)); echo "FAIL $*"; }
+t0=$(date +%s)
+
+# --------------------------------------------------------------- vectors
+tiger=$root/tests/data/svg/tiger.svg
+vec() {   # vec NAME INPUT OPTIONS...: hex files only
+    local name=$1 in=$2; shift 2
+    "$EF" vectors "$in" -o "$work/$name" --formats hex "$@" >"$work/$name.log" 2>&1 ||
+        { cat "$work/$name.log"; echo "test-dpi: edgeflag vectors $name failed"; exit 1; }
+}
+vec t8 "$tiger" --size 160x120 --samples 8
+vec t16 "$tiger" --size 160x120 --samples 16
+vec t16e "$tiger" --size 160x120 --samples 16 --rule evenodd
+vec t8e "$tiger" --size 160x120 --samples 8 --rule evenodd
+"$EF" gen -o "$work/gen" -n 200 >"$work/gen.log" 2>&1 || { cat "$work/gen.log"; exit 1; }
+# The first random case that fits the benches' 160x120 and mixes both rules
+# over several shapes (the rule and the colour change from shape to shape).
+g=
+for f in $(awk -F'\t' '$3 == "random" { print $2 }' "$work/gen/index.tsv"); do
+    if awk '$1 == "scene" && ($2 > 160 || $3 > 120) { big = 1 } $1 == "shape" { r[$2]++ }
+            END { exit !(!big && r["nonzero"] && r["evenodd"]) }' "$work/gen/$f"; then
+        g=$f; break
+    fi
+done
+[ -n "$g" ] || { echo "test-dpi: no random gen case of both rules within 160x120"; exit 1; }
+vec g32 "$work/gen/$g" --samples 32
+vec g8 "$work/gen/$g" --samples 8
+count() { sed -n 's|^// count \([0-9]*\).*|\1|p' "$1" | head -n 1; }
+
+# --------------------------------------------------------------- 1. cmocka
+if "$build/tests/test_model_stream" "$work/t8,$work/t8,8,scene" "$work/t16,$work/t16e,16,evenodd" \
+        "$work/g32,$work/g32,32,scene" >"$work/cmocka.log" 2>&1; then
+    ok "model stream: $(grep -c '^model stream:' "$work/cmocka.log") vector sets equal, transaction for transaction" \
+       "($(grep -o '[0-9]* test(s)' "$work/cmocka.log" | tail -n 1) of tests/dpi/test_model_stream.c; gen case $g)"
+else
+    cat "$work/cmocka.log"; bad "model stream (tests/dpi/test_model_stream.c)"
+fi
+
+# --------------------------------------------------------------- 2. Verilator
+if ! command -v verilator >/dev/null 2>&1; then
+    echo "test-dpi: verilator not installed: the lockstep bench is SKIPPED ('make deps-test' installs it)"
+    echo "$pass passed, $fail failed"
+    [ "$fail" -eq 0 ]; exit
+fi
+echo "test-dpi: $(verilator --version)"
+# The interface package the bench and ef_model_pkg import (docs/vectors.md section 8).
+"$EF" vectors --rtl-headers -o "$work/hdr" >"$work/hdr.log" 2>&1 || { cat "$work/hdr.log"; exit 1; }
+[ -e "$build/libef_dpi.a" ] || { echo "test-dpi: $build/libef_dpi.a not built (make test-dpi builds it)"; exit 1; }
+
+# vl_build NAME NS W_MAX H_MAX [-DFAULT]: builds tb_lockstep into
+# $work/vl_NAME/obj/tb; "ok" or the reason in $work/vl_NAME/status.
+vl_build() {
+    local name=$1 ns=$2 w=$3 h=$4; shift 4
+    local d=$work/vl_$name s=$(date +%s)
+    mkdir -p "$d"
+    if ! verilator --binary --timing --timescale 1ns/1ns -j 1 --Mdir "$d/obj" --top-module tb_lockstep \
+            -MAKEFLAGS "OPT_FAST=-O0 OPT_SLOW=-O0 OPT_GLOBAL=-O0" \
+            -GNS="$ns" -GW_MAX="$w" -GH_MAX="$h" "$@" "$work/hdr/ef_ifaces_pkg.sv" "$DPI/ef_model_pkg.sv" "$DPI/tb_lockstep.sv" $RTL \
+            "$build/libef_dpi.a" -o tb >"$d/build.log" 2>&1; then
+        echo "verilator build failed" >"$d/status"; return
+    fi
+    # Warnings do not stop the build; the bench is meant to have none.
+    if grep -q '^%Warning' "$d/build.log"; then echo "verilator warned" >"$d/status"; return; fi
+    echo "ok $(( $(date +%s) - s ))" >"$d/status"
+}
+# vl NAME ...: whether the build went well (its log when not)
+vl() {
+    local d=$work/vl_$1 st
+    st=$(cat "$d/status" 2>/dev/null)
+    if [ "${st%% *}" = ok ]; then
+        echo "test-dpi: built $1 in ${st#ok } s"; return 0
+    fi
+    tail -n 30 "$d/build.log"; bad "verilator build $1: ${st:-no status}"; return 1
+}
+vl_build ns8 8 160 120 & vl_build ns32 32 160 120 & vl_build short 8 160 120 -DEF_TB_FAULT_SPAN_SHORT &
+wait
+
+# run NAME VECDIR [plusargs]: the bench on VECDIR/cmd.stim.hex; output in $work/NAME.sim
+run() {
+    local bin=$work/vl_$1/obj/tb name=$2 dir=$3; shift 3
+    # (in a subshell with its stderr closed: the simulation aborts on a
+    # mismatch, and the shell that waits for it prints "Aborted")
+    ( "$bin" +cmd="$dir/cmd.stim.hex" "$@" >"$work/$name.sim" 2>&1; echo $? >"$work/$name.rc" ) 2>/dev/null
+}
+
+# pass_run NAME VECDIR: PASS, exit 0, as many spans checked as the file holds
+pass_run() {
+    local name=$1 dir=$2 n line
+    n=$(count "$dir/span.expected.hex")
+    line=$(grep '^tb_lockstep: ' "$work/$name.sim" | head -n 1)
+    if [ "$(cat "$work/$name.rc")" = 0 ] && [ "${line#tb_lockstep: PASS}" != "$line" ] &&
+       printf '%s\n' "$line" | grep -q ", $n spans checked in lockstep"; then
+        ok "lockstep $name: ${line#tb_lockstep: PASS }"
+    else
+        cat "$work/$name.sim"; bad "lockstep $name: want PASS with $n spans checked (exit $(cat "$work/$name.rc"))"
+    fi
+}
+
+if vl ns8; then
+    run ns8 tiger8 "$work/t8";              pass_run tiger8 "$work/t8"
+    run ns8 tiger8e "$work/t8" +rule=evenodd; pass_run tiger8e "$work/t8e"
+    run ns8 gen8 "$work/g8";                pass_run gen8 "$work/g8"
+
+    # Under valgrind (when installed): no invalid access between the bench and
+    # the C side (a bench that used the model after destroying it crashed
+    # only now and then; memcheck sees it every time).
+    if command -v valgrind >/dev/null 2>&1; then
+        if ( valgrind -q --error-exitcode=99 "$work/vl_ns8/obj/tb" +cmd="$work/g8/cmd.stim.hex" \
+                 >"$work/vg.sim" 2>&1 ) 2>/dev/null && grep -q '^tb_lockstep: PASS' "$work/vg.sim"; then
+            ok "lockstep gen8 under valgrind memcheck: no errors"
+        else
+            cat "$work/vg.sim"; bad "lockstep gen8 under valgrind memcheck"
+        fi
+    else
+        echo "test-dpi: valgrind not installed: the memcheck run is SKIPPED"
+    fi
+
+    # COV one cycle slower per span (+cov_lag=1): the DUT's spans come late.
+    run ns8 slow "$work/t8" +cov_lag=1
+    line=$(grep -m1 '^tb_lockstep: FAIL' "$work/slow.sim")
+    if [ "$(cat "$work/slow.rc")" != 0 ] &&
+       printf '%s\n' "$line" | grep -Eq "^tb_lockstep: FAIL at time [0-9]+ ns, cycle ([0-9]+): span: cycle [0-9]+, y [0-9]+, x [0-9]+: cycle differs: expected ([0-9]+), actual [0-9]+ \(late by 1\): y=[0-9]+ x=[0-9]+ len=[0-9]+ mask=0x[0-9a-f]{8}$"; then
+        ok "COV one cycle slower caught: ${line#tb_lockstep: FAIL }"
+    else
+        cat "$work/slow.sim"; bad "cov_lag=1: want a span reported late by 1, exit != 0"
+    fi
+
+    # A stream over W_MAX: the FRAME of a 200-wide canvas into a W_MAX=160 bench.
+    mkdir -p "$work/wide"
+    awk '!/^\/\// && !done { printf "%012x%s\n", 0, "1" sprintf("%06x", 200) substr($0, 20); done = 1; next } { print }' \
+        "$work/t8/cmd.stim.hex" >"$work/wide/cmd.stim.hex"
+    run ns8 wide "$work/wide"
+    line=$(grep -m1 '^tb_lockstep: FAIL' "$work/wide.sim")
+    if [ "$(cat "$work/wide.rc")" != 0 ] &&
+       printf '%s\n' "$line" | grep -q "cmd.stim.hex:5: the model refused the command: command 1 (FRAME, op 1): canvas 200x120 over width_max x height_max 160x120"; then
+        ok "lockstep refuses a canvas over W_MAX: ${line#tb_lockstep: FAIL }"
+    else
+        cat "$work/wide.sim"; bad "lockstep wide: want the FRAME refused at cmd.stim.hex:5"
+    fi
+
+    # Stamps that go backwards (words 2 and 3 swapped: line 7 is earlier than line 6).
+    mkdir -p "$work/back"
+    awk 'NR == 6 { held = $0; next } NR == 7 { print; print held; next } { print }' \
+        "$work/t8/cmd.stim.hex" >"$work/back/cmd.stim.hex"
+    run ns8 back "$work/back"
+    line=$(grep -m1 '^tb_lockstep: FAIL' "$work/back.sim")
+    if [ "$(cat "$work/back.rc")" != 0 ] &&
+       printf '%s\n' "$line" | grep -Eq "back/cmd.stim.hex:7: cycle stamp [0-9]+ does not follow the previous one, [0-9]+$"; then
+        ok "lockstep refuses stamps that go backwards: ${line#tb_lockstep: FAIL }"
+    else
+        cat "$work/back.sim"; bad "lockstep back: want cmd.stim.hex:7 refused"
+    fi
+fi
+if vl ns32; then
+    run ns32 gen32 "$work/g32";             pass_run gen32 "$work/g32"
+fi
+
+# --------------------------------------------------------------- 3. faults
+# The first expected span: its cycle (the word's top 48 bits) and fields.
+# A span word is 123 bits in 31 digits: its first 13 digits are bits 123..72,
+# and the cycle, bits 122..75, is their value shifted right by 3.
+first_span=$(grep -v '^//' "$work/t8/span.expected.hex" | head -n 1)
+c1=$(( 16#${first_span:0:13} >> 3 ))
+if vl short; then
+    run short short "$work/t8"
+    line=$(grep -m1 '^tb_lockstep: FAIL' "$work/short.sim")
+    # Exactly one field marked, len, one less than expected; at the first span's cycle.
+    el=$(printf '%s\n' "$line" | sed -n 's/.*fields differ: expected .* len=\([0-9]*\) .*; actual .*/\1/p')
+    al=$(printf '%s\n' "$line" | sed -n 's/.*; actual .* len=\([0-9]*\)\* .*/\1/p')
+    stars=$(printf '%s\n' "${line#*; actual }" | tr -cd '*' | wc -c)
+    if [ "$(cat "$work/short.rc")" != 0 ] &&
+       printf '%s\n' "$line" | grep -Eq "^tb_lockstep: FAIL at time [0-9]+ ns, cycle $c1: span: cycle $c1, y [0-9]+, x [0-9]+: fields differ: expected y=[0-9]+ x=[0-9]+ len=[0-9]+ mask=0x[0-9a-f]{8}; actual " &&
+       [ -n "$el" ] && [ -n "$al" ] && [ "$el" = $((al + 1)) ] && [ "$stars" = 1 ]; then
+        ok "fault span-short caught: ${line#tb_lockstep: FAIL }"
+    else
+        cat "$work/short.sim"; bad "fault span-short: want the first span (cycle $c1) reported with len one short, exit != 0"
+    fi
+fi
+echo "test-dpi: $(( $(date +%s) - t0 )) s"
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]
