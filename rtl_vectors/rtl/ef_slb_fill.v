@@ -86,7 +86,9 @@ module ef_slb_fill #(
     output wire [14:0] span_len,
     output wire [31:0] span_mask,
 
-    output wire        idle         // nothing in flight (for testbenches)
+    output wire        idle,        // nothing in flight (for testbenches)
+    output wire        scan_done    // no scan in progress: from the cycle after the
+                                    // flush step (its span, if any, transferring)
 );
     localparam CW = 7 * NS;                 // cell width
     localparam AW = $clog2(W_MAX + 1);      // cell address width
@@ -142,7 +144,11 @@ module ef_slb_fill #(
     // ------------------------------------------------------------ stage 2
     // cur: the cell as it is now: the RAM read missed a write made at the same
     // edge (read first), so the latest write wins on an address match.
+`ifdef EF_FAULT_FWD
+    wire          fwd  = 1'b0 && lw_valid && (lw_addr == s2_addr[AW-1:0]);   // fault build: no forwarding
+`else
     wire          fwd  = lw_valid && (lw_addr == s2_addr[AW-1:0]);
+`endif
     wire [CW-1:0] cur  = fwd ? lw_data : ram_rd;
 
     wire [NS-1:0] s2_sel = {{(NS-1){1'b0}}, 1'b1} << s2_s;  // one-hot sample
@@ -163,7 +169,14 @@ module ef_slb_fill #(
             wire [6:0] an = f_rule ? (a ^ c) : (a + c);
             assign acc_next[7*l +: 7] = an;
             // mask bit: parity (even-odd) or counter != 0 (non-zero)
+`ifdef EF_FAULT_PAD
+            // fault build: the carry out of the 7-bit lane (the packed word's
+            // pad bit) is not masked off in the non-zero coverage test
+            wire [7:0] an8 = {1'b0, a} + {1'b0, c};
+            assign mask_next[l] = f_rule ? an[0] : (|an8);
+`else
             assign mask_next[l] = f_rule ? an[0] : (|an);
+`endif
         end
     endgenerate
 
@@ -183,7 +196,12 @@ module ef_slb_fill #(
     assign span_x     = start[13:0];   // start < W <= 16384 whenever valid
     // span_end <= W <= 16384 and start < span_end whenever valid: 15 bits.
     wire [14:0] span_end = (s2_op == OP_CELL) ? s2_addr : flush_end;
+`ifdef EF_FAULT_SPAN
+    // fault build: a span of two or more pixels cut one pixel short
+    assign span_len   = (span_end - start > 15'd1) ? span_end - start - 15'd1 : span_end - start;
+`else
     assign span_len   = span_end - start;
+`endif
     generate
         if (NS < 32) begin : mask_pad
             assign span_mask = {{(32-NS){1'b0}}, mask};
@@ -218,6 +236,10 @@ module ef_slb_fill #(
     wire [14:0] new_xmax = (!trk_any || plot_q > trk_xmax) ? plot_q : trk_xmax;
 
     assign idle = init_done && !scanning && !trk_any && (s2_op == OP_NONE);
+    // The schedule's cursor after a row (item 5): the cycle after the flush
+    // step, or the flush span's transfer cycle.  The drain (item 6) counts it.
+    assign scan_done = init_done && !scanning && !trk_any
+                    && ((s2_op == OP_NONE) || ((s2_op == OP_FLUSH) && !stall));
 
     // ------------------------------------------------------------ registers
     always @(posedge clk) begin

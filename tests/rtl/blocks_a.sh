@@ -136,9 +136,11 @@ f=$(awk -F'\t' '$3 == "random" { print $2 }' "$work/gen/index.tsv" | sed -n 5p)
 [ -n "$f" ] && a_list+=("random-${f%.scene}:$f")
 k=0
 for c in "${a_list[@]}"; do
+    i=0
     for ns in 8 16 32; do
-        # both rules across the sample counts, and the scene's own
-        case $(( (k + ns / 8) % 3 )) in 0) r=nonzero ;; 1) r=evenodd ;; *) r=scene ;; esac
+        # each case under the three rule settings, one per sample count
+        case $(( (k + i) % 3 )) in 0) r=nonzero ;; 1) r=evenodd ;; *) r=scene ;; esac
+        i=$((i + 1))
         submit "blk_${c%%:*}_${ns}_$r" blk "${c%%:*}/$ns/$r" "$work/gen/${c#*:}" "$ns" "$r" iv
     done
     k=$((k + 1))
@@ -176,3 +178,37 @@ fault_div() {
     fi
 }
 submit fault_div fault_div
+
+# Streams the hardware cannot take are refused before they run, naming the
+# file and line: a canvas over W_MAX, a shape over E_MAX edges, cycle stamps
+# that go backwards.
+refuse() {
+    local d=$work/blk/refuse n nw nr np want
+    mkdir -p "$d"
+    "$EF" vectors "$root/tests/data/svg/lion.svg" -o "$d" --samples 8 --size 40x30 --formats hex \
+        --interfaces cmd,seg,et_wr,et_rd,plot >"$d/vectors.log" 2>&1 || { echo "RESULT FAIL refuse: vectors"; return; }
+    n=$(count "$d/cmd.stim.hex"); nw=$(count "$d/et_wr.expected.hex")
+    nr=$(count "$d/et_rd.expected.hex"); np=$(count "$d/plot.expected.hex")
+    # 1. FRAME 40x30 on a DEC built for W_MAX = 32
+    iverilog -g2005 -I"$inc" -Ptb_dec.NCMD="$n" -Ptb_dec.W_MAX=32 -o "$d/dec.vvp" "$TB/tb_dec.v" $A_DEC &&
+        vvp -n "$d/dec.vvp" +cmd="$d/cmd.stim.hex" +seg="$d/seg.actual.hex" >"$d/sim1" 2>&1
+    want="^tb_dec: FAIL $d/cmd.stim.hex: word 0 \\(line 5\\): FRAME 40x30 is over W_MAX x H_MAX = 32x16384\$"
+    grep -Eq "$want" "$d/sim1" || { cat "$d/sim1"; echo "RESULT FAIL refuse: canvas over W_MAX not refused as expected"; return; }
+    # 2. a shape of more than E_MAX = 4 edges
+    # shellcheck disable=SC2086
+    iverilog -g2005 -I"$inc" -Ptb_etm.NWR="$nw" -Ptb_etm.NRD="$nr" -Ptb_etm.NPLOT="$np" -Ptb_etm.E_MAX=4 \
+        -o "$d/etm.vvp" "$TB/tb_etm.v" $A_ETM &&
+        vvp -n "$d/etm.vvp" +et_wr_in="$d/et_wr.expected.hex" +et_rd_exp="$d/et_rd.expected.hex" \
+            +plot="$d/plot.expected.hex" +et_rd="$d/et_rd.actual.hex" >"$d/sim2" 2>&1
+    grep -Eq "^tb_etm: FAIL $d/et_wr.expected.hex: word [0-9]+ \\(line [0-9]+\\): a shape of more than E_MAX=4 edges\$" "$d/sim2" ||
+        { cat "$d/sim2"; echo "RESULT FAIL refuse: a shape over E_MAX not refused as expected"; return; }
+    # 3. commands 3 and 4 swapped: line 9 (word 4) has the smaller stamp
+    awk '!/^\/\// { k++; if (k == 4) { held = $0; next } if (k == 5) { print; print held; next } } { print }' \
+        "$d/cmd.stim.hex" >"$d/swapped.hex"
+    iverilog -g2005 -I"$inc" -Ptb_dec.NCMD="$n" -o "$d/dec2.vvp" "$TB/tb_dec.v" $A_DEC &&
+        vvp -n "$d/dec2.vvp" +cmd="$d/swapped.hex" +seg="$d/seg2.actual.hex" >"$d/sim3" 2>&1
+    grep -Eq "^tb_dec: FAIL $d/swapped.hex: word 4 \\(line 9\\): cycle stamp [0-9]+ does not increase" "$d/sim3" ||
+        { cat "$d/sim3"; echo "RESULT FAIL refuse: stamps going backwards not refused as expected"; return; }
+    echo "RESULT PASS refuse: a canvas over W_MAX, a shape over E_MAX edges and stamps going backwards are refused, naming file and line"
+}
+submit refuse refuse
