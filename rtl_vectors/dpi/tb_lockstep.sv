@@ -33,8 +33,8 @@
 // Plusargs: +cmd=FILE (required), +rule=scene|nonzero|evenodd, +timeout=CYCLES,
 // +cov_lag=N.  Parameters: NS, W_MAX, H_MAX, E_MAX (the DUT's; E_MAX sizes
 // ef_raster's edge memories).
-// A fault (build-time, to prove the loop fails): -DEF_TB_FAULT_SPAN_SHORT cuts
-// every span the DUT shows one pixel short.  With the SLB + FILL DUT,
+// A fault to see the loop fail: the RTL's -DEF_FAULT_SPAN (ef_slb_fill.v) cuts
+// every span of two or more pixels one short.  With the SLB + FILL DUT,
 // +cov_lag=N makes the bench's COV take N cycles more per span (an
 // environment with other timing: the spans come late, and the cycle check
 // must say so).
@@ -149,7 +149,6 @@ module tb_lockstep #(
     et_rd_t    et_rd;
     plot_t     plot;
     span_t     span;
-    wire [14:0] span_len;
 
     ef_raster #(.NS(NS), .W_MAX(W_MAX), .H_MAX(H_MAX), .E_MAX(E_MAX)) dut (
         .clk(clk), .rst(rst), .init_done(init_done),
@@ -171,13 +170,8 @@ module tb_lockstep #(
         .plot_valid(plot_valid), .plot_ready(plot_ready), .plot_last(plot.last), .plot_row(plot.row),
         .plot_s(plot.s), .plot_q(plot.q), .plot_dir(plot.dir),
         .span_valid(span_valid), .span_ready(span_ready), .span_y(span.y), .span_x(span.x),
-        .span_len(span_len), .span_mask(span.mask)
+        .span_len(span.len), .span_mask(span.mask)
     );
-`ifdef EF_TB_FAULT_SPAN_SHORT
-    assign span.len = span_len - 15'd1;       // injected fault: every span seen one pixel short
-`else
-    assign span.len = span_len;
-`endif
 
     // The frame memory (docs/microarch.md 3.6): one word per pixel drawn,
     // transparent black at FRAME; synchronous read.
@@ -265,7 +259,7 @@ module tb_lockstep #(
     bit        cfg_rule = 1'b0;
     wire       plot_ready, span_valid, init_done, idle;
     wire [13:0] span_y, span_x;
-    wire [14:0] span_len_dut, span_len;
+    wire [14:0] span_len;
     wire [31:0] span_mask;
 
     // (outputs this bench does not use, such as a newer block's scan_done, are left open)
@@ -276,15 +270,10 @@ module tb_lockstep #(
         .plot_valid(plot_valid), .plot_ready(plot_ready), .plot_last(plot.last),
         .plot_row(plot.row), .plot_s(plot.s), .plot_q(plot.q), .plot_dir(plot.dir),
         .span_valid(span_valid), .span_ready(span_ready), .span_y(span_y),
-        .span_x(span_x), .span_len(span_len_dut), .span_mask(span_mask),
+        .span_x(span_x), .span_len(span_len), .span_mask(span_mask),
         .idle(idle)
     );
     /* verilator lint_on PINMISSING */
-`ifdef EF_TB_FAULT_SPAN_SHORT
-    assign span_len = span_len_dut - 15'd1;   // injected fault: every span one pixel short
-`else
-    assign span_len = span_len_dut;
-`endif
 
     // COV, the span's consumer, as the reference schedule has it: it takes a
     // span of len pixels at cycle a and is ready again at a + len
