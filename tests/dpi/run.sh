@@ -15,8 +15,8 @@
 #      package's structs are checked against the model's interface table at
 #      start-up; the gen case once more under valgrind's memcheck (when
 #      installed) with no error;
-#   3. the loop can fail: built with -DEF_TB_FAULT_SPAN_SHORT (every span the
-#      DUT produces one pixel short) it must stop at the first span, naming
+#   3. the loop can fail: built with the RTL's -DEF_FAULT_SPAN (every span of
+#      two or more pixels one short) it must stop at the first such span, naming
 #      the simulation time, interface span, that span's cycle, and `len` as
 #      the one differing field (expected len = actual + 1); with +cov_lag=1
 #      (COV one cycle slower per span) it must stop at a span reported late
@@ -26,7 +26,8 @@
 # The three Verilator builds run side by side at -O0 (the C++ compile is
 # most of this stage's time; the simulations take well under a second).
 #
-# usage: bash tests/dpi/run.sh BUILD_DIR   (EF_DPI_KEEP=1 keeps the work dir)
+# usage: bash tests/dpi/run.sh BUILD_DIR   (EF_DPI_KEEP=1 keeps the work dir;
+#        EF_DPI_RTL=DIR takes the RTL from DIR instead of rtl_vectors/rtl)
 # Skips part 2 and 3, saying so, without verilator.  Ends with "N passed,
 # M failed"; exit 0 only if nothing failed.
 set -u
@@ -38,7 +39,9 @@ root=$(cd "$(dirname "$0")/../.." && pwd)
 case $build in /*) ;; *) build=$PWD/$build ;; esac
 EF=$build/edgeflag
 DPI=$root/rtl_vectors/dpi
-RTL="$root/rtl_vectors/rtl/ef_slb_fill.v $root/rtl_vectors/rtl/ef_slb_ram.v"
+R=${EF_DPI_RTL:-$root/rtl_vectors/rtl}     # EF_DPI_RTL: another RTL folder (the same file names)
+RTL_SLB="$R/ef_slb_fill.v $R/ef_slb_ram.v"
+RTL_RASTER="$R/ef_raster.v $R/ef_dec.v $R/ef_setup.v $R/ef_div.v $R/ef_etm.v $R/ef_aet.v $R/ef_plot.v $RTL_SLB $R/ef_cov.v"
 for f in "$EF" "$build/tests/test_model_stream"; do
     [ -e "$f" ] || { echo "test-dpi: $f not built (make test-dpi builds it)"; exit 1; }
 done
@@ -99,16 +102,18 @@ echo "test-dpi: $(verilator --version)"
 "$EF" vectors --rtl-headers -o "$work/hdr" >"$work/hdr.log" 2>&1 || { cat "$work/hdr.log"; exit 1; }
 [ -e "$build/libef_dpi.a" ] || { echo "test-dpi: $build/libef_dpi.a not built (make test-dpi builds it)"; exit 1; }
 
-# vl_build NAME NS W_MAX H_MAX [-DFAULT]: builds tb_lockstep into
+# vl_build NAME DUT NS W_MAX H_MAX [-DFAULT]: builds tb_lockstep with DUT
+# (raster: ef_raster, the whole pipeline; slb: ef_slb_fill) into
 # $work/vl_NAME/obj/tb; "ok" or the reason in $work/vl_NAME/status.
 vl_build() {
-    local name=$1 ns=$2 w=$3 h=$4; shift 4
-    local d=$work/vl_$name s=$(date +%s)
+    local name=$1 dut=$2 ns=$3 w=$4 h=$5; shift 5
+    local d=$work/vl_$name s=$(date +%s) rtl=$RTL_RASTER
+    [ "$dut" = slb ] && { rtl=$RTL_SLB; set -- -DEF_TB_DUT_SLB "$@"; }
     mkdir -p "$d"
     if ! verilator --binary --timing --timescale 1ns/1ns -j 1 --Mdir "$d/obj" --top-module tb_lockstep \
             -MAKEFLAGS "OPT_FAST=-O0 OPT_SLOW=-O0 OPT_GLOBAL=-O0" \
-            -GNS="$ns" -GW_MAX="$w" -GH_MAX="$h" "$@" "$work/hdr/ef_ifaces_pkg.sv" "$DPI/ef_model_pkg.sv" "$DPI/tb_lockstep.sv" $RTL \
-            "$build/libef_dpi.a" -o tb >"$d/build.log" 2>&1; then
+            -GNS="$ns" -GW_MAX="$w" -GH_MAX="$h" "$@" "$work/hdr/ef_ifaces_pkg.sv" "$DPI/ef_model_pkg.sv" \
+            "$DPI/tb_lockstep.sv" $rtl "$build/libef_dpi.a" -o tb >"$d/build.log" 2>&1; then
         echo "verilator build failed" >"$d/status"; return
     fi
     # Warnings do not stop the build; the bench is meant to have none.
@@ -124,7 +129,19 @@ vl() {
     fi
     tail -n 30 "$d/build.log"; bad "verilator build $1: ${st:-no status}"; return 1
 }
-vl_build ns8 8 160 120 & vl_build ns32 32 160 120 & vl_build short 8 160 120 -DEF_TB_FAULT_SPAN_SHORT &
+# The whole pipeline when the tree has it (every interface checked), and the
+# SLB + FILL block, which also has the bench's COV model (+cov_lag).
+if [ -e "$R/ef_raster.v" ]; then
+    DUT=raster; CHECKS="cmd seg et_wr et_rd plot span pix"
+else
+    DUT=slb; CHECKS="span"
+    echo "test-dpi: no rtl_vectors/rtl/ef_raster.v: the lockstep DUT is ef_slb_fill alone"
+fi
+echo "test-dpi: DUT $DUT, checked in lockstep: $CHECKS"
+vl_build ns8 $DUT 8 160 120 & vl_build ns32 $DUT 32 160 120 &
+wait
+vl_build short $DUT 8 160 120 -DEF_FAULT_SPAN &
+[ $DUT = raster ] && vl_build slb8 slb 8 160 120 &
 wait
 
 # run NAME VECDIR [plusargs]: the bench on VECDIR/cmd.stim.hex; output in $work/NAME.sim
@@ -135,16 +152,21 @@ run() {
     ( "$bin" +cmd="$dir/cmd.stim.hex" "$@" >"$work/$name.sim" 2>&1; echo $? >"$work/$name.rc" ) 2>/dev/null
 }
 
-# pass_run NAME VECDIR: PASS, exit 0, as many spans checked as the file holds
+# pass_run NAME VECDIR [IFACES]: PASS, exit 0, and as many transactions
+# checked on each interface as VECDIR's file of it holds
 pass_run() {
-    local name=$1 dir=$2 n line
-    n=$(count "$dir/span.expected.hex")
+    local name=$1 dir=$2 ifs=${3:-$CHECKS} line i n f miss=
     line=$(grep '^tb_lockstep: ' "$work/$name.sim" | head -n 1)
-    if [ "$(cat "$work/$name.rc")" = 0 ] && [ "${line#tb_lockstep: PASS}" != "$line" ] &&
-       printf '%s\n' "$line" | grep -q ", $n spans checked in lockstep"; then
+    for i in $ifs; do
+        f=$dir/$i.expected.hex; [ "$i" = cmd ] && f=$dir/cmd.stim.hex
+        n=$(count "$f")
+        printf '%s\n' "$line" | grep -Eq "[:,] $n $i[,;]" || miss="$miss $i($n)"
+    done
+    if [ "$(cat "$work/$name.rc")" = 0 ] && [ "${line#tb_lockstep: PASS}" != "$line" ] && [ -z "$miss" ]; then
         ok "lockstep $name: ${line#tb_lockstep: PASS }"
     else
-        cat "$work/$name.sim"; bad "lockstep $name: want PASS with $n spans checked (exit $(cat "$work/$name.rc"))"
+        cat "$work/$name.sim"
+        bad "lockstep $name: want PASS with every transaction of the files checked (exit $(cat "$work/$name.rc"); counts differ:$miss)"
     fi
 }
 
@@ -167,14 +189,19 @@ if vl ns8; then
         echo "test-dpi: valgrind not installed: the memcheck run is SKIPPED"
     fi
 
-    # COV one cycle slower per span (+cov_lag=1): the DUT's spans come late.
-    run ns8 slow "$work/t8" +cov_lag=1
-    line=$(grep -m1 '^tb_lockstep: FAIL' "$work/slow.sim")
-    if [ "$(cat "$work/slow.rc")" != 0 ] &&
-       printf '%s\n' "$line" | grep -Eq "^tb_lockstep: FAIL at time [0-9]+ ns, cycle ([0-9]+): span: cycle [0-9]+, y [0-9]+, x [0-9]+: cycle differs: expected ([0-9]+), actual [0-9]+ \(late by 1\): y=[0-9]+ x=[0-9]+ len=[0-9]+ mask=0x[0-9a-f]{8}$"; then
-        ok "COV one cycle slower caught: ${line#tb_lockstep: FAIL }"
-    else
-        cat "$work/slow.sim"; bad "cov_lag=1: want a span reported late by 1, exit != 0"
+    # COV one cycle slower per span (+cov_lag=1, the SLB + FILL bench's COV
+    # model): the DUT's spans come late.
+    cov_bin=ns8; [ $DUT = raster ] && cov_bin=slb8
+    if [ $DUT = slb ] || vl slb8; then
+        [ $DUT = raster ] && { run slb8 slb_tiger8 "$work/t8"; pass_run slb_tiger8 "$work/t8" span; }
+        run $cov_bin slow "$work/t8" +cov_lag=1
+        line=$(grep -m1 '^tb_lockstep: FAIL' "$work/slow.sim")
+        if [ "$(cat "$work/slow.rc")" != 0 ] &&
+           printf '%s\n' "$line" | grep -Eq "^tb_lockstep: FAIL at time [0-9]+ ns, cycle ([0-9]+): span: cycle [0-9]+, y [0-9]+, x [0-9]+: cycle differs: expected ([0-9]+), actual [0-9]+ \(late by 1\): y=[0-9]+ x=[0-9]+ len=[0-9]+ mask=0x[0-9a-f]{8}$"; then
+            ok "COV one cycle slower caught: ${line#tb_lockstep: FAIL }"
+        else
+            cat "$work/slow.sim"; bad "cov_lag=1: want a span reported late by 1, exit != 0"
+        fi
     fi
 
     # A stream over W_MAX: the FRAME of a 200-wide canvas into a W_MAX=160 bench.
@@ -209,10 +236,16 @@ fi
 
 # --------------------------------------------------------------- 3. faults
 # The first expected span: its cycle (the word's top 48 bits) and fields.
-# A span word is 123 bits in 31 digits: its first 13 digits are bits 123..72,
-# and the cycle, bits 122..75, is their value shifted right by 3.
-first_span=$(grep -v '^//' "$work/t8/span.expected.hex" | head -n 1)
-c1=$(( 16#${first_span:0:13} >> 3 ))
+# The RTL's fault EF_FAULT_SPAN (rtl_vectors/rtl/ef_slb_fill.v) cuts every
+# span of two or more pixels one short: the first such span of the files is
+# where the bench must stop.  A span word is 123 bits in 31 digits: its first
+# 13 digits are bits 123..72 and the cycle, bits 122..75, is their value
+# shifted right by 3; len is bits 46..32, within the last 16 digits.
+c1=
+while read -r w; do
+    case $w in ''|//*) continue ;; esac
+    if [ $(( (16#${w: -16} >> 32) & 0x7fff )) -ge 2 ]; then c1=$(( 16#${w:0:13} >> 3 )); break; fi
+done <"$work/t8/span.expected.hex"
 if vl short; then
     run short short "$work/t8"
     line=$(grep -m1 '^tb_lockstep: FAIL' "$work/short.sim")
@@ -223,9 +256,9 @@ if vl short; then
     if [ "$(cat "$work/short.rc")" != 0 ] &&
        printf '%s\n' "$line" | grep -Eq "^tb_lockstep: FAIL at time [0-9]+ ns, cycle $c1: span: cycle $c1, y [0-9]+, x [0-9]+: fields differ: expected y=[0-9]+ x=[0-9]+ len=[0-9]+ mask=0x[0-9a-f]{8}; actual " &&
        [ -n "$el" ] && [ -n "$al" ] && [ "$el" = $((al + 1)) ] && [ "$stars" = 1 ]; then
-        ok "fault span-short caught: ${line#tb_lockstep: FAIL }"
+        ok "RTL fault EF_FAULT_SPAN (a span one pixel short) caught: ${line#tb_lockstep: FAIL }"
     else
-        cat "$work/short.sim"; bad "fault span-short: want the first span (cycle $c1) reported with len one short, exit != 0"
+        cat "$work/short.sim"; bad "fault EF_FAULT_SPAN: want the first span of 2+ pixels (cycle $c1) reported with len one short, exit != 0"
     fi
 fi
 echo "test-dpi: $(( $(date +%s) - t0 )) s"

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # tests/dpi/sweep.sh - `make dpi-sweep` (not in `make test`): the lockstep
-# bench (rtl_vectors/dpi/tb_lockstep.sv, docs/dpi.md) over every `edgeflag gen`
+# bench (rtl_vectors/dpi/tb_lockstep.sv, docs/dpi.md) with the SLB + FILL DUT
+# (-DEF_TB_DUT_SLB) over every `edgeflag gen`
 # level-1 case at NS = 8, 16, 32 under each shape's own rule, non-zero and
 # even-odd: 261 x 9 = 2,349 runs, each a PASS with every span checked in
 # lockstep or the first mismatch.  One Verilator build per NS (W_MAX = H_MAX =
@@ -32,7 +33,7 @@ t0=$(date +%s)
 
 for ns in 8 16 32; do
     verilator --binary --timing --timescale 1ns/1ns -j 2 --Mdir "$work/vl$ns" --top-module tb_lockstep \
-        -GNS="$ns" -GW_MAX=16384 -GH_MAX=16384 "$work/hdr/ef_ifaces_pkg.sv" "$DPI/ef_model_pkg.sv" "$DPI/tb_lockstep.sv" $RTL \
+        -GNS="$ns" -GW_MAX=16384 -GH_MAX=16384 -GE_MAX=4194304 -DEF_TB_DUT_SLB "$work/hdr/ef_ifaces_pkg.sv" "$DPI/ef_model_pkg.sv" "$DPI/tb_lockstep.sv" $RTL \
         "$build/libef_dpi.a" -o tb >"$work/build$ns.log" 2>&1 ||
         { tail -n 30 "$work/build$ns.log"; echo "dpi-sweep: verilator build NS=$ns failed"; exit 1; }
 done
@@ -52,7 +53,7 @@ while IFS=$'\t' read -r k f kind cat name rest; do
             ( "$work/vl$ns/tb" +cmd="$d/cmd.stim.hex" +rule="$rule" >"$work/sim" 2>&1; echo $? >"$work/rc" ) 2>/dev/null
             line=$(grep -m1 '^tb_lockstep: \(PASS\|FAIL\)' "$work/sim")
             if [ "$(cat "$work/rc")" = 0 ] && [ "${line#tb_lockstep: PASS}" != "$line" ]; then
-                n=$(printf '%s\n' "$line" | sed -n 's/.*, \([0-9]*\) spans checked.*/\1/p')
+                n=$(printf '%s\n' "$line" | sed -n 's/.*, \([0-9]*\) span, .*/\1/p')
                 spans=$((spans + ${n:-0}))
             else
                 failed=$((failed + 1))
