@@ -71,6 +71,7 @@ typedef struct ef_cli_vectors_args {
     uint32_t ifaces;            /* default every interface */
     int force;
     int dump;                   /* --dump: the model's output named as a DUT's dumps */
+    int rtl_headers;            /* --rtl-headers: only ef_ifaces.vh and ef_ifaces_pkg.sv, no INPUT */
 } ef_cli_vectors_args;
 int ef_cli_vectors_parse(int argc, char **argv, ef_cli_vectors_args *a);
 

@@ -22,6 +22,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <errno.h>
+#include <unistd.h>
 
 static const char *const CMD = "vectors";
 
@@ -30,6 +32,7 @@ static void usage(FILE *f)
     fputs("usage: edgeflag vectors INPUT -o DIR [--samples 8|16|32] [--rule nonzero|evenodd]\n"
           "                        [--size WxH] [--formats hex,vcd,bin] [--interfaces LIST] [--force]\n"
           "                        [--dump]\n"
+          "       edgeflag vectors --rtl-headers -o DIR [--force]\n"
           "\n"
           "Renders INPUT (.svg, .scene/.txt) with the timing model of the reference\n"
           "microarchitecture and writes every transfer at every interface, stamped with\n"
@@ -54,6 +57,9 @@ static void usage(FILE *f)
           "                     named (IFACE.actual.hex, vectors.actual.bin; no manifest):\n"
           "                     the model standing in for the DUT, to try a bench's or a\n"
           "                     regression's plumbing with `edgeflag check`\n"
+          "  --rtl-headers      write only ef_ifaces.vh (Verilog) and ef_ifaces_pkg.sv\n"
+          "                     (SystemVerilog): every interface's widths, field offsets\n"
+          "                     and the command codes, for testbenches (no INPUT)\n"
           "  -h, --help         show this text\n"
           "  --                 end of options (for an INPUT starting with '-')\n"
           "\n"
@@ -107,6 +113,10 @@ int ef_cli_vectors_parse(int argc, char **argv, ef_cli_vectors_args *a)
             if (a->dump++)
                 return ef_cli_usage_error(CMD, "--dump given twice");
             i++;
+        } else if (strcmp(arg, "--rtl-headers") == 0) {
+            if (a->rtl_headers++)
+                return ef_cli_usage_error(CMD, "--rtl-headers given twice");
+            i++;
         } else if (strcmp(arg, "--force") == 0) {
             if (a->force++)
                 return ef_cli_usage_error(CMD, "--force given twice");
@@ -144,11 +154,58 @@ int ef_cli_vectors_parse(int argc, char **argv, ef_cli_vectors_args *a)
             return ef_cli_usage_error(CMD, "unknown option '%s'", arg);
         }
     }
-    if (!a->input)
+    if (a->rtl_headers) {
+        if (a->input)
+            return ef_cli_usage_error(CMD, "--rtl-headers takes no input ('%s')", a->input);
+        if (seen[0] || seen[1] || seen[2] || seen_formats || seen_ifaces || a->dump)
+            return ef_cli_usage_error(CMD, "--rtl-headers takes only -o DIR and --force");
+    } else if (!a->input) {
         return ef_cli_usage_error(CMD, "no input file");
+    }
     if (!a->dir)
         return ef_cli_usage_error(CMD, "no output directory (-o DIR)");
     return -1;
+}
+
+/* --rtl-headers: the two files of docs/vectors.md section 8, each atomic;
+ * without --force an existing one stops the run before anything is written. */
+static int write_rtl_headers(const ef_cli_vectors_args *a)
+{
+    static const char *const names[2] = { "ef_ifaces.vh", "ef_ifaces_pkg.sv" };
+    char path[2][4096];
+    for (int k = 0; k < 2; k++) {
+        if ((size_t)snprintf(path[k], sizeof path[k], "%s/%s", a->dir, names[k]) >= sizeof path[k]) {
+            ef_cli_error("output directory name too long");
+            return EF_CLI_EXIT_OUTPUT;
+        }
+        if (!a->force && access(path[k], F_OK) == 0) {
+            ef_cli_error("%s exists (--force replaces it)", path[k]);
+            return EF_CLI_EXIT_OUTPUT;
+        }
+    }
+    if (ef_cli_make_dirs(a->dir) != 0) {
+        ef_cli_error("cannot create '%s': %s", a->dir, strerror(errno));
+        return EF_CLI_EXIT_OUTPUT;
+    }
+    for (int k = 0; k < 2; k++) {
+        ef_cli_atomic af;
+        if (ef_cli_atomic_open(&af, path[k]) != 0) {
+            ef_cli_error("cannot write '%s': %s", path[k], strerror(errno));
+            return EF_CLI_EXIT_OUTPUT;
+        }
+        ef_vec_rtl_header_write(af.fp, k);
+        if (ferror(af.fp)) {
+            ef_cli_atomic_abort(&af);
+            ef_cli_error("cannot write '%s'", path[k]);
+            return EF_CLI_EXIT_OUTPUT;
+        }
+        if (ef_cli_atomic_commit(&af) != 0) {
+            ef_cli_error("cannot write '%s': %s", path[k], strerror(errno));
+            return EF_CLI_EXIT_OUTPUT;
+        }
+    }
+    printf("edgeflag vectors: wrote 2 files (ef_ifaces.vh, ef_ifaces_pkg.sv) to %s\n", a->dir);
+    return fflush(stdout) == 0 ? EF_CLI_EXIT_OK : EF_CLI_EXIT_OUTPUT;
 }
 
 /* Failures the input can cause map to 3; running out of memory is not the
@@ -240,6 +297,8 @@ int ef_cli_vectors(int argc, char **argv)
 
     if (rc >= 0)
         return rc;
+    if (a.rtl_headers)
+        return write_rtl_headers(&a);
     memset(&scene, 0, sizeof scene);
     memset(&img, 0, sizeof img);
     if ((rc = load(&a, &scene)) >= 0)

@@ -47,6 +47,8 @@ typedef enum ef_iface {
 
 /* Commands (the `op` field of cmd). */
 enum { EF_OP_FRAME = 1, EF_OP_SHAPE = 2, EF_OP_EDGE = 3, EF_OP_SHAPE_END = 4, EF_OP_FRAME_END = 5 };
+/* "FRAME" .. "FRAME_END" (docs/microarch.md 3.1), NULL for another op. */
+const char *ef_op_name(int op);
 
 typedef struct ef_field_desc {
     const char *name;

@@ -22,6 +22,13 @@ static const ef_iface_desc ifaces[EF_IF_COUNT] = {
     { "pix", "COV", "memory", 68, 4, { F("y", 14), F("x", 14), F("alpha", 8), F("rgba", 32) } },
 };
 
+static const char *const op_names[] = { NULL, "FRAME", "SHAPE", "EDGE", "SHAPE_END", "FRAME_END" };
+
+const char *ef_op_name(int op)
+{
+    return op >= EF_OP_FRAME && op <= EF_OP_FRAME_END ? op_names[op] : NULL;
+}
+
 const ef_iface_desc *ef_iface_get(int iface)
 {
     return iface >= 0 && iface < EF_IF_COUNT ? &ifaces[iface] : NULL;

@@ -198,4 +198,11 @@ int ef_vec_scene_seed(const char *text, size_t len, uint64_t *seed);
  * error here is not this reader's to report). */
 int ef_vec_file_seed(const char *path, uint64_t *seed);
 
+/* ------------------------------------------------------- RTL headers */
+
+/* The Verilog header ef_ifaces.vh (sv 0) or the SystemVerilog package
+ * ef_ifaces_pkg.sv (sv 1) of docs/vectors.md section 8, from the interface
+ * table; the caller checks f for write errors. */
+void ef_vec_rtl_header_write(FILE *f, int sv);
+
 #endif /* EF_VEC_H */

@@ -86,7 +86,9 @@ module ef_slb_fill #(
     output wire [14:0] span_len,
     output wire [31:0] span_mask,
 
-    output wire        idle         // nothing in flight (for testbenches)
+    output wire        idle,        // nothing in flight (for testbenches)
+    output wire        scan_done    // no scan in progress: from the cycle after the
+                                    // flush step (its span, if any, transferring)
 );
     localparam CW = 7 * NS;                 // cell width
     localparam AW = $clog2(W_MAX + 1);      // cell address width
@@ -218,6 +220,10 @@ module ef_slb_fill #(
     wire [14:0] new_xmax = (!trk_any || plot_q > trk_xmax) ? plot_q : trk_xmax;
 
     assign idle = init_done && !scanning && !trk_any && (s2_op == OP_NONE);
+    // The schedule's cursor after a row (item 5): the cycle after the flush
+    // step, or the flush span's transfer cycle.  The drain (item 6) counts it.
+    assign scan_done = init_done && !scanning && !trk_any
+                    && ((s2_op == OP_NONE) || ((s2_op == OP_FLUSH) && !stall));
 
     // ------------------------------------------------------------ registers
     always @(posedge clk) begin

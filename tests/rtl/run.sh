@@ -27,7 +27,10 @@
 #      once more under Verilator;
 #   4. the bench can fail: the RTL without its write-to-read forwarding must
 #      fail --cycles; a COV that takes one more cycle per span (an RTL with
-#      other timing) must fail --cycles and pass --transactions.
+#      other timing) must fail --cycles and pass --transactions;
+#   5. DEC, SETUP (with its divider) and ETM, each fed from its upstream
+#      interface's expected hex, reproduce seg, et_wr and et_rd cycle for
+#      cycle (tests/rtl/blocks_a.sh says what runs).
 #
 # usage: bash tests/rtl/run.sh BUILD_DIR   (`make test-rtl`; EF_RTL_JOBS,
 #        default the number of CPUs; TMPDIR; EF_RTL_KEEP=1 keeps the work
@@ -332,6 +335,9 @@ mutant() {
 }
 submit mutant_no_forwarding mutant no-forwarding
 submit mutant_cov_lag mutant cov-lag
+
+# 5. DEC, SETUP (+ divider) and ETM in RTL, block by block (tests/rtl/blocks_a.sh)
+. "$TB/blocks_a.sh"
 
 collect
 # What the RTL runs exercised, summed over every tb_slb_fill run above.

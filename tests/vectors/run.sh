@@ -307,6 +307,12 @@ usage_cases=(
     "$scene $scene -o u"
     "$scene -o u --frobnicate"
     "$scene -o u -x"
+    "--rtl-headers"
+    "--rtl-headers $scene -o u"
+    "--rtl-headers -o u --samples 16"
+    "--rtl-headers -o u --interfaces cmd"
+    "--rtl-headers -o u --dump"
+    "--rtl-headers --rtl-headers -o u"
 )
 nok=0
 for args in "${usage_cases[@]}"; do
@@ -320,6 +326,30 @@ for args in "${usage_cases[@]}"; do
     fi
 done
 [ $nok = ${#usage_cases[@]} ] && ok "$nok usage errors: exit 2, 'edgeflag: vectors: ...' and the hint, nothing created"
+# --rtl-headers (docs/vectors.md section 8): exactly the two files, from the
+# interface table (the payload widths agree with the manifest's); an existing
+# one is exit 4 without --force and left alone; --force replaces it.
+run vectors --rtl-headers -o hdr
+ls_h=$(ls -A hdr | tr '\n' ' ')
+w_seg=$(sed -n 's/^`define EF_SEG_W \([0-9]*\)$/\1/p' hdr/ef_ifaces.vh)
+w_pix=$(sed -n 's/^  localparam int PIX_W = \([0-9]*\);$/\1/p' hdr/ef_ifaces_pkg.sv)
+if [ $rc = 0 ] && [ "$ls_h" = "ef_ifaces.vh ef_ifaces_pkg.sv " ] && [ -n "$w_seg" ] &&
+   grep -q "\"name\": \"seg\", \"bits\": $w_seg," full/manifest.json &&
+   grep -q "\"name\": \"pix\", \"bits\": $w_pix," full/manifest.json &&
+   grep -q '^`define EF_OP_SHAPE_END 4$' hdr/ef_ifaces.vh && grep -q '^`define EF_ET_RD_EID_LSB 0$' hdr/ef_ifaces.vh; then
+    ok "--rtl-headers: ef_ifaces.vh and ef_ifaces_pkg.sv only, widths as in the manifest (seg $w_seg, pix $w_pix)"
+else
+    bad "--rtl-headers" "rc=$rc files: $ls_h seg=$w_seg pix=$w_pix"
+fi
+echo keep >hdr/ef_ifaces_pkg.sv
+run vectors --rtl-headers -o hdr
+rc1=$rc; k1=$(cat hdr/ef_ifaces_pkg.sv)
+run vectors --rtl-headers -o hdr --force
+if [ $rc1 = 4 ] && [ "$k1" = keep ] && [ $rc = 0 ] && grep -q '^package ef_ifaces_pkg;' hdr/ef_ifaces_pkg.sv; then
+    ok "--rtl-headers: an existing file is exit 4 and kept; --force replaces it"
+else
+    bad "--rtl-headers over existing files" "rc=$rc1 then $rc"
+fi
 run vectors -o u --samples 8 -- "$scene"
 if [ $rc = 0 ] && [ -f u/manifest.json ]; then ok "-- ends the options"; else bad "-- ends the options" "rc=$rc"; fi
 rm -rf u

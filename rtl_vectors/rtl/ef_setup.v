@@ -1,0 +1,172 @@
+// ef_setup: edge setup (SETUP) of the edgeflag reference microarchitecture
+// (docs/microarch.md 3.2 and section 4 item 3; the arithmetic is
+// docs/spec.md section 5).
+// Interfaces:  seg (DEC -> SETUP) in,  et_wr (SETUP -> ETM) out.
+//
+// One edge per cycle, its record L_SETUP = 33 cycles after the seg transfer:
+//   P1 (the seg's cycle, registered at its transfer): orientation, dY, dX,
+//      first and last sample rows r0 = ceil((Y0 - c) / h) and
+//      r1 = ceil((Y1 - c) / h) - 1 as arithmetic shifts (h = 2^(8 - LOG2NS)),
+//      the top and bottom clip, and the drop decision (horizontal, or
+//      r0 > r1 after clipping);
+//   P2: the dividends A = X0*dY + (Y_r0 - Y0)*dX - 1 (|A| < 2^49) and
+//      h*dX (a shift, |h*dX| < 2^29);
+//   30 non-restoring stages and the floor correction (ef_div, two lanes
+//      side by side: x, e = floor divmod(A, dY) and qs, rs = floor
+//      divmod(h*dX, dY) in the same cycles).
+// A dropped edge travels down the pipeline as a bubble (no et_wr); the
+// end-of-shape token (seg eos) leaves as the eos et_wr, every other field 0.
+//
+// Back-pressure: the whole pipeline advances when et_wr is taken or empty
+// (en); seg_ready = en.  The reference ETM is always ready, so this never
+// stalls there.
+//
+// cfg_height (FRAME's height, 1..H_MAX) gives the bottom clip N*H - 1.
+//
+// Synthesizable Verilog-2005.
+module ef_setup #(
+    parameter NS    = 8         // samples per pixel: 8, 16 or 32
+) (
+    input  wire        clk,
+    input  wire        rst,
+    input  wire [14:0] cfg_height,
+
+    // seg: eos[0] xa[23:0] ya[23:0] xb[23:0] yb[23:0]
+    input  wire        seg_valid,
+    output wire        seg_ready,
+    input  wire        seg_eos,
+    input  wire [23:0] seg_xa,
+    input  wire [23:0] seg_ya,
+    input  wire [23:0] seg_xb,
+    input  wire [23:0] seg_yb,
+
+    // et_wr: eos[0] slot[13:0] r0[18:0] r1[18:0] x[24:0] e[23:0] qs[29:0]
+    //        rs[23:0] dy[23:0] dir[0]
+    output wire        et_wr_valid,
+    input  wire        et_wr_ready,
+    output wire        et_wr_eos,
+    output wire [13:0] et_wr_slot,
+    output wire [18:0] et_wr_r0,
+    output wire [18:0] et_wr_r1,
+    output wire [24:0] et_wr_x,
+    output wire [23:0] et_wr_e,
+    output wire [29:0] et_wr_qs,
+    output wire [23:0] et_wr_rs,
+    output wire [23:0] et_wr_dy,
+    output wire        et_wr_dir
+);
+    localparam LOG2NS = NS == 8 ? 3 : NS == 16 ? 4 : 5;
+    localparam SH     = 8 - LOG2NS;           // h = 2^SH
+    localparam H      = 1 << SH;
+    localparam C      = H / 2;
+
+    wire div_out_valid;
+    wire en = et_wr_ready || !et_wr_valid;
+    assign seg_ready = en && !rst;
+    wire take = seg_valid && seg_ready;
+
+    // ------------------------------------------------------------- P1
+    wire signed [23:0] xa = seg_xa, ya = seg_ya, xb = seg_xb, yb = seg_yb;
+    wire               down = ya < yb;                 // dir +1
+    wire signed [23:0] x0 = down ? xa : xb, y0 = down ? ya : yb;
+    wire signed [23:0] x1 = down ? xb : xa, y1 = down ? yb : ya;
+    wire signed [25:0] dy_w = {{2{y1[23]}}, y1} - {{2{y0[23]}}, y0};   // 1 .. 2^24 - 1 unless horizontal
+    wire signed [25:0] dx_w = {{2{x1[23]}}, x1} - {{2{x0[23]}}, x0};   // |dX| < 2^24
+    // ceil((Y0 - c) / h) = floor((Y0 - c + h - 1) / h); floor((Y1 - c - 1) / h)
+    wire signed [25:0] r0_num = {{2{y0[23]}}, y0} - C + H - 1;
+    wire signed [25:0] r1_num = {{2{y1[23]}}, y1} - C - 1;
+    wire signed [25:0] r0_raw = r0_num >>> SH;
+    wire signed [25:0] r1_raw = r1_num >>> SH;
+    wire signed [25:0] last_row = $signed({6'd0, cfg_height, 5'd0} >> (5 - LOG2NS)) - 26'sd1;  // N*H - 1
+    wire signed [25:0] r0_c = r0_raw[25] ? 26'sd0 : r0_raw;
+    wire signed [25:0] r1_c = (r1_raw > last_row) ? last_row : r1_raw;
+    wire [1:0]         unused_dy = dy_w[25:24];
+    wire               keep = (ya != yb) && !(r0_c > r1_c);
+
+    reg        p1_v, p1_eos, p1_keep, p1_dir;
+    reg signed [23:0] p1_x0, p1_y0;
+    reg signed [25:0] p1_dx;
+    reg [23:0] p1_dy;
+    reg [18:0] p1_r0, p1_r1;
+
+    always @(posedge clk) begin
+        if (rst)
+            p1_v <= 1'b0;
+        else if (en) begin
+            p1_v    <= take;
+            p1_eos  <= seg_eos;
+            p1_keep <= keep && !seg_eos;
+            p1_dir  <= !down;
+            p1_x0   <= x0;
+            p1_y0   <= y0;
+            p1_dx   <= dx_w;
+            p1_dy   <= dy_w[23:0];
+            p1_r0   <= r0_c[18:0];
+            p1_r1   <= r1_c[18:0];
+        end
+    end
+
+    // ------------------------------------------------------------- P2
+    // t = Y_r0 - Y0 = h*r0 + c - Y0 (|t| < 2^24 + 2^23: the top clip may move
+    // r0 far below Y0), A = X0*dY + t*dX - 1.
+    wire signed [27:0] t_w  = $signed({9'd0, p1_r0} << SH) + C - {{4{p1_y0[23]}}, p1_y0};
+    wire signed [51:0] m_a  = $signed({{28{p1_x0[23]}}, p1_x0}) * $signed({28'd0, p1_dy});
+    wire signed [51:0] m_b  = $signed({{24{t_w[27]}}, t_w}) * $signed({{26{p1_dx[25]}}, p1_dx});
+    wire signed [51:0] a_w  = m_a + m_b - 52'sd1;
+    wire [1:0]  unused_a = a_w[51:50];
+    wire signed [29:0] hdx  = $signed({{5{p1_dx[24]}}, p1_dx[24:0]} << SH);   // |h*dX| < 2^29
+
+    wire [18:0] slot_w = p1_r0 >> LOG2NS;    // the pixel row of r0
+    wire [4:0]  unused_slot = slot_w[18:14];
+
+    reg        p2_v;
+    reg signed [49:0] p2_a;
+    reg signed [29:0] p2_b;
+    reg [23:0] p2_dy;
+    reg [78:0] p2_sb;     // eos keep dir slot r0 r1 dy
+
+    always @(posedge clk) begin
+        if (rst)
+            p2_v <= 1'b0;
+        else if (en) begin
+            p2_v  <= p1_v;
+            p2_a  <= a_w[49:0];
+            p2_b  <= hdx;
+            p2_dy <= p1_dy;
+            p2_sb <= {p1_eos, p1_keep, p1_dir, slot_w[13:0], p1_r0, p1_r1, p1_dy};
+        end
+    end
+
+    // ------------------------------------------------------- dividers
+    wire signed [30:0] qa, qb;
+    wire [23:0] ra, rb;
+    wire [78:0] sb;
+    wire        unused_vb;
+    wire [5:0]  unused_qa = qa[30:25];
+    wire        unused_qb = qb[30];
+    wire [0:0]  unused_sbb;
+
+    ef_div #(.NW(50), .DW(24), .QB(30), .SBW(79)) u_div_a (
+        .clk(clk), .rst(rst), .en(en), .in_valid(p2_v), .in_n(p2_a), .in_d(p2_dy), .in_sb(p2_sb),
+        .out_valid(div_out_valid), .out_q(qa), .out_r(ra), .out_sb(sb)
+    );
+    ef_div #(.NW(30), .DW(24), .QB(30), .SBW(1)) u_div_b (
+        .clk(clk), .rst(rst), .en(en), .in_valid(p2_v), .in_n(p2_b), .in_d(p2_dy), .in_sb(1'b0),
+        .out_valid(unused_vb), .out_q(qb), .out_r(rb), .out_sb(unused_sbb)
+    );
+
+    // ------------------------------------------------------- et_wr
+    wire o_eos = sb[78];
+    wire o_keep = sb[77];
+    assign et_wr_valid = div_out_valid && (o_eos || o_keep);
+    assign et_wr_eos   = o_eos;
+    assign et_wr_dir   = !o_eos && sb[76];
+    assign et_wr_slot  = o_eos ? 14'd0 : sb[75:62];
+    assign et_wr_r0    = o_eos ? 19'd0 : sb[61:43];
+    assign et_wr_r1    = o_eos ? 19'd0 : sb[42:24];
+    assign et_wr_dy    = o_eos ? 24'd0 : sb[23:0];
+    assign et_wr_x     = o_eos ? 25'd0 : qa[24:0];
+    assign et_wr_e     = o_eos ? 24'd0 : ra;
+    assign et_wr_qs    = o_eos ? 30'd0 : qb[29:0];
+    assign et_wr_rs    = o_eos ? 24'd0 : rb;
+endmodule
