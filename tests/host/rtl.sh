@@ -5,7 +5,8 @@
 #   1. verify of two shared SVGs at 64x48, 8 and 16 samples: PASS cycle-exact on pix and
 #      every internal interface (seg, et_wr, et_rd, plot, span), and the RTL's results
 #      byte-identical to the model DUT's;
-#   2. a link fault (--sim-faults drop=2): still PASS, the frame sent again;
+#   2. a link fault (--sim-faults drop=2): still PASS, the frame sent again; unplugged
+#      mid-commands (exit 5), then --resume with --sim-state: byte-identical results;
 #   3. a planted RTL fault (an edgeflag-host built with the RTL's EF_FAULT_ROOKS: one wrong
 #      n-rooks offset in PLOT): verify exits 1, the earliest mismatch (by cycle) on plot, none
 #      on seg or et_wr (et_rd, span and pix follow: PLOT's back-pressure and its wrong samples);
@@ -106,6 +107,21 @@ if [ $rc = 0 ] && grep -q 'edgeflag check: PASS' drop.out && [ "${again:-0}" -ge
     ok "--sim-faults drop=2 with the RTL DUT: PASS, $again frame(s) sent again, results identical"
 else
     bad "--sim-faults drop=2 with the RTL DUT" "exit $rc, sent again '${again}'; $(tail -n 5 drop.out)"
+fi
+
+# unplugged mid-commands, then --resume: the board's state (--sim-state) is replayed into a
+# fresh RTL, and the results are the same bytes as an uninterrupted run
+"$H" verify "$n/vectors.bin" --transport sim --sim-dut rtl --sim-state st --sim-faults unplug=4 --frame-cmds 20 \
+    --results res >unplug.out 2>&1
+rc1=$?
+"$H" verify "$n/vectors.bin" --transport sim --sim-dut rtl --sim-state st --resume --frame-cmds 20 \
+    --results res >resume.out 2>&1
+rc2=$?
+if [ $rc1 = 5 ] && grep -q 'went away' unplug.out && [ $rc2 = 0 ] && grep -q 'edgeflag check: PASS' resume.out &&
+   cmp -s res/vectors.actual.bin "$n.rtl/vectors.actual.bin"; then
+    ok "unplug=4 with the RTL DUT: exit 5, then --resume exit 0 with results byte-identical to an uninterrupted run"
+else
+    bad "unplug + --resume with the RTL DUT" "exit $rc1 then $rc2; $(tail -n 2 unplug.out resume.out)"
 fi
 
 # ---------------------------------------------------------------- 3. a planted RTL fault
