@@ -1,42 +1,52 @@
 // ef_aet: the sequencer and the active edge table (AET) of the edgeflag
-// reference microarchitecture (docs/microarch.md 3.3 and section 4, item 4),
-// with PLOT (ef_plot) inside: et_rd and plot out, one transfer per cycle.
+// reference microarchitecture (docs/microarch.md 3.3, 3.6 and section 4,
+// item 4), with PLOT (ef_plot) inside: it takes et_rd from ETM (ef_etm) and
+// issues one plot per cycle.
 //
-// What it talks to (docs/microarch.md 3.3, "ETM read side"):
-//  * it snoops et_wr (SETUP -> ETM) to learn, before the shape starts, which
-//    pixel rows hold new edges (a bit per row: `occ`), the first row and the
-//    first record written into that row's slot (so the first row needs no
-//    read of the slot heads; the last record may be written two cycles
-//    before the row starts);
-//  * ETM's slot-head read port (hd_*): one synchronous read, issued at least
-//    two cycles before the row starts (there is always the scan between);
-//  * ETM's record read port (rec_*): one synchronous read per cycle, giving
-//    the record of edge `rec_eid` and the next edge of the same slot in
-//    written order (rec_last = none); rec_* hold while rec_re is low.
+// What it talks to:
+//  * it snoops et_wr (SETUP -> ETM): a bit per pixel row whose slot holds
+//    edges (`occ`) and the shape's first row.  A row whose slot is empty
+//    while the AET is empty costs no cycle (schedule item 4), so after the
+//    AET empties the next row must be known at once: the least set bit of
+//    occ (rows are taken in increasing order, each clears its bit);
+//  * ETM's row requests (row_req, a cycle or more before the row starts;
+//    ETM then presents the slot's list on et_rd and holds it until
+//    et_rd_ready) and its record read port (rec_*, the record one cycle
+//    after the read, held while rec_re is low).
 //
-// Row j (schedule item 4), starting at cycle t:
-//   t .. t+n-1   et_rd of the slot's n new edges: the head at t, then each
-//                record read names the next; the read of edge k gives its
-//                record at the next cycle, so the walk learns that edge
-//                n-1 was the last at t+n, the row's first plot cycle;
-//   then         one plot per cycle: the edges active from earlier rows in
-//                AET order (a ring: popped at the front, pushed back at the
-//                tail after their last plot in the row if they go on), then
-//                the new ones in et_rd order, read again from ETM (edge 0's
-//                record is kept from the walk, the walk's last read still
-//                holds it when n = 1); the row's last plot has last = 1;
-//   then         the scan (ef_slb_fill): the next row starts in the first
-//                cycle in which plot_ready is high again.
-// In the cycle after the last plot the sequencer picks the next row (j+1 if
-// edges stay active, else the first row whose slot still holds edges: rows
-// in between cost no cycle), reads its slot head and primes the ring's read.
+// Row j, starting at cycle t (the first cycle SLB takes plots again, or
+// T0 for the shape's first row):
+//   t .. t+n-1  et_rd of the slot's n new edges (et_rd_ready high), each
+//               with a record read; the records arrive at t+1 .. t+n and
+//               all but the last are appended to the ring;
+//   t+n ..      one plot per cycle: the ring's edges in order (those active
+//               from earlier rows, then the new ones), the last new edge
+//               from the record port itself (it still holds it); each edge
+//               goes back to the ring's tail after its last plot in the row
+//               if its last sample row is below the row.  So the ring is
+//               a FIFO whose order is the AET order of the schedule, and
+//               the new edges' arrivals never meet a push (they end before
+//               the first plot).
+//   then        the scan (ef_slb_fill).
+// In the cycle after the row's last plot the sequencer picks the next row
+// (j+1 if the ring holds edges, else the least row whose slot holds edges;
+// none: the shape is done), requests it from ETM if its slot holds edges,
+// and reads the ring's front (the next row's first edge): the scan takes at
+// least two cycles, so both are there when the row starts.
 //
-// Ring: depth E_MAX+1 entries, so the push of a survivor never lands on the
-// entry being read in the same cycle.  Entries: x (25 bits, enough for any
-// sample row inside an edge), e, qs, rs, dy, dir, r1.
+// The ring: one synchronous memory of E_MAX+1 entries (never full, so the
+// tail write never lands on the entry held at the read port) with one
+// forwarding register: the front read in the cycle an arrival is written
+// to that entry (two new edges and nothing older, or the first new edge
+// read right after the last old one) takes the written data.  An entry is
+// {x[24:0], e, qs, rs, dy, dir, r0, r1}: 166 bits.
 //
-// Fault defines: EF_FAULT_LASTEDGE drops the last new edge of a shape's
-// first row (the walk stops one early when the slot holds two or more).
+// Fault defines (tests/rtl/rtl-test.sh): EF_FAULT_LASTEDGE drops the last
+// edge of each shape that has two or more edges in its first row (the walk
+// takes it from ETM but never plots it); EF_FAULT_FWD_AET removes the
+// ring's forwarding path (in simulation the read of a never-written entry
+// then gives x, which edgeflag check refuses as such: rtl-test uses SLB's
+// forwarding fault, EF_FAULT_FWD, instead).
 //
 // Synthesizable Verilog-2005.
 module ef_aet #(
@@ -53,16 +63,20 @@ module ef_aet #(
     input  wire        etw_eos,
     input  wire [13:0] etw_slot,
 
-    // ETM slot-head read port
-    output wire        hd_re,
-    output wire [13:0] hd_row,
-    input  wire [EA-1:0] hd_eid,
-    output wire        hd_take,     // the row hd_take_row starts: its slot is emptied
-    output wire [13:0] hd_take_row,
+    // ETM row requests
+    output wire        row_req,
+    output wire [13:0] row_req_row,
+
+    // et_rd: row[13:0] eid[21:0] (+ ETM's side band et_rd_last)
+    input  wire        et_rd_valid,
+    output wire        et_rd_ready,
+    input  wire [13:0] et_rd_row,
+    input  wire [21:0] et_rd_eid,
+    input  wire        et_rd_last,
 
     // ETM record read port
     output wire        rec_re,
-    output wire [EA-1:0] rec_eid,
+    output wire [21:0] rec_ra,
     input  wire [18:0] rec_r0,
     input  wire [18:0] rec_r1,
     input  wire [24:0] rec_x,
@@ -71,15 +85,8 @@ module ef_aet #(
     input  wire [23:0] rec_rs,
     input  wire [23:0] rec_dy,
     input  wire        rec_dir,
-    input  wire        rec_last,
-    input  wire [EA-1:0] rec_next,
 
-    // et_rd (observation: ETM -> AET)
-    output wire        et_rd_valid,
-    output wire [13:0] et_rd_row,
-    output wire [21:0] et_rd_eid,
-
-    // plot
+    // plot: last[0] row[13:0] s[4:0] q[14:0] dir[0]
     output wire        plot_valid,
     input  wire        plot_ready,
     output wire        plot_last,
@@ -88,86 +95,71 @@ module ef_aet #(
     output wire [14:0] plot_q,
     output wire        plot_dir,
 
-    output wire        busy
+    output wire        busy          // a shape's rows are not all plotted
 );
     localparam EA     = (E_MAX > 1) ? $clog2(E_MAX) : 1;
     localparam RDEPTH = E_MAX + 1;
     localparam RA     = $clog2(RDEPTH);
     localparam LOG2NS = (NS == 8) ? 3 : (NS == 16) ? 4 : 5;
-    localparam RW     = 25 + 24 + 30 + 24 + 24 + 1 + 19;   // ring entry
-    localparam integer NSM1I = NS - 1;
-    localparam integer RLASTI = RDEPTH - 1;
-    localparam [18:0] NSM1 = NSM1I[18:0];
-    localparam [RA-1:0] RLAST = RLASTI[RA-1:0];
+    localparam RW     = 25 + 24 + 30 + 24 + 24 + 1 + 19 + 19;
     localparam HA     = (H_MAX > 1) ? $clog2(H_MAX) : 1;
+    localparam integer NSM1I  = NS - 1;
+    localparam integer RLASTI = RDEPTH - 1;
+    localparam [18:0]   NSM1  = NSM1I[18:0];
+    localparam [RA-1:0] RLAST = RLASTI[RA-1:0];
 
-    localparam [2:0] PH_IDLE = 3'd0, PH_RD = 3'd1, PH_PL = 3'd2, PH_W1 = 3'd3, PH_W = 3'd4;
-    localparam [1:0] SRC_RING = 2'd0, SRC_FIRST = 2'd1, SRC_REC = 2'd2;
+    localparam [2:0] PH_IDLE = 3'd0, PH_RD = 3'd1, PH_P0 = 3'd2, PH_PL = 3'd3, PH_W1 = 3'd4, PH_W = 3'd5;
 
     // ------------------------------------------------------------ state
-    reg [2:0]    ph;
+    reg [2:0]       ph;
     reg [H_MAX-1:0] occ;          // rows whose slot holds edges not yet taken
-    reg          any_rec;
-    reg [13:0]   rmin;
-    reg [EA-1:0] rmin_head;
-    reg [EA-1:0] wr_eid;          // next record number of the shape
+    reg             any_rec;
+    reg [13:0]      rmin;
 
     reg [13:0]   row;
     reg [13:0]   nx_row;
     reg          nx_occ;
-    reg          nx_snoop;        // first row: its head is rmin_head
 
     reg [RA-1:0] rd_ptr, wr_ptr;
-    reg [RA:0]   n_old, k_old, aet_cnt;
-    reg [EA:0]   n_new, n_new_row;
-    /* verilator lint_off UNUSEDSIGNAL */
-    reg [EA-1:0] n_rec;           // records of the shape (fault builds only)
-    /* verilator lint_on UNUSEDSIGNAL */
+    reg [RA:0]   n_old;           // edges active from earlier rows
+    reg [RA:0]   aet_cnt;         // survivors pushed in this row
+    reg [EA:0]   n_new;           // new edges of the row
+    reg [RA+1:0] k;               // edges of the row done so far
+    reg          arr_v, arr_last; // a record arrives this cycle
 
-    reg          fresh;           // the next plot starts an edge
-    reg [1:0]    src;
-    // the edge being plotted (after its first cycle)
+    reg          fresh;           // this plot starts an edge
     reg signed [31:0] cur_x;
     reg [23:0]   cur_e, cur_rs, cur_dy;
     reg [29:0]   cur_qs;
     reg          cur_dir;
     reg [18:0]   cur_r1;
     reg [4:0]    cur_s;
-    reg          cur_old, cur_lastnew;
-    reg [EA-1:0] cur_next;
-    // edge 0 of the row's new edges, kept from the walk
-    reg [18:0]   f_r0, f_r1;
-    reg [24:0]   f_x;
-    reg [23:0]   f_e, f_rs, f_dy;
-    reg [29:0]   f_qs;
-    reg          f_dir, f_last;
-    reg [EA-1:0] f_next;
 
     // ------------------------------------------------------------ the ring
-    wire          ring_we;
-    wire [RW-1:0] ring_wd;
-    wire          ring_re;
-    wire [RW-1:0] ring_rd;
+    wire          ring_we, ring_re;
+    wire [RW-1:0] ring_wd, ring_q;
     ef_slb_ram #(.AW(RA), .DW(RW), .DEPTH(RDEPTH)) u_ring (
         .clk(clk), .we(ring_we), .wa(wr_ptr), .wd(ring_wd),
-        .re(ring_re), .ra(rd_ptr), .rd(ring_rd)
+        .re(ring_re), .ra(rd_ptr), .rd(ring_q)
     );
-    wire [24:0] g_x  = ring_rd[RW-1 -: 25];
-    wire [23:0] g_e  = ring_rd[RW-26 -: 24];
-    wire [29:0] g_qs = ring_rd[RW-50 -: 30];
-    wire [23:0] g_rs = ring_rd[RW-80 -: 24];
-    wire [23:0] g_dy = ring_rd[RW-104 -: 24];
-    wire        g_dir = ring_rd[19];
-    wire [18:0] g_r1 = ring_rd[18:0];
+    reg          lw_v;
+    reg [RA-1:0] lw_addr, rq_addr;
+    reg [RW-1:0] lw_data;
+`ifdef EF_FAULT_FWD_AET
+    wire [RW-1:0] ring_rd = ring_q;
+    wire [RW-1:0] unused_lw = lw_data;
+    wire          unused_lwv = lw_v && (lw_addr == rq_addr);
+`else
+    wire [RW-1:0] ring_rd = (lw_v && lw_addr == rq_addr) ? lw_data : ring_q;
+`endif
 
     // ------------------------------------------------------------ row data
-    wire row_start = (ph == PH_W) && plot_ready;
+    wire        row_start = (ph == PH_W) && plot_ready;
     wire [13:0] row_now = row_start ? nx_row : row;
     wire [18:0] base = {5'd0, row_now} << LOG2NS;
-    wire [18:0] rend = base + NSM1;       // the row's last sample row
+    wire [18:0] rend = base + NSM1;
 
-    // first row whose slot still holds edges
-    function [13:0] first_occ;
+    function [13:0] first_occ;     // least set bit
         input [H_MAX-1:0] v;
         integer i;
         begin
@@ -177,68 +169,54 @@ module ef_aet #(
         end
     endfunction
 
-    // ------------------------------------------------------------ cycle
-    // Row start: the first row right after the eos et_wr, later rows in the
-    // first cycle SLB takes plots again.
-    wire start_rd  = row_start && nx_occ;
-    wire [EA-1:0] head = nx_snoop ? rmin_head : hd_eid;
+    // ------------------------------------------------------------ et_rd
+    wire in_rd = (ph == PH_RD) || (row_start && nx_occ);
+    assign et_rd_ready = in_rd;
+    wire rd_take = et_rd_valid && in_rd;
+    assign rec_re = rd_take;
+    assign rec_ra = et_rd_eid;
+    wire [EA:0] n_new_now = (row_start && nx_occ) ? {(EA+1){1'b0}} : n_new;
+    wire rd_end = rd_take && et_rd_last;
 
-    // The walk: in PH_RD the record read of the previous cycle is here.
-    wire walk_stop;
-    wire walk_end  = (ph == PH_RD) && walk_stop;
-    wire walk_more = (ph == PH_RD) && !walk_stop;
+    // ------------------------------------------------------------ plotting
+    wire in_plot = (ph == PH_P0) || (ph == PH_PL) || (row_start && !nx_occ);
+    wire first   = (ph != PH_PL);             // the row's first plot
+    wire fr      = first || fresh;
+    // edges of the row, and which come from the record port (the last new)
+    wire [EA:0]   nn = row_start ? {(EA+1){1'b0}} : n_new;   // new edges of the row
+`ifdef EF_FAULT_LASTEDGE
+    // a shape's first row with two or more new edges loses its last one
+    reg first_row;
+    wire        drop = first_row && (nn >= 2);
+`else
+    wire        drop = 1'b0;
+`endif
+    wire        rec_edge = (nn != 0) && !drop;     // the last edge comes from rec_*
+    wire [EA:0] nn_eff = drop ? nn - 1'b1 : nn;
+    wire [RA+1:0] n_all = {1'b0, n_old} + {{(RA+1-EA){1'b0}}, nn_eff};
+    wire [RA+1:0] k_now = first ? {(RA+2){1'b0}} : k;
+    wire        from_rec = fr && rec_edge && (k_now + 1'b1 == n_all);
 
-    // Plotting this cycle.
-    wire in_plot = (ph == PH_PL) || (row_start && !nx_occ) || walk_end;
-    wire first_plot = (ph != PH_PL);     // the row's first plot (always fresh)
-    wire [EA:0] n_new_now = (ph == PH_RD) ? n_new : {(EA+1){1'b0}};
-    wire [EA:0] nn = first_plot ? n_new_now : n_new_row;   // new edges of the row
-    wire [1:0] src_now = !first_plot ? src
-                       : (n_old != 0) ? SRC_RING
-                       : (n_new_now == 1) ? SRC_REC : SRC_FIRST;
-    wire fr = fresh || first_plot;
+    wire [RW-1:0] src = from_rec ? {rec_x, rec_e, rec_qs, rec_rs, rec_dy, rec_dir, rec_r0, rec_r1} : ring_rd;
+    wire signed [31:0] S_x = fr ? {{7{src[RW-1]}}, src[RW-1 -: 25]} : cur_x;
+    wire [23:0] S_e  = fr ? src[RW-26 -: 24]  : cur_e;
+    wire [29:0] S_qs = fr ? src[RW-50 -: 30]  : cur_qs;
+    wire [23:0] S_rs = fr ? src[RW-80 -: 24]  : cur_rs;
+    wire [23:0] S_dy = fr ? src[RW-104 -: 24] : cur_dy;
+    wire        S_dir = fr ? src[38] : cur_dir;
+    wire [18:0] S_r0 = src[37:19];
+    wire [18:0] S_r1 = fr ? src[18:0] : cur_r1;
 
-    // The edge's state this cycle.
-    reg signed [31:0] S_x;
-    reg [23:0] S_e, S_rs, S_dy;
-    reg [29:0] S_qs;
-    reg        S_dir;
-    reg [18:0] S_r0, S_r1;
-    reg        S_old, S_lastnew;
-    reg [EA-1:0] S_next;
-    always @* begin
-        S_x = cur_x; S_e = cur_e; S_qs = cur_qs; S_rs = cur_rs; S_dy = cur_dy; S_dir = cur_dir;
-        S_r0 = base; S_r1 = cur_r1; S_old = cur_old; S_lastnew = cur_lastnew; S_next = cur_next;
-        if (fr) begin
-            case (src_now)
-                SRC_RING: begin
-                    S_x = {{7{g_x[24]}}, g_x}; S_e = g_e; S_qs = g_qs; S_rs = g_rs; S_dy = g_dy;
-                    S_dir = g_dir; S_r0 = base; S_r1 = g_r1; S_old = 1'b1; S_lastnew = 1'b0;
-                    S_next = {EA{1'b0}};
-                end
-                SRC_FIRST: begin
-                    S_x = {{7{f_x[24]}}, f_x}; S_e = f_e; S_qs = f_qs; S_rs = f_rs; S_dy = f_dy;
-                    S_dir = f_dir; S_r0 = f_r0; S_r1 = f_r1; S_old = 1'b0; S_lastnew = f_last;
-                    S_next = f_next;
-                end
-                default: begin
-                    S_x = {{7{rec_x[24]}}, rec_x}; S_e = rec_e; S_qs = rec_qs; S_rs = rec_rs; S_dy = rec_dy;
-                    S_dir = rec_dir; S_r0 = rec_r0; S_r1 = rec_r1; S_old = 1'b0; S_lastnew = rec_last;
-                    S_next = rec_next;
-                end
-            endcase
-        end
-    end
     /* verilator lint_off UNUSEDSIGNAL */
-    wire [18:0] s0w   = (S_r0 > base) ? (S_r0 - base) : 19'd0;   // < NS
-    wire [4:0]  s_now = fr ? s0w[4:0] : cur_s;
-    wire [18:0] sl_w  = ((S_r1 < rend) ? S_r1 : rend) - base;     // < NS
+    wire [18:0] s0w  = (S_r0 > base) ? (S_r0 - base) : 19'd0;     // < NS
+    wire [18:0] slw  = ((S_r1 < rend) ? S_r1 : rend) - base;       // < NS
     /* verilator lint_on UNUSEDSIGNAL */
-    wire        edge_done = (s_now == sl_w[4:0]);
+    wire [4:0]  s_now = fr ? s0w[4:0] : cur_s;
+    wire        edge_done = (s_now == slw[4:0]);
     wire        survive   = S_r1 > rend;
-    wire [RA:0] k_old_now = first_plot ? {(RA+1){1'b0}} : k_old;
-    wire        more_old  = S_old && (k_old_now + 1'b1 < n_old);
-    wire        row_last  = S_old ? (!more_old && nn == 0) : S_lastnew;
+    wire        row_last  = (k_now + 1'b1 == n_all);
+    // the next edge is in the ring (not the record port's)
+    wire        next_ring = !row_last && !(rec_edge && (k_now + {{RA{1'b0}}, 2'd2} == n_all));
 
     wire [14:0] q;
     wire signed [31:0] x_next;
@@ -248,15 +226,6 @@ module ef_aet #(
         .q(q), .x_next(x_next), .e_next(e_next)
     );
 
-    // next edge's source when this one is done
-    wire rd_ring_next = in_plot && edge_done && more_old;
-    wire rd_rec_next  = in_plot && edge_done && !S_old && !S_lastnew;
-    // leaving the old edges for the new ones: edge 0 needs no read
-    wire [1:0] src_next = more_old ? SRC_RING
-                        : S_old ? ((nn == 1) ? SRC_REC : SRC_FIRST)
-                        : SRC_REC;
-
-    // ------------------------------------------------------------ outputs
     assign plot_valid = in_plot;
     assign plot_last  = in_plot && edge_done && row_last;
     assign plot_row   = row_now;
@@ -264,36 +233,40 @@ module ef_aet #(
     assign plot_q     = q;
     assign plot_dir   = S_dir;
 
-    assign et_rd_valid = start_rd || walk_more;
-    assign et_rd_row   = row_now;
-    wire [EA-1:0] rd_eid = start_rd ? head : rec_next;
-    assign et_rd_eid   = {{(22-EA){1'b0}}, rd_eid};
-
-    // ETM ports
+    // ------------------------------------------------------------ ring ports
+    wire push   = in_plot && edge_done && survive;
+    wire arrive = arr_v && !arr_last;            // t+1 .. t+n-1: no plot yet
+    assign ring_we = push || arrive;
+    // a survivor's r0 is 0: in later rows it starts at sample row 0
+    assign ring_wd = push ? {x_next[24:0], e_next, S_qs, S_rs, S_dy, S_dir, 19'd0, S_r1}
+                          : {rec_x, rec_e, rec_qs, rec_rs, rec_dy, rec_dir, rec_r0, rec_r1};
     wire w1 = (ph == PH_W1);
+    // reads: the next row's first edge (after the last plot), the first new
+    // edge of a row without older ones (with the last et_rd), the next edge
+    // after an edge's last plot
+    assign ring_re = (w1 && aet_cnt != 0)
+                   || (rd_end && n_old == 0 && n_new_now != 0)
+                   || (in_plot && edge_done && next_ring);
+
+    // ------------------------------------------------------------ next row
     wire [13:0] row1 = row + 14'd1;
     wire        occ1 = occ[row1[HA-1:0]];
-    wire [13:0] nx_calc = (aet_cnt != 0) ? row1 : first_occ(occ);
-    assign hd_re  = w1 && (aet_cnt != 0 ? occ1 : (occ != {H_MAX{1'b0}}));
-    assign hd_row = nx_calc;
-    assign hd_take = start_rd;
-    assign hd_take_row = row_now;
-    assign rec_re  = et_rd_valid || rd_rec_next;
-    assign rec_eid = et_rd_valid ? rd_eid : S_next;
-
-    assign ring_re = (w1 && aet_cnt != 0) || rd_ring_next;
-    assign ring_we = in_plot && edge_done && survive;
-    assign ring_wd = {x_next[24:0], e_next, S_qs, S_rs, S_dy, S_dir, S_r1};
+    wire [13:0] ffs = first_occ(occ);          // changes only with occ
+    wire [13:0] nx_calc = (aet_cnt != 0) ? row1 : ffs;
+    wire        nx_occ_calc = (aet_cnt != 0) ? occ1 : 1'b1;
+    wire        shape_end = (aet_cnt == 0) && (occ == {H_MAX{1'b0}});
+    wire        eos_go = etw_valid && etw_eos && any_rec;
+    assign row_req     = eos_go || (w1 && !shape_end && nx_occ_calc);
+    assign row_req_row = eos_go ? rmin : nx_calc;
 
     assign busy = (ph != PH_IDLE);
 
-`ifdef EF_FAULT_LASTEDGE
-    assign walk_stop = rec_last || (rec_next == n_rec - 1'b1);
-`else
-    assign walk_stop = rec_last;
-`endif
+    // et_rd names the row being started (a check, not a function: ETM
+    // presents the row it was asked for)
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [13:0] unused_rd_row = et_rd_row;
+    /* verilator lint_on UNUSEDSIGNAL */
 
-    // ------------------------------------------------------------ registers
     function [RA-1:0] inc;
         input [RA-1:0] p;
         begin
@@ -301,97 +274,96 @@ module ef_aet #(
         end
     endfunction
 
+    // ------------------------------------------------------------ registers
     always @(posedge clk) begin
         if (rst) begin
             ph <= PH_IDLE;
             occ <= {H_MAX{1'b0}};
             any_rec <= 1'b0;
-            wr_eid <= {EA{1'b0}};
             rd_ptr <= {RA{1'b0}};
             wr_ptr <= {RA{1'b0}};
             aet_cnt <= {(RA+1){1'b0}};
             n_old <= {(RA+1){1'b0}};
+            n_new <= {(EA+1){1'b0}};
+            arr_v <= 1'b0;
+            lw_v <= 1'b0;
             fresh <= 1'b1;
         end else begin
             // snoop et_wr: the shape's records, before its rows start
             if (etw_valid && !etw_eos) begin
                 occ[etw_slot[HA-1:0]] <= 1'b1;
-                wr_eid <= wr_eid + 1'b1;
-                if (!occ[etw_slot[HA-1:0]] && (!any_rec || etw_slot < rmin)) begin
+                if (!any_rec || etw_slot < rmin)
                     rmin <= etw_slot;
-                    rmin_head <= wr_eid;
-                end
                 any_rec <= 1'b1;
             end
             if (etw_valid && etw_eos) begin
-                wr_eid <= {EA{1'b0}};
-                n_rec <= wr_eid;
                 any_rec <= 1'b0;
                 if (any_rec) begin
                     ph <= PH_W;
                     nx_row <= rmin;
                     nx_occ <= 1'b1;
-                    nx_snoop <= 1'b1;
                     n_old <= {(RA+1){1'b0}};
                     aet_cnt <= {(RA+1){1'b0}};
+`ifdef EF_FAULT_LASTEDGE
+                    first_row <= 1'b1;
+`endif
                 end
             end
+
+            if (ring_we) begin
+                wr_ptr <= inc(wr_ptr);
+                lw_v <= 1'b1;
+                lw_addr <= wr_ptr;
+                lw_data <= ring_wd;
+            end
+            if (ring_re) begin
+                rd_ptr <= inc(rd_ptr);
+                rq_addr <= rd_ptr;
+            end
+
+            arr_v <= rd_take;
+            arr_last <= rd_end;
 
             if (row_start) begin
                 row <= nx_row;
                 occ[nx_row[HA-1:0]] <= 1'b0;
-                nx_snoop <= 1'b0;
-                if (nx_occ) begin
+                n_new <= {(EA+1){1'b0}};
+                if (nx_occ)
                     ph <= PH_RD;
-                    n_new <= {{EA{1'b0}}, 1'b1};
-                end
             end
-            if (ph == PH_RD) begin
-                if (n_new == 1) begin
-                    f_r0 <= rec_r0; f_r1 <= rec_r1; f_x <= rec_x; f_e <= rec_e; f_qs <= rec_qs;
-                    f_rs <= rec_rs; f_dy <= rec_dy; f_dir <= rec_dir; f_last <= rec_last; f_next <= rec_next;
-                end
-                if (walk_more)
-                    n_new <= n_new + 1'b1;
+            if (rd_take) begin
+                n_new <= n_new_now + 1'b1;
+                if (rd_end)
+                    ph <= PH_P0;
             end
 
             if (in_plot) begin
-                if (first_plot) begin
-                    ph <= PH_PL;
-                    k_old <= {(RA+1){1'b0}};
-                    n_new_row <= n_new_now;
-                end
+                ph <= PH_PL;
                 if (edge_done) begin
                     fresh <= 1'b1;
-                    src <= src_next;
-                    if (S_old)
-                        k_old <= k_old_now + 1'b1;
-                    if (survive) begin
-                        wr_ptr <= inc(wr_ptr);
+                    k <= k_now + 1'b1;
+                    if (push)
                         aet_cnt <= aet_cnt + 1'b1;
-                    end
-                    if (row_last)
+                    if (row_last) begin
                         ph <= PH_W1;
+`ifdef EF_FAULT_LASTEDGE
+                        first_row <= 1'b0;
+`endif
+                    end
                 end else begin
                     fresh <= 1'b0;
+                    k <= k_now;
                     cur_x <= x_next; cur_e <= e_next; cur_qs <= S_qs; cur_rs <= S_rs; cur_dy <= S_dy;
                     cur_dir <= S_dir; cur_r1 <= S_r1; cur_s <= s_now + 1'b1;
-                    cur_old <= S_old; cur_lastnew <= S_lastnew; cur_next <= S_next;
                 end
             end
-
-            if (ring_re)
-                rd_ptr <= inc(rd_ptr);
 
             if (w1) begin
                 n_old <= aet_cnt;
                 aet_cnt <= {(RA+1){1'b0}};
                 nx_row <= nx_calc;
-                nx_occ <= (aet_cnt != 0) ? occ1 : 1'b1;
-                if (aet_cnt == 0 && occ == {H_MAX{1'b0}})
-                    ph <= PH_IDLE;
-                else
-                    ph <= PH_W;
+                nx_occ <= nx_occ_calc;
+                ph <= shape_end ? PH_IDLE : PH_W;
             end
         end
     end

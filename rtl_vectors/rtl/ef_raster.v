@@ -211,6 +211,6 @@ module ef_raster #(
     assign err = cfg_err || err_full;
 
     /* verilator lint_off UNUSEDSIGNAL */
-    wire unused = slb_idle_unused ^ shape_go ^ shape_any ^ row_ack ^ row_nonempty ^ (^row_first) ^ (^row_last) ^ (^shape_nedges);
+    wire unused = slb_idle_unused ^ row_req_ready ^ shape_go ^ shape_any ^ row_ack ^ row_nonempty ^ (^row_first) ^ (^row_last) ^ (^shape_nedges);
     /* verilator lint_on UNUSEDSIGNAL */
 endmodule

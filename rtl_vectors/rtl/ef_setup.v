@@ -78,7 +78,12 @@ module ef_setup #(
     wire signed [25:0] r0_raw = r0_num >>> SH;
     wire signed [25:0] r1_raw = r1_num >>> SH;
     wire signed [25:0] last_row = $signed({6'd0, cfg_height, 5'd0} >> (5 - LOG2NS)) - 26'sd1;  // N*H - 1
+`ifdef EF_FAULT_TOPCLIP
+    // fault build (tests/rtl/rtl-test.sh): the top clip one sample row low
+    wire signed [25:0] r0_c = r0_raw[25] ? 26'sd1 : r0_raw;
+`else
     wire signed [25:0] r0_c = r0_raw[25] ? 26'sd0 : r0_raw;
+`endif
     wire signed [25:0] r1_c = (r1_raw > last_row) ? last_row : r1_raw;
     wire [1:0]         unused_dy = dy_w[25:24];
     wire               keep = (ya != yb) && !(r0_c > r1_c);

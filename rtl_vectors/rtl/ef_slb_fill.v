@@ -144,7 +144,11 @@ module ef_slb_fill #(
     // ------------------------------------------------------------ stage 2
     // cur: the cell as it is now: the RAM read missed a write made at the same
     // edge (read first), so the latest write wins on an address match.
+`ifdef EF_FAULT_FWD
+    wire          fwd  = 1'b0 && lw_valid && (lw_addr == s2_addr[AW-1:0]);   // fault build: no forwarding
+`else
     wire          fwd  = lw_valid && (lw_addr == s2_addr[AW-1:0]);
+`endif
     wire [CW-1:0] cur  = fwd ? lw_data : ram_rd;
 
     wire [NS-1:0] s2_sel = {{(NS-1){1'b0}}, 1'b1} << s2_s;  // one-hot sample
@@ -165,7 +169,14 @@ module ef_slb_fill #(
             wire [6:0] an = f_rule ? (a ^ c) : (a + c);
             assign acc_next[7*l +: 7] = an;
             // mask bit: parity (even-odd) or counter != 0 (non-zero)
+`ifdef EF_FAULT_PAD
+            // fault build: the carry out of the 7-bit lane (the packed word's
+            // pad bit) is not masked off in the non-zero coverage test
+            wire [7:0] an8 = {1'b0, a} + {1'b0, c};
+            assign mask_next[l] = f_rule ? an[0] : (|an8);
+`else
             assign mask_next[l] = f_rule ? an[0] : (|an);
+`endif
         end
     endgenerate
 
@@ -185,7 +196,12 @@ module ef_slb_fill #(
     assign span_x     = start[13:0];   // start < W <= 16384 whenever valid
     // span_end <= W <= 16384 and start < span_end whenever valid: 15 bits.
     wire [14:0] span_end = (s2_op == OP_CELL) ? s2_addr : flush_end;
+`ifdef EF_FAULT_SPAN
+    // fault build: a span of two or more pixels cut one pixel short
+    assign span_len   = (span_end - start > 15'd1) ? span_end - start - 15'd1 : span_end - start;
+`else
     assign span_len   = span_end - start;
+`endif
     generate
         if (NS < 32) begin : mask_pad
             assign span_mask = {{(32-NS){1'b0}}, mask};

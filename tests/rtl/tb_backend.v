@@ -48,37 +48,25 @@ module tb_backend #(
     reg [23:0]   etw_e = 0, etw_rs = 0, etw_dy = 0;
     reg [29:0]   etw_qs = 0;
 
-    // ------------------------------------------------ behavioural ETM
-    reg [18:0] m_r0 [0:E_MAX-1];
-    reg [18:0] m_r1 [0:E_MAX-1];
-    reg [24:0] m_x  [0:E_MAX-1];
-    reg [23:0] m_e  [0:E_MAX-1];
-    reg [29:0] m_qs [0:E_MAX-1];
-    reg [23:0] m_rs [0:E_MAX-1];
-    reg [23:0] m_dy [0:E_MAX-1];
-    reg        m_dir[0:E_MAX-1];
-    reg        m_nv [0:E_MAX-1];
-    reg [EA-1:0] m_next[0:E_MAX-1];
-    reg          s_v   [0:H_MAX-1];
-    reg [EA-1:0] s_head[0:H_MAX-1];
-    reg [EA-1:0] s_tail[0:H_MAX-1];
-    reg [EA-1:0] w_eid;
-
-    wire          hd_re, hd_take, rec_re;
-    wire [13:0]   hd_row, hd_take_row;
-    wire [EA-1:0] rec_eid;
-    reg  [EA-1:0] hd_eid = 0;
-    reg  [18:0]   rec_r0 = 0, rec_r1 = 0;
-    reg  [24:0]   rec_x = 0;
-    reg  [23:0]   rec_e = 0, rec_rs = 0, rec_dy = 0;
-    reg  [29:0]   rec_qs = 0;
-    reg           rec_dir = 0, rec_last = 0;
-    reg  [EA-1:0] rec_next = 0;
+    // ------------------------------------------------ ETM <-> AET
+    wire          row_req, row_req_ready, row_ack, row_nonempty, etm_init;
+    wire [13:0]   row_req_row;
+    wire          rd_valid, rd_ready, rd_last;
+    wire [13:0]   rd_row;
+    wire [21:0]   rd_eid;
+    wire          rec_re, rec_dir;
+    wire [21:0]   rec_ra;
+    wire [18:0]   rec_r0, rec_r1;
+    wire [24:0]   rec_x;
+    wire [23:0]   rec_e, rec_rs, rec_dy;
+    wire [29:0]   rec_qs;
+    wire          etw_ready, shape_go, shape_any, err_full;
+    wire [13:0]   row_first, row_last;
+    wire [22:0]   shape_nedges;
 
     // ------------------------------------------------ DUT
-    wire        et_rd_valid, plot_valid, plot_ready, plot_last, plot_dir, aet_busy;
-    wire [13:0] et_rd_row, plot_row;
-    wire [21:0] et_rd_eid;
+    wire        plot_valid, plot_ready, plot_last, plot_dir, aet_busy;
+    wire [13:0] plot_row;
     wire [4:0]  plot_s;
     wire [14:0] plot_q;
     wire        span_valid, span_ready, init_done, slb_idle;
@@ -95,14 +83,28 @@ module tb_backend #(
     wire [31:0] fb_wdata;
     reg  [31:0] fb_rdata = 32'd0;
 
+    ef_etm #(.NS(NS), .H_MAX(H_MAX), .E_MAX(E_MAX)) u_etm (
+        .clk(clk), .rst(rst), .init_done(etm_init),
+        .et_wr_valid(etw_valid), .et_wr_ready(etw_ready), .et_wr_eos(etw_eos), .et_wr_slot(etw_slot),
+        .et_wr_r0(etw_r0), .et_wr_r1(etw_r1), .et_wr_x(etw_x), .et_wr_e(etw_e), .et_wr_qs(etw_qs),
+        .et_wr_rs(etw_rs), .et_wr_dy(etw_dy), .et_wr_dir(etw_dir),
+        .shape_go(shape_go), .shape_any(shape_any), .row_first(row_first), .row_last(row_last),
+        .shape_nedges(shape_nedges), .err_full(err_full),
+        .row_req(row_req), .row_req_ready(row_req_ready), .row_req_row(row_req_row),
+        .row_ack(row_ack), .row_nonempty(row_nonempty),
+        .et_rd_valid(rd_valid), .et_rd_ready(rd_ready), .et_rd_row(rd_row), .et_rd_eid(rd_eid),
+        .et_rd_last(rd_last),
+        .rec_re(rec_re), .rec_ra(rec_ra), .rec_r0(rec_r0), .rec_r1(rec_r1), .rec_x(rec_x), .rec_e(rec_e),
+        .rec_qs(rec_qs), .rec_rs(rec_rs), .rec_dy(rec_dy), .rec_dir(rec_dir)
+    );
     ef_aet #(.NS(NS), .H_MAX(H_MAX), .E_MAX(E_MAX)) u_aet (
         .clk(clk), .rst(rst), .cfg_width(cfg_width),
         .etw_valid(etw_valid), .etw_eos(etw_eos), .etw_slot(etw_slot),
-        .hd_re(hd_re), .hd_row(hd_row), .hd_eid(hd_eid), .hd_take(hd_take), .hd_take_row(hd_take_row),
-        .rec_re(rec_re), .rec_eid(rec_eid), .rec_r0(rec_r0), .rec_r1(rec_r1), .rec_x(rec_x),
+        .row_req(row_req), .row_req_row(row_req_row),
+        .et_rd_valid(rd_valid), .et_rd_ready(rd_ready), .et_rd_row(rd_row), .et_rd_eid(rd_eid),
+        .et_rd_last(rd_last),
+        .rec_re(rec_re), .rec_ra(rec_ra), .rec_r0(rec_r0), .rec_r1(rec_r1), .rec_x(rec_x),
         .rec_e(rec_e), .rec_qs(rec_qs), .rec_rs(rec_rs), .rec_dy(rec_dy), .rec_dir(rec_dir),
-        .rec_last(rec_last), .rec_next(rec_next),
-        .et_rd_valid(et_rd_valid), .et_rd_row(et_rd_row), .et_rd_eid(et_rd_eid),
         .plot_valid(plot_valid), .plot_ready(plot_ready), .plot_last(plot_last), .plot_row(plot_row),
         .plot_s(plot_s), .plot_q(plot_q), .plot_dir(plot_dir), .busy(aet_busy)
     );
@@ -240,13 +242,10 @@ module tb_backend #(
         $readmemh(cmd_name, cmd_mem, 0, NCMD - 1);
         if (NETW > 0)
             $readmemh(etw_name, etw_mem, 0, NETW - 1);
-        for (fi = 0; fi < H_MAX; fi = fi + 1)
-            s_v[fi] = 1'b0;
         for (fi = 0; fi < (1 << FB_BITS); fi = fi + 1)
             fb_gen[fi] = 16'd0;
         frame_no = 16'd0;
         fb_used = 0;
-        w_eid = 0;
         ic = 0; ie = 0; errors = 0; n_rd = 0; n_pl = 0; n_sp = 0; n_px = 0; n_bp = 0;
         running = 1'b0; done = 1'b0; cyc = 0; wait_drain = 1'b0; n_freeze = 0;
         limit = (NETW > 0 ? etw_mem[NETW-1][EW-1 -: 48] : 48'd0) * 48'd4 + 48'd4000000;
@@ -260,31 +259,6 @@ module tb_backend #(
 
     // ETM and frame memory: synchronous ports.
     always @(posedge clk) begin
-        if (etw_valid && !etw_eos) begin
-            m_r0[w_eid] <= etw_r0; m_r1[w_eid] <= etw_r1; m_x[w_eid] <= etw_x; m_e[w_eid] <= etw_e;
-            m_qs[w_eid] <= etw_qs; m_rs[w_eid] <= etw_rs; m_dy[w_eid] <= etw_dy; m_dir[w_eid] <= etw_dir;
-            m_nv[w_eid] <= 1'b0;
-            if (s_v[etw_slot]) begin
-                m_next[s_tail[etw_slot]] <= w_eid;
-                m_nv[s_tail[etw_slot]] <= 1'b1;
-            end else begin
-                s_head[etw_slot] <= w_eid;
-            end
-            s_v[etw_slot] <= 1'b1;
-            s_tail[etw_slot] <= w_eid;
-            w_eid <= w_eid + 1'b1;
-        end
-        if (etw_valid && etw_eos)
-            w_eid <= 0;
-        if (hd_re)
-            hd_eid <= s_head[hd_row];
-        if (hd_take)
-            s_v[hd_take_row] <= 1'b0;
-        if (rec_re) begin
-            rec_r0 <= m_r0[rec_eid]; rec_r1 <= m_r1[rec_eid]; rec_x <= m_x[rec_eid]; rec_e <= m_e[rec_eid];
-            rec_qs <= m_qs[rec_eid]; rec_rs <= m_rs[rec_eid]; rec_dy <= m_dy[rec_eid]; rec_dir <= m_dir[rec_eid];
-            rec_last <= !m_nv[rec_eid]; rec_next <= m_next[rec_eid];
-        end
         if (fb_re) begin
             fb_a = fb_ry * cfg_width + fb_rx;
             fi = fb_find(fb_a);
@@ -308,15 +282,23 @@ module tb_backend #(
 
     always @(posedge clk) begin
         if (!running) begin
-            if (!rst && init_done) begin
+            if (!rst && init_done && etm_init) begin
                 running <= 1'b1;
                 cyc <= 48'd0;
                 sclk = 48'd0;
                 present(48'd0);
             end
         end else if (!done) begin
-            if (et_rd_valid) begin
-                $fwrite(f_rd, "%h\n", {cyc, et_rd_row, et_rd_eid}); n_rd = n_rd + 1;
+            if (rd_valid && rd_ready) begin
+                $fwrite(f_rd, "%h\n", {cyc, rd_row, rd_eid}); n_rd = n_rd + 1;
+            end
+            if (row_req && !row_req_ready) begin
+                if (errors < 10) $display("tb_backend: cycle %0d: ETM not ready for a row request", cyc);
+                errors = errors + 1;
+            end
+            if (etw_valid && !etw_ready) begin
+                if (errors < 10) $display("tb_backend: cycle %0d: ETM not ready for et_wr", cyc);
+                errors = errors + 1;
             end
             if (plot_valid && plot_ready) begin
                 $fwrite(f_pl, "%h\n", {cyc, plot_last, plot_row, plot_s, plot_q, plot_dir}); n_pl = n_pl + 1;

@@ -263,7 +263,9 @@ module tb_raster #(
         ic = 0; n_pix = 0; n_bp = 0; errors = 0; cyc = 0; running = 1'b0;
         n_seg = 0; n_etw = 0; n_etr = 0; n_plot = 0; n_span = 0;
         // generous: every cycle of the stamps and then some per command
-        limit = (ncmd > 0 ? cmd_mem[ncmd-1][CWD-1 -: 48] : 48'd0) * 48'd8 + 48'd2000000;
+        // twice the stamps and then some: a slower DUT (back-pressure) fits,
+        // a runaway one (a fault build) stops soon, its dumps closed
+        limit = (ncmd > 0 ? cmd_mem[ncmd-1][CWD-1 -: 48] : 48'd0) * 48'd2 + 48'd20000;
         open_dump(f_seg, "seg", "DEC -> SETUP");
         open_dump(f_etw, "et_wr", "SETUP -> ETM");
         open_dump(f_etr, "et_rd", "ETM -> AET");
@@ -344,6 +346,7 @@ module tb_raster #(
                     $display("tb_raster: FAIL NS=%0d: %0d errors", NS, errors);
                 $finish;
             end else if (cyc > limit) begin
+                $fclose(f_seg); $fclose(f_etw); $fclose(f_etr); $fclose(f_plot); $fclose(f_span); $fclose(f_pix);
                 $display("tb_raster: FAIL timeout at cycle %0d (command %0d of %0d)", cyc, ic, ncmd);
                 $finish;
             end

@@ -1,0 +1,272 @@
+#!/usr/bin/env bash
+# tests/rtl/rtl-test.sh - the whole pipeline in RTL (issue 18): ef_raster
+# (rtl_vectors/rtl/) turns cmd.stim.hex into pix cycle for cycle, and every
+# internal interface with it, under Icarus and Verilator.
+#
+#   1. lint: verilator --lint-only -Wall of ef_raster at NS 8/16/32 and
+#      iverilog -g2005 -Wall: silent;
+#   2. cases: every shared SVG (tests/data/svg) at 32x24 and a slice of the
+#      `edgeflag gen` level-1 set (EF_RTL_SLICE: every Nth case, default 9),
+#      rotating over NS 8/16/32 x the rule settings (scene, nonzero,
+#      evenodd), each in Icarus and in Verilator; `edgeflag check --cycles`
+#      must pass on seg, et_wr, et_rd, plot, span and pix;
+#   3. random back-pressure on pix (seeded): --transactions must pass, in
+#      both simulators;
+#   4. refusals: a canvas over W_MAX, a shape over E_MAX edges and a stamp
+#      going backwards are refused by tb_raster naming the file and line,
+#      which the script finds independently (the line of the offending word);
+#   5. faults: each EF_FAULT_* build runs a case that exercises it; `edgeflag
+#      check` must fail (exit 1) and its earliest reported mismatch must be on
+#      the fault's interface, at the cycle where a plain in-order comparison
+#      of the two hex files (awk, independent of edgeflag check) first
+#      differs, with a field the fault changes marked.
+#
+# usage: bash tests/rtl/rtl-test.sh BUILD_DIR   (make rtl-test; EF_RTL_JOBS
+#        (default 2), EF_RTL_SLICE, EF_RTL_KEEP=1 keeps the work directory)
+# Ends with "N passed, M failed"; exit status 0 only if nothing failed.
+# Needs iverilog and verilator (tools/install-deps.sh test installs them).
+set -u
+export LC_ALL=C
+
+build=${1:?usage: tests/rtl/rtl-test.sh BUILD_DIR}
+root=$(cd "$(dirname "$0")/../.." && pwd)
+case $build in /*) ;; *) build=$PWD/$build ;; esac
+EF=$build/edgeflag
+TB=$root/tests/rtl
+R=$root/rtl_vectors/rtl
+RTL="$R/ef_raster.v $R/ef_dec.v $R/ef_setup.v $R/ef_div.v $R/ef_etm.v $R/ef_aet.v $R/ef_plot.v $R/ef_slb_fill.v $R/ef_slb_ram.v $R/ef_cov.v"
+jobs=${EF_RTL_JOBS:-2}
+slice=${EF_RTL_SLICE:-7}
+# the hardware the cases run on (small: the gen slice's canvases fit)
+WM=256 HM=256 EM=16384
+
+for t in iverilog vvp verilator; do
+    command -v $t >/dev/null 2>&1 || { echo "rtl-test: $t is not installed ('make deps-test')"; exit 1; }
+done
+[ -x "$EF" ] || { echo "rtl-test: $EF not built (make cli)"; exit 1; }
+
+tmpbase=${TMPDIR:-/tmp}
+[ -z "${TMPDIR:-}" ] && [ -d /dev/shm ] && [ -w /dev/shm ] && tmpbase=/dev/shm
+work=$(mktemp -d "$tmpbase/edgeflag-rtltest.XXXXXX") || exit 1
+if [ -n "${EF_RTL_KEEP:-}" ]; then echo "rtl-test: keeping $work"; else trap 'rm -rf "$work"' EXIT; fi
+mkdir -p "$work/logs"
+t_start=$(date +%s)
+
+order=()
+submit() {
+    local name=$1; shift
+    while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do wait -n; done
+    ( "$@" ) >"$work/logs/$name.log" 2>&1 &
+    order+=("$name")
+}
+pass=0 fail=0
+collect() {
+    wait
+    local n v
+    for n in "${order[@]}"; do
+        v=$(grep -E '^RESULT (PASS|FAIL)' "$work/logs/$n.log" | tail -n 1)
+        if [ "${v#RESULT PASS}" != "$v" ]; then
+            pass=$((pass + 1)); echo "PASS ${v#RESULT PASS }"
+        else
+            fail=$((fail + 1)); echo "FAIL $n: ${v#RESULT FAIL }"
+            tail -n 12 "$work/logs/$n.log" | sed 's/^/    /'
+        fi
+    done
+    order=()
+}
+
+# ---------------------------------------------------------------- 1. lint
+lint() {
+    local ns=$1 out
+    out=$(verilator --lint-only -Wall -GNS="$ns" -GW_MAX=320 -GH_MAX=240 -GE_MAX=512 --top-module ef_raster $RTL 2>&1)
+    [ -z "$out" ] || { echo "$out" | head -20; echo "RESULT FAIL lint ef_raster NS=$ns: verilator -Wall is not silent"; return; }
+    out=$(iverilog -g2005 -Wall -Pef_raster.NS="$ns" -s ef_raster -o /dev/null $RTL 2>&1)
+    [ -z "$out" ] || { echo "$out" | head -20; echo "RESULT FAIL lint ef_raster NS=$ns: iverilog -Wall is not silent"; return; }
+    echo "RESULT PASS lint ef_raster NS=$ns: verilator --lint-only -Wall and iverilog -g2005 -Wall silent"
+}
+for ns in 8 16 32; do submit "lint_$ns" lint $ns; done
+
+# ---------------------------------------------------------------- builds
+# build_iv NS [DEFINE]: one Icarus build per sample count (and fault)
+build_iv() {
+    local ns=$1 def=${2:-} o=$work/iv_$1${2:+_$2}
+    mkdir -p "$o"
+    iverilog -g2005 ${def:+-D$def} -o "$o/t.vvp" -Ptb_raster.NS="$ns" -Ptb_raster.W_MAX=$WM -Ptb_raster.H_MAX=$HM \
+        -Ptb_raster.E_MAX=$EM -Ptb_raster.FB_BITS=16 "$TB/tb_raster.v" $RTL &&
+        echo "RESULT PASS build icarus NS=$ns ${def}" || echo "RESULT FAIL build icarus NS=$ns $def"
+}
+build_vl() {
+    local ns=$1 o=$work/vl_$1
+    mkdir -p "$o"
+    verilator --binary --timing -O1 -Wno-fatal -Wno-WIDTH --Mdir "$o/obj" --top-module tb_raster \
+        -GNS="$ns" -GW_MAX=$WM -GH_MAX=$HM -GE_MAX=$EM -GFB_BITS=16 "$TB/tb_raster.v" $RTL >"$o/build.log" 2>&1 &&
+        echo "RESULT PASS build verilator NS=$ns" || { tail -20 "$o/build.log"; echo "RESULT FAIL build verilator NS=$ns"; }
+}
+faults="EF_FAULT_ROOKS EF_FAULT_PAD EF_FAULT_TOPCLIP EF_FAULT_LASTEDGE EF_FAULT_DIV_FLOOR EF_FAULT_FWD EF_FAULT_SPAN"
+for ns in 8 16 32; do submit "build_vl_$ns" build_vl $ns; done
+for ns in 8 16 32; do submit "build_iv_$ns" build_iv $ns; done
+for f in $faults; do submit "build_iv_$f" build_iv 8 "$f"; done
+
+# ---------------------------------------------------------------- vectors
+"$EF" gen -o "$work/gen" >"$work/logs/gen.log" 2>&1 || { cat "$work/logs/gen.log"; exit 1; }
+cases=()      # NAME|INPUT|NS|RULE|SIZE
+k=0
+for f in "$root"/tests/data/svg/*.svg; do
+    ns=$((8 << (k % 3))); rule=$(echo scene nonzero evenodd | cut -d' ' -f$(( (k / 3) % 3 + 1 )))
+    cases+=("svg_$(basename "$f" .svg)_${ns}_$rule|$f|$ns|$rule|24x18"); k=$((k + 1))
+done
+while IFS=$'\t' read -r num file kind cat name rest; do
+    [ "$kind" = directed ] || [ "$kind" = random ] || continue
+    case $name in canvas-max*|zigzag-4096|same-cell-4096) continue ;; esac   # over the bench's W_MAX/H_MAX, or slow
+    [ $((num % slice)) = 0 ] || continue
+    ns=$((8 << (k % 3))); rule=$(echo scene nonzero evenodd | cut -d' ' -f$(( (k / 3) % 3 + 1 )))
+    cases+=("gen_${num}_${name}_${ns}_$rule|$work/gen/$file|$ns|$rule|-"); k=$((k + 1))
+done < <(tail -n +3 "$work/gen/index.tsv")
+
+vectors() {      # vectors NAME INPUT NS RULE SIZE
+    local d=$work/vec/$1 args=()
+    [ "$4" != scene ] && args+=(--rule "$4"); [ "$5" != - ] && args+=(--size "$5")
+    "$EF" vectors "$2" -o "$d" --samples "$3" "${args[@]}" --formats hex >"$work/logs/vec_$1.log" 2>&1
+}
+mkdir -p "$work/vec"
+# A case whose canvas is over the bench's W_MAX x H_MAX is left out (the
+# refusal itself is tested below); Icarus runs the cases of at most
+# EF_RTL_IV_CYCLES cycles (default 8000: it simulates this design at a few
+# thousand cycles per second), Verilator all.
+ivmax=${EF_RTL_IV_CYCLES:-8000}
+kept=() nskip=0
+for c in "${cases[@]}"; do
+    IFS='|' read -r n i ns rule size <<<"$c"
+    vectors "$n" "$i" "$ns" "$rule" "$size" || { echo "FAIL vectors $n"; fail=$((fail + 1)); continue; }
+    read -r w h <<<"$(sed -n 's/.*; size \([0-9]*\)x\([0-9]*\);.*/\1 \2/p' "$work/vec/$n/cmd.stim.hex" | head -n 1)"
+    if [ "$w" -gt $WM ] || [ "$h" -gt $HM ]; then nskip=$((nskip + 1)); continue; fi
+    cyc=$(sed -n 's/.*"cycles": \([0-9]*\).*/\1/p' "$work/vec/$n/manifest.json")
+    kept+=("$c|$cyc")
+done
+echo "rtl-test: ${#kept[@]} cases ($nskip gen cases left out: canvas over ${WM}x$HM)"
+cases=("${kept[@]}")
+collect
+
+# ---------------------------------------------------------------- 2. cases
+# run SIM NAME NS [bp SEED]
+run() {
+    local sim=$1 n=$2 ns=$3 bp=${4:-} v=$work/vec/$2 a=$work/act_$1_$2 mode=--cycles pa=() t0 t1 out
+    mkdir -p "$a"
+    [ -n "$bp" ] && { pa+=(+bp="$bp"); mode=--transactions; }
+    t0=$(date +%s.%N)
+    if [ "$sim" = icarus ]; then out=$(vvp -n "$work/iv_$ns/t.vvp" +cmd="$v/cmd.stim.hex" +out="$a/" "${pa[@]}" 2>&1)
+    else out=$("$work/vl_$ns/obj/Vtb_raster" +cmd="$v/cmd.stim.hex" +out="$a/" "${pa[@]}" 2>&1); fi
+    t1=$(date +%s.%N)
+    echo "$out"
+    echo "$out" | grep -q '^tb_raster: PASS' || { echo "RESULT FAIL $sim $n${bp:+ bp}: the bench did not pass"; return; }
+    "$EF" check "$v" "$a" $mode --errors 5 || { echo "RESULT FAIL $sim $n${bp:+ bp}: edgeflag check $mode"; return; }
+    cyc=$(echo "$out" | sed -n 's/.* \([0-9]*\) cycles.*/\1/p' | head -n 1)
+    echo "RESULT PASS $sim $n${bp:+ (back-pressure seed $bp)}: edgeflag check $mode passes on seg, et_wr, et_rd, plot, span, pix ($cyc cycles, $(awk -v a="$t0" -v b="$t1" -v c="$cyc" 'BEGIN { printf "%.0f", c / (b - a) }') cycles/s)"
+}
+niv=0
+for c in "${cases[@]}"; do
+    IFS='|' read -r n i ns rule size cyc <<<"$c"
+    [ "$cyc" -le "$ivmax" ] && { submit "icarus_$n" run icarus "$n" "$ns"; niv=$((niv + 1)); }
+    submit "verilator_$n" run verilator "$n" "$ns"
+done
+bpcase=$(printf '%s\n' "${cases[@]}" | grep '^svg_tiger' | head -n 1 | cut -d'|' -f1)
+bpns=$(printf '%s\n' "${cases[@]}" | grep '^svg_tiger' | head -n 1 | cut -d'|' -f3)
+submit icarus_bp run icarus "$bpcase" "$bpns" 20070101
+submit verilator_bp run verilator "$bpcase" "$bpns" 424242
+
+# ---------------------------------------------------------------- 4. refusals
+refusal() {      # refusal KIND
+    local kind=$1 d=$work/ref_$1 src f line want out
+    mkdir -p "$d"; src=$work/vec/$bpcase/cmd.stim.hex; f=$d/cmd.stim.hex
+    case $kind in
+        canvas)   # the FRAME word (the first word) gets a width of W_MAX + 1
+            awk -v w=$((WM + 1)) '!/^\/\// && !done { printf "%012x1%06x%s\n", 0, w, substr($0, 20); done = 1; next } { print }' "$src" >"$f" ;;
+        edges)    # a shape of E_MAX + 1 EDGE commands
+            awk -v n=$((EM + 1)) '/^\/\// { print; next } { c++; if (c == 1) { print; printf "%012x2000000000000000000000000\n", 1; for (i = 0; i < n; i++) printf "%012x3%06x%06x%06x%06x\n", 2 + i, 0, 0, 256, 256; printf "%012x4000000000000000000000000\n", n + 2; exit } }' "$src" >"$f" ;;
+        backwards) # the third word's stamp set to 0
+            awk '!/^\/\// { c++; if (c == 3) { printf "%012x%s\n", 0, substr($0, 13); next } } { print }' "$src" >"$f" ;;
+    esac
+    case $kind in
+        canvas)    line=$(grep -vn '^//' "$f" | head -n 1 | cut -d: -f1); want="FRAME canvas over" ;;
+        edges)     line=$(grep -vn '^//' "$f" | sed -n "$((EM + 3))p" | cut -d: -f1); want="a shape of more EDGE commands than" ;;
+        backwards) line=$(grep -vn '^//' "$f" | sed -n 3p | cut -d: -f1); want="cycle stamp does not increase" ;;
+    esac
+    out=$(vvp -n "$work/iv_8/t.vvp" +cmd="$f" +out="$d/" 2>&1); echo "$out"
+    echo "$out" | grep -qF "tb_raster: REFUSED $f:$line: $want" &&
+        echo "RESULT PASS refusal $kind: tb_raster refuses it at $(basename "$f"):$line ($want ...)" ||
+        echo "RESULT FAIL refusal $kind: expected 'REFUSED $f:$line: $want'"
+}
+for k in canvas edges backwards; do submit "refusal_$k" refusal $k; done
+
+# ---------------------------------------------------------------- 5. faults
+# first_diff DIR_EXPECTED DIR_ACTUAL: "IFACE CYCLE" of the earliest first
+# difference over the interfaces, by plain in-order comparison of the words.
+first_diff() {
+    local i best=""
+    # payload widths P of docs/microarch.md 3: the cycle is the word's bits above P
+    for i in seg:97 et_wr:181 et_rd:36 plot:36 span:75 pix:68; do
+        awk -v i=${i%:*} -v p=${i#*:} '
+            function cycle(w,   b, k, d, c) {
+                b = ""
+                for (k = 1; k <= length(w); k++) {
+                    d = index("0123456789abcdef", tolower(substr(w, k, 1))) - 1
+                    b = b (int(d / 8) % 2) (int(d / 4) % 2) (int(d / 2) % 2) (d % 2)
+                }
+                b = substr(b, 1, length(b) - p); c = 0
+                for (k = 1; k <= length(b); k++) c = c * 2 + substr(b, k, 1)
+                return c
+            }
+            FNR == 1 { f++ } /^\/\// || /^$/ { next } f == 1 { e[++ne] = $1 } f == 2 { a[++na] = $1 }
+            END { n = ne > na ? ne : na
+                  for (k = 1; k <= n; k++) if (e[k] != a[k]) {
+                      c = (k <= ne) ? cycle(e[k]) : cycle(a[k])
+                      if (k <= na && k <= ne && cycle(a[k]) < c) c = cycle(a[k])
+                      printf "%s %.0f\n", i, c; exit } }' \
+            "$1/${i%:*}.expected.hex" "$2/${i%:*}.actual.hex"
+    done | sort -k2,2n -k1,1 | head -n 1
+}
+fault() {        # fault DEFINE CASE IFACE FIELDS
+    local def=$1 n=$2 want_if=$3 fields=$4 v=$work/vec/$2 a=$work/fault_$1 rc rep got_if got_cyc ind
+    mkdir -p "$a"
+    vvp -n "$work/iv_8_$def/t.vvp" +cmd="$v/cmd.stim.hex" +out="$a/" | tail -n 2
+    "$EF" check "$v" "$a" --cycles --errors 100000 >"$a/check.out" 2>"$a/check.err"; rc=$?
+    [ $rc = 1 ] || { echo "RESULT FAIL fault $def: edgeflag check exit $rc, expected 1"; return; }
+    # the earliest reported mismatch
+    rep=$(grep -E '^[^ ]+: [a-z_]+: cycle [0-9]+' "$a/check.out" | sed -E 's/^[^ ]+: ([a-z_]+): cycle ([0-9]+)(.*)$/\2 \1 \3/' | sort -n -k1,1 | head -n 1)
+    got_cyc=${rep%% *}; rep=${rep#* }; got_if=${rep%% *}
+    ind=$(first_diff "$v" "$a")
+    echo "earliest reported: $got_if cycle $got_cyc: ${rep#* }"; echo "independent first difference: $ind"
+    [ "$got_if" = "$want_if" ] || { echo "RESULT FAIL fault $def: first mismatch on $got_if, expected $want_if"; return; }
+    # check places a pair at its expected cycle and names the actual one too
+    # ("and the cycle: expected C1, actual C2"); an extra one at its actual cycle
+    local alt
+    alt=$(echo "$rep" | sed -n 's/.*and the cycle: expected [0-9]*, actual \([0-9]*\).*/\1/p')
+    if [ "$ind" != "$got_if $got_cyc" ] && { [ -z "$alt" ] || [ "$ind" != "$got_if $alt" ]; }; then
+        echo "RESULT FAIL fault $def: reported at $got_if $got_cyc${alt:+ (actual $alt)}, the files first differ at $ind"; return
+    fi
+    local ok=0 fld
+    for fld in ${fields//,/ }; do echo "$rep" | grep -qE "actual .*\b$fld=[^ ;]*\*" && ok=1; done
+    [ "$fields" = "-" ] && echo "$rep" | grep -qE 'missing transaction|extra transaction|fields differ|cycle differs' && ok=1
+    [ $ok = 1 ] || { echo "RESULT FAIL fault $def: none of the fields $fields is marked as differing"; return; }
+    echo "RESULT PASS fault $def: edgeflag check fails; first mismatch on $got_if at cycle $got_cyc (the files' first difference), field ${fields} ($n)"
+}
+collect
+# The fault cases need vectors at 8 samples: the tiger for most, gen's directed cases for the rest.
+for x in "tiger|$root/tests/data/svg/tiger.svg|scene|32x24" "tiger_nz|$root/tests/data/svg/tiger.svg|nonzero|32x24"; do
+    IFS='|' read -r n i rule size <<<"$x"; vectors "f_$n" "$i" 8 "$rule" "$size"
+done
+for nm in outside-crossing slope-1-sample-per-row; do
+    f=$(awk -F'\t' -v n=$nm '$5 == n { print $2 }' "$work/gen/index.tsv"); vectors "f_$nm" "$work/gen/$f" 8 scene -
+done
+submit fault_rooks     fault EF_FAULT_ROOKS     f_tiger plot q
+submit fault_pad       fault EF_FAULT_PAD       f_tiger_nz span mask,x,len
+submit fault_topclip   fault EF_FAULT_TOPCLIP   f_outside-crossing et_wr r0,x,e,slot
+submit fault_lastedge  fault EF_FAULT_LASTEDGE  f_tiger plot -
+submit fault_divfloor  fault EF_FAULT_DIV_FLOOR f_tiger et_wr x,e,qs,rs
+submit fault_fwd       fault EF_FAULT_FWD       f_tiger span -
+submit fault_span      fault EF_FAULT_SPAN      f_tiger span len
+collect
+
+echo "rtl-test: ${#cases[@]} cases in Verilator, $niv of them in Icarus; $(( $(date +%s) - t_start )) s"
+echo "rtl-test: $pass passed, $fail failed"
+[ $fail = 0 ]
