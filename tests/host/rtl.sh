@@ -11,7 +11,7 @@
 #      n-rooks offset in PLOT): verify exits 1, the earliest mismatch (by cycle) on plot, none
 #      on seg or et_wr (et_rd, span and pix follow: PLOT's back-pressure and its wrong samples);
 #   4. a canvas over the RTL's W_MAX: exit 3, the host refusing it from identify's limits; a
-#      shape of 5,000 edges (over E_MAX): exit 6, the board's ERROR naming E_MAX; `--sim-dut` misspelt: exit 2; an
+#      shape of 34,000 edges (over E_MAX): exit 6, the board's ERROR naming E_MAX; `--sim-dut` misspelt: exit 2; an
 #      edgeflag-host built without the RTL DUT: `--sim-dut rtl` exit 7 naming make host-rtl,
 #      and --version says whether it is built in.
 # usage: bash tests/host/rtl.sh BUILD_DIR   (`make test-host-rtl`; EF_RTL_DUT_SRC: another
@@ -152,22 +152,22 @@ vec wide stress_pixi_figure8.svg 8 1100x40 &&
         bad "a canvas over W_MAX with the RTL DUT" "exit $rc; $(tail -n 3 wide.err)"
     fi
 }
-# one shape of 5,000 edges: over the RTL's E_MAX (4,096); the DUT refuses it (ERROR code 16)
+# one shape of 34,000 edges: over the RTL's E_MAX (32,768); the DUT refuses it (ERROR code 16)
 awk 'BEGIN { printf "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"64\" height=\"48\"><path d=\"M"
-             for (i = 0; i < 5000; i++) printf "%s%d %d", (i ? " L" : ""), 32 + (i % 2 ? 20 : 10) * cos(6.2831853 * i / 5000),
-                                             24 + (i % 2 ? 20 : 10) * sin(6.2831853 * i / 5000)
+             for (i = 0; i < 34000; i++) printf "%s%d %d", (i ? " L" : ""), 32 + (i % 2 ? 20 : 10) * cos(6.2831853 * i / 34000),
+                                             24 + (i % 2 ? 20 : 10) * sin(6.2831853 * i / 34000)
              print " Z\" fill=\"red\"/></svg>" }' >many.svg
 if "$E" vectors many.svg -o many --samples 8 >many.log 2>&1; then
     "$H" verify many/vectors.bin --transport sim --sim-dut rtl --results many.r >many.out 2>many.err
     rc=$?
-    if [ $rc = 6 ] && grep -q "code 16: a shape of more EDGE commands than the RTL's E_MAX (4096)" many.err &&
+    if [ $rc = 6 ] && grep -q "code 16: a shape of more EDGE commands than the RTL's E_MAX (32768)" many.err &&
        [ ! -e many.r/vectors.actual.bin ]; then
-        ok "a shape of 5000 edges with the RTL DUT: exit 6, $(head -n 1 many.err)"
+        ok "a shape of 34000 edges with the RTL DUT: exit 6, $(head -n 1 many.err)"
     else
         bad "a shape over E_MAX with the RTL DUT" "exit $rc; $(tail -n 3 many.err)"
     fi
 else
-    cat many.log; bad "edgeflag vectors of a 5000-edge shape"
+    cat many.log; bad "edgeflag vectors of a 34000-edge shape"
 fi
 "$H" verify "$n/vectors.bin" --transport sim --sim-dut verilog >usage.out 2>usage.err
 rc=$?
