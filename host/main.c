@@ -15,6 +15,7 @@
 
 #include "bench_link.h"
 #include "cli.h"
+#include "dut_rtl.h"
 #include "edgeflag.h"
 #include "ef_trace.h"
 #include "host_link.h"
@@ -57,6 +58,8 @@ static void usage(FILE *f)
           "  --timeout MS         no progress for MS ms: retransmit; 4 times: give up (default 2000)\n"
           "  --sim-state DIR      sim: keep the simulated board's state in DIR (it outlives the process)\n"
           "  --sim-faults LIST    sim: play faults, KIND=N,... (docs/board.md section 6)\n"
+          "  --sim-dut model|rtl  sim: the board's DUT, the C model (default) or the Verilated RTL\n"
+          "                       (built in with make host-rtl; see --version)\n"
           "other options:\n"
           "  --results DIR        where results and resume state go (default: VECTORS.bin's folder/board)\n"
           "  --resume             continue an interrupted run from its last acknowledged frame\n"
@@ -102,13 +105,14 @@ static int parse(int argc, char **argv, args *a)
 {
     enum { O_TRANSPORT = 256, O_DEVICE, O_VIDPID, O_TSIZE, O_INFLIGHT, O_CHIP, O_LINES, O_TIMEOUT, O_SIMSTATE,
            O_SIMFAULTS, O_CONNECT, O_RESULTS, O_RESUME, O_FRAMECMDS, O_IFACES, O_JUNIT, O_DIFF, O_ERRORS, O_TRANS, O_MIB,
-           O_QUIET, O_JSON, O_HELP };
+           O_QUIET, O_JSON, O_HELP, O_SIMDUT };
     static const struct option opts[] = {
         { "transport", required_argument, 0, O_TRANSPORT }, { "device", required_argument, 0, O_DEVICE },
         { "vid-pid", required_argument, 0, O_VIDPID },      { "transfer-size", required_argument, 0, O_TSIZE },
         { "in-flight", required_argument, 0, O_INFLIGHT },  { "chip", required_argument, 0, O_CHIP },
         { "lines", required_argument, 0, O_LINES },         { "timeout", required_argument, 0, O_TIMEOUT },
         { "sim-state", required_argument, 0, O_SIMSTATE },  { "sim-faults", required_argument, 0, O_SIMFAULTS },
+        { "sim-dut", required_argument, 0, O_SIMDUT },
         { "connect", required_argument, 0, O_CONNECT },
         { "results", required_argument, 0, O_RESULTS },     { "resume", no_argument, 0, O_RESUME },
         { "frame-cmds", required_argument, 0, O_FRAMECMDS }, { "interfaces", required_argument, 0, O_IFACES },
@@ -157,6 +161,14 @@ static int parse(int argc, char **argv, args *a)
             break;
         case O_SIMSTATE: a->link.sim_state = optarg; break;
         case O_SIMFAULTS: a->link.sim_faults = optarg; break;
+        case O_SIMDUT:
+            if (strcmp(optarg, "model") == 0)
+                ef_transport_sim_select_dut(EF_SIM_DUT_MODEL);
+            else if (strcmp(optarg, "rtl") == 0)
+                ef_transport_sim_select_dut(EF_SIM_DUT_RTL);
+            else
+                return usage_error("--sim-dut must be model or rtl, not '%s'", optarg);
+            break;
         case O_CONNECT: a->link.connect = optarg; break;
         case O_RESULTS: a->results = optarg; break;
         case O_RESUME: a->resume = 1; break;

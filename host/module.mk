@@ -10,7 +10,10 @@ HOST_CPPFLAGS := -Ihost -Ihost/board -Icli
 HOST_LIBS := $(shell $(PKG_CONFIG) --libs zlib 2>/dev/null || echo -lz)
 include host/usb.mk
 include host/gpio.mk
+include host/rtl_dut.mk
 HOST_BOARD_OBJ := $(HOST_BOARD_SRC:%.c=$(BUILD)/%.o)
+# with the RTL DUT (host/rtl_dut.mk) its real dut_rtl.o replaces the stub
+HOST_BOARD_LINK := $(filter-out $(HOST_RTL_DUT_STUB),$(HOST_BOARD_OBJ)) $(HOST_RTL_DUT_OBJS)
 HOST_OBJ := $(HOST_SRC:%.c=$(BUILD)/%.o) $(HOST_USB_OBJS) $(HOST_GPIO_OBJS)
 # the edgeflag CLI's objects but its main: verify runs `edgeflag check` in-process
 HOST_CLI_OBJ := $(filter-out $(BUILD)/cli/main.o,$(CLI_OBJ))
@@ -22,9 +25,9 @@ $(BUILD)/host/%.o: host/%.c
 
 .PHONY: host
 host: $(EDGEFLAG_HOST)
-$(EDGEFLAG_HOST): $(HOST_OBJ) $(HOST_BOARD_OBJ) $(HOST_CLI_OBJ) $(LIB_A)
-	$(CC) $(LDFLAGS_ALL) -o $@ $(HOST_OBJ) $(HOST_BOARD_OBJ) $(HOST_CLI_OBJ) $(LIB_A) $(HOST_LIBS) $(PNG_LIBS) \
-	    $(EXPAT_LIBS) $(VEC_LIBS)
+$(EDGEFLAG_HOST): $(HOST_OBJ) $(HOST_BOARD_LINK) $(HOST_CLI_OBJ) $(LIB_A) $(HOST_RTL_FLAG)
+	$(HOST_LINK) $(LDFLAGS_ALL) -o $@ $(HOST_OBJ) $(HOST_BOARD_LINK) $(HOST_CLI_OBJ) $(LIB_A) $(HOST_LIBS) $(PNG_LIBS) \
+	    $(EXPAT_LIBS) $(VEC_LIBS) $(HOST_RTL_LDLIBS)
 
 # make install puts edgeflag-host beside edgeflag (host/usb.mk adds the udev rule).
 .PHONY: install-host

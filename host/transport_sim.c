@@ -15,6 +15,10 @@
  * (1 = the first), drop-reply or corrupt-reply counting the board's;
  * not-ours=1 answers identify without the magic (another device), protocol=N
  * answers it with protocol version N.
+ *
+ * --sim-dut rtl puts the Verilated reference RTL behind the engine instead
+ * of the model (host/board/dut_rtl.c, when built in: host/rtl_dut.mk);
+ * identify then says the RTL's own limits and sample counts.
  */
 #include <errno.h>
 #include <stdio.h>
@@ -23,6 +27,7 @@
 #include <time.h>
 
 #include "atomic_file.h"
+#include "dut_rtl.h"
 #include "ef_board.h"
 #include "ef_frame.h"
 #include "transport.h"
@@ -47,6 +52,13 @@ typedef struct sim_link {
     uint8_t *out;               /* frames for the host, after reply faults */
     size_t out_len, out_pos, out_cap;
 } sim_link;
+
+static int sim_dut = EF_SIM_DUT_MODEL;     /* set by main before any open */
+
+void ef_transport_sim_select_dut(int which)
+{
+    sim_dut = which;
+}
 
 static void nap_ms(int ms)
 {
@@ -187,10 +199,26 @@ static int sim_open(ef_link **out, const ef_host_opts *o, char *err, size_t errl
         free(s);
         return r;
     }
-    const ef_board_info info = { "EFSIM0001", EF_BOARD_CAP_RESULTS | EF_BOARD_CAP_RESUME | EF_BOARD_CAP_INTERNAL,
-                                 1u << 3 | 1u << 4 | 1u << 5, 16384, 16384, 1u << 22, 16, (1u << 7) - 1 };
-    s->b = ef_board_new(&info, ef_board_dut_model());
+    ef_board_info info = { "EFSIM0001", EF_BOARD_CAP_RESULTS | EF_BOARD_CAP_RESUME | EF_BOARD_CAP_INTERNAL,
+                           1u << 3 | 1u << 4 | 1u << 5, 16384, 16384, 1u << 22, 16, (1u << 7) - 1 };
+    ef_board_dut dut;
+    if (sim_dut == EF_SIM_DUT_RTL) {
+        if (!ef_board_dut_rtl_built()) {
+            snprintf(err, errlen, "--sim-dut rtl: the RTL DUT is %s", ef_board_dut_rtl_describe());
+            free(s);
+            return EF_HOST_EUNSUPPORTED;
+        }
+        /* a board with the RTL says the RTL's parameters */
+        snprintf(info.serial, sizeof info.serial, "EFSIMRTL1");
+        ef_board_dut_rtl_limits(&info.width_max, &info.height_max, &info.edges_max, &info.samples_mask);
+        dut = ef_board_dut_rtl();
+    } else {
+        dut = ef_board_dut_model();
+    }
+    s->b = dut.self ? ef_board_new(&info, dut) : NULL;
     if (!s->b) {
+        if (dut.self)
+            dut.destroy(dut.self);
         free(s);
         return EF_HOST_ENOMEM;
     }
@@ -337,7 +365,10 @@ static int sim_probe(const ef_host_opts *o, ef_found *found, int max)
 
 static const char *sim_version(void)
 {
-    return "built in (the board engine and the C model in-process)";
+    static char text[320];
+    snprintf(text, sizeof text, "built in (the board engine and the C model in-process); --sim-dut rtl: %s",
+             ef_board_dut_rtl_describe());
+    return text;
 }
 
 const ef_transport_ops ef_transport_sim = { "sim", sim_probe, sim_open, sim_identify, sim_status, sim_reset,
