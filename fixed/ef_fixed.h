@@ -13,7 +13,7 @@
  *            arc geometry).  Range [-2^31, 2^31) with resolution 2^-32.
  *   ef_q16   Q47.16 in int64_t: device-space control points during flattening.
  *   device   Q16.8 in int32_t: vertex coordinates handed to the rasterizer
- *            (1/256 px units, |v| < 2^23).  See model/edgeflag.h.
+ *            (1/256 px units, |v| < 2^23).  See include/edgeflag/edgeflag.h.
  *   ef_angle an unsigned 32-bit binary angle: one full turn = 2^32, so angle
  *            arithmetic wraps modulo a turn by construction.
  *   ef_q30   Q1.30 in int32_t: sines, cosines and other values in [-1, 1].
