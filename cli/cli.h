@@ -8,6 +8,7 @@
 
 #include <stdint.h>
 
+#include "ef_vec.h"
 #include "image_write.h"
 
 /* Exit codes, documented in docs/cli.md.  Scripts depend on them: do not
@@ -60,8 +61,8 @@ typedef struct ef_cli_check_args {
 } ef_cli_check_args;
 int ef_cli_check_parse(int argc, char **argv, ef_cli_check_args *a);
 
-/* `edgeflag vectors`: formats are EF_CLI_VEC_* bits, interfaces ef_iface bits. */
-enum { EF_CLI_VEC_HEX = 1, EF_CLI_VEC_VCD = 2, EF_CLI_VEC_BIN = 4, EF_CLI_VEC_ALL = 7 };
+/* `edgeflag vectors`: formats are the table's EF_VEC_F_* bits (ef_vec.h), interfaces ef_iface bits. */
+enum { EF_CLI_VEC_ALL = EF_VEC_F_ALL };
 typedef struct ef_cli_vectors_args {
     const char *input, *dir;
     int32_t samples;            /* 8 (default), 16 or 32 */

@@ -63,7 +63,6 @@ static void usage(FILE *f)
           f);
 }
 
-static const char *const FORMAT_NAMES[] = { "hex", "vcd", "bin" };
 
 /* Returns -1 when parsing succeeded, else the exit code to return. */
 int ef_cli_vectors_parse(int argc, char **argv, ef_cli_vectors_args *a)
@@ -132,9 +131,14 @@ int ef_cli_vectors_parse(int argc, char **argv, ef_cli_vectors_args *a)
                 return EF_CLI_EXIT_USAGE;
             if (seen_formats++)
                 return ef_cli_usage_error(CMD, "--formats given twice");
-            if (!ef_cli_parse_list(CMD, "--formats", v, FORMAT_NAMES, 3, &bits))
+            const char *format_names[EF_VEC_NFORMATS];
+            for (int k = 0; k < EF_VEC_NFORMATS; k++)
+                format_names[k] = ef_vec_formats[k].name;
+            if (!ef_cli_parse_list(CMD, "--formats", v, format_names, EF_VEC_NFORMATS, &bits))
                 return EF_CLI_EXIT_USAGE;
-            a->formats = bits;
+            a->formats = 0;
+            for (int k = 0; k < EF_VEC_NFORMATS; k++)
+                a->formats |= (bits >> k & 1u) ? ef_vec_formats[k].bit : 0u;
         } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "--interfaces", &v)) != 0) {
             if (r < 0)
                 return EF_CLI_EXIT_USAGE;
