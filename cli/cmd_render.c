@@ -55,7 +55,7 @@ int ef_cli_render_parse(int argc, char **argv, render_args *a)
     int seen[3] = { 0, 0, 0 };   /* --samples, --rule, --size */
 
     memset(a, 0, sizeof *a);
-    a->samples = 16;
+    a->samples = EF_CLI_SAMPLES_DEFAULT;
     a->rule = -1;
 
     /* --help wins over anything else on the line, even earlier junk. */

@@ -42,7 +42,7 @@ static void usage(FILE *f)
           "\n"
           "options:\n"
           "  -o, --output DIR   directory to write (created with its parents if missing)\n"
-          "  --samples N        samples per pixel: 8 (default), 16 or 32\n"
+          "  --samples N        samples per pixel: 8, 16 (default) or 32\n"
           "  --rule RULE        fill every shape with RULE (nonzero or evenodd) instead of\n"
           "                     its own\n"
           "  --size WxH         fit the drawing into a W x H pixel canvas (1..16384 each)\n"
@@ -73,7 +73,7 @@ int ef_cli_vectors_parse(int argc, char **argv, ef_cli_vectors_args *a)
     int seen_formats = 0, seen_ifaces = 0;
 
     memset(a, 0, sizeof *a);
-    a->samples = 8;
+    a->samples = EF_CLI_SAMPLES_DEFAULT;
     a->rule = -1;
     a->formats = EF_CLI_VEC_ALL;
     a->ifaces = EF_IF_ALL;

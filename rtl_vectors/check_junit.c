@@ -13,6 +13,7 @@
  * command writes it atomically).
  */
 #include "check_internal.h"
+#include "ef_fixed.h"   /* ef_utf8_len */
 
 #include <errno.h>
 #include <inttypes.h>
@@ -25,23 +26,6 @@ uint64_t chk_now_ns(void)
     if (clock_gettime(CLOCK_MONOTONIC, &ts) != 0)
         return 0;
     return (uint64_t)ts.tv_sec * UINT64_C(1000000000) + (uint64_t)ts.tv_nsec;
-}
-
-/* Length of a valid UTF-8 sequence at s (no overlongs, no surrogates, at
- * most U+10FFFF) within n bytes, or 0. */
-static size_t utf8_len(const unsigned char *s, size_t n)
-{
-    unsigned char c = s[0];
-    size_t len = c >= 0xC2 && c <= 0xDF ? 2 : c >= 0xE0 && c <= 0xEF ? 3 : c >= 0xF0 && c <= 0xF4 ? 4 : 0;
-    if (!len || len > n)
-        return 0;
-    for (size_t k = 1; k < len; k++)
-        if ((s[k] & 0xC0u) != 0x80u)
-            return 0;
-    if ((c == 0xE0 && s[1] < 0xA0) || (c == 0xED && s[1] > 0x9F) || (c == 0xF0 && s[1] < 0x90) ||
-        (c == 0xF4 && s[1] > 0x8F))
-        return 0;
-    return len;
 }
 
 /* s escaped for XML; newlines kept in text, written as &#10; in attributes. */
@@ -68,7 +52,7 @@ static void esc(FILE *f, const char *str, int attr)
             fputs(attr ? "&#9;" : "\t", f);
         else if (c >= 0x20 && c < 0x7f)
             fputc(c, f);
-        else if (c >= 0x80 && (len = utf8_len(s + i, n - i)) != 0) {
+        else if (c >= 0x80 && (len = ef_utf8_len(s + i, n - i)) != 0) {
             fwrite(s + i, 1, len, f);
             i += len;
             continue;

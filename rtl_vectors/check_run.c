@@ -32,8 +32,7 @@ void ef_check_opts_init(ef_check_opts *o)
 void chk_error(const chk_run *r, const char *fmt, ...)
 {
     va_list ap;
-    if (!r->a->status)
-        return;
+    if (!r->a->status) return;
     fputs("edgeflag: ", r->a->status);
     va_start(ap, fmt);
     vfprintf(r->a->status, fmt, ap);
@@ -44,8 +43,7 @@ void chk_error(const chk_run *r, const char *fmt, ...)
 void chk_status(const chk_run *r, const char *fmt, ...)
 {
     va_list ap;
-    if (!r->a->status)
-        return;
+    if (!r->a->status) return;
     va_start(ap, fmt);
     vfprintf(r->a->status, fmt, ap);
     va_end(ap);
@@ -78,8 +76,7 @@ int chk_input_error(chk_run *r, ef_status st, const char *msg, const char *ename
     chk_case *tc = chk_case_add(r, ename, aname, "input");
     if (tc) {
         tc->error = malloc(strlen(msg) + 1);
-        if (tc->error)
-            strcpy(tc->error, msg);
+        if (tc->error) strcpy(tc->error, msg);
     }
     return st == EF_ERR_NOMEM ? EF_CHECK_INTERNAL : EF_CHECK_INPUT;
 }
@@ -94,8 +91,7 @@ int chk_read_error(chk_run *r, ef_status st, const ef_vec_read_error *err, const
 /* The expected pix stay for --diff-image; everything else of d is freed. */
 static void keep_background(chk_run *r, ef_vec_dump *d)
 {
-    if (r->have_bg || !(d->mask >> EF_IF_PIX & 1u))
-        return;
+    if (r->have_bg || !(d->mask >> EF_IF_PIX & 1u)) return;
     r->bg = *d;
     for (int i = 0; i < EF_IF_COUNT; i++)
         if (i != EF_IF_PIX) {
@@ -130,12 +126,12 @@ int chk_pair(chk_run *r, const char *ep, const char *ap, const ef_vec_manifest_f
 
     memset(&a, 0, sizeof a);
     st = ef_vec_read_path(ep, NULL, -1, mf && mf->iface >= 0 ? mf->iface : ef_vec_iface_from_name(ep), &e, &err);
-    if (st != EF_OK)
-        return chk_read_error(r, st, &err, ep, ap ? ap : "-");
+    if (st != EF_OK) return chk_read_error(r, st, &err, ep, ap ? ap : "-");
     if (mf && mf->has_count && mf->count != total(&e)) {
-        snprintf(buf, sizeof buf, "%s:%" PRIu64 ":%" PRIu64 ": the manifest counts %" PRIu64
-                 " transactions in '%s', the file holds %" PRIu64, mname, mf->line, mf->col, mf->count, mf->name,
-                 total(&e));
+        snprintf(buf, sizeof buf,
+                 "%s:%" PRIu64 ":%" PRIu64 ": the manifest counts %" PRIu64
+                 " transactions in '%s', the file holds %" PRIu64,
+                 mname, mf->line, mf->col, mf->count, mf->name, total(&e));
         rc = chk_input_error(r, EF_ERR_SYNTAX, buf, ep, ap ? ap : "-");
         goto out;
     }
@@ -143,17 +139,14 @@ int chk_pair(chk_run *r, const char *ep, const char *ap, const ef_vec_manifest_f
         r->width = e.width;
         r->height = e.height;
     }
-    if (!r->seed)
-        r->seed = e.seed;
+    if (!r->seed) r->seed = e.seed;
     /* Every interface the expected side holds must be compared, but for the
      * command stream: the DUT's input, compared when a bench dumps it. */
     r->held |= e.mask & ~(1u << EF_IF_CMD);
-    if (!ap)
-        goto out;
+    if (!ap) goto out;
     int want = -1;
     for (int i = 0; e.format == EF_VEC_FMT_HEX && i < EF_IF_COUNT; i++)
-        if (e.mask >> i & 1u)
-            want = i;
+        if (e.mask >> i & 1u) want = i;
     st = ef_vec_read_path(ap, NULL, want, want >= 0 ? want : ef_vec_iface_from_name(ap), &a, &err);
     if (st != EF_OK) {
         rc = chk_read_error(r, st, &err, ep, ap);
@@ -166,11 +159,10 @@ int chk_pair(chk_run *r, const char *ep, const char *ap, const ef_vec_manifest_f
     }
     if (e.width && a.width && (e.width != a.width || e.height != a.height))
         chk_status(r, "edgeflag: warning: %s is a %dx%d frame, %s %dx%d\n", ep, (int)e.width, (int)e.height, ap,
-                (int)a.width, (int)a.height);
+                   (int)a.width, (int)a.height);
     for (int i = 0; i < EF_IF_COUNT; i++) {
         const char *name = ef_iface_get(i)->name;
-        if (!(e.mask >> i & 1u) || !(r->a->only >> i & 1u))
-            continue;
+        if (!(e.mask >> i & 1u) || !(r->a->only >> i & 1u)) continue;
         if (!(a.mask >> i & 1u)) {
             chk_status(r, "edgeflag check: %s: not recorded in %s\n", name, ap);
             continue;
@@ -178,16 +170,15 @@ int chk_pair(chk_run *r, const char *ep, const char *ap, const ef_vec_manifest_f
         r->compared |= 1u << i;
         const uint64_t t0 = chk_now_ns(), before = r->mismatches;
         chk_case *tc = chk_case_add(r, ep, ap, name);
-        if (!tc)
-            break;
+        if (!tc) break;
         chk_compare(r, tc, i, &e, ep, &a, ap);
         tc->ns = chk_now_ns() - t0;
         chk_status(r, "edgeflag check: %s: %s vs %s: %zu expected, %zu actual transactions, %" PRIu64 " mismatch%s\n",
-                name, ep, ap, e.seq[i].n, a.seq[i].n, r->mismatches - before, r->mismatches - before == 1 ? "" : "es");
+                   name, ep, ap, e.seq[i].n, a.seq[i].n, r->mismatches - before,
+                   r->mismatches - before == 1 ? "" : "es");
     }
 out:
-    if (r->a->keep_marks && rc == 0)
-        keep_background(r, &e);
+    if (r->a->keep_marks && rc == 0) keep_background(r, &e);
     ef_vec_dump_free(&e);
     ef_vec_dump_free(&a);
     return r->oom ? EF_CHECK_INTERNAL : rc;
@@ -214,22 +205,21 @@ static void close_unchecked(chk_run *r)
 {
     const ef_check_opts *a = r->a;
     for (int i = 0; i < EF_IF_COUNT; i++) {
-        if (!(r->held >> i & 1u) || (r->compared >> i & 1u))
-            continue;
+        if (!(r->held >> i & 1u) || (r->compared >> i & 1u)) continue;
         const char *name = ef_iface_get(i)->name;
         chk_case *tc = chk_case_add(r, a->expected, a->actual, name);
-        if (!tc)
-            return;
+        if (!tc) return;
         if (!(a->only >> i & 1u) || (a->allow_missing >> i & 1u)) {
             tc->skipped = 1;
             chk_status(r, "edgeflag check: %s: skipped (%s)\n", name,
-                    !(a->only >> i & 1u) ? "not in --interfaces" : "--allow-missing, and no dump in ACTUAL");
+                       !(a->only >> i & 1u) ? "not in --interfaces" : "--allow-missing, and no dump in ACTUAL");
         } else {
             tc->missing = 1;
             r->missing++;
-            chk_status(r, "edgeflag check: %s: FAIL: %s holds no dump of it (%s.actual.hex, or a binary stream "
-                            "recording it); name it in --allow-missing if the bench does not dump it\n",
-                    name, a->actual, name);
+            chk_status(r,
+                       "edgeflag check: %s: FAIL: %s holds no dump of it (%s.actual.hex, or a binary stream "
+                       "recording it); name it in --allow-missing if the bench does not dump it\n",
+                       name, a->actual, name);
         }
     }
 }
@@ -263,8 +253,7 @@ int ef_check_run(const ef_check_opts *o, ef_check_result *res)
     chk_run *r = calloc(1, sizeof *r);
 
     memset(res, 0, sizeof *res);
-    if (!r)
-        return EF_CHECK_INTERNAL;
+    if (!r) return EF_CHECK_INTERNAL;
     res->run = r;
     r->opts = *o;
     r->a = &r->opts;
@@ -279,14 +268,16 @@ int ef_check_run(const ef_check_opts *o, ef_check_result *res)
         chk_error(r, "%s: cannot open: %s", bad, strerror(errno));
         rc = EF_CHECK_INPUT;
     } else if (same_node(&se, &sa)) {
-        chk_error(r, "%s and %s are the same %s: ACTUAL must be the DUT's dumps, not the expected vectors",
-                  a->expected, a->actual, S_ISDIR(se.st_mode) ? "directory" : "file");
+        chk_error(r, "%s and %s are the same %s: ACTUAL must be the DUT's dumps, not the expected vectors", a->expected,
+                  a->actual, S_ISDIR(se.st_mode) ? "directory" : "file");
         rc = EF_CHECK_INPUT;
     } else if (S_ISDIR(se.st_mode) && S_ISDIR(sa.st_mode)) {
         rc = chk_dirs(r);
     } else if (!S_ISDIR(se.st_mode) && !S_ISDIR(sa.st_mode) && ends_with(a->actual, ".expected.hex")) {
-        chk_error(r, "%s is an expected file (*.expected.hex), never a dump: an RTL's dump of an interface is "
-                     "IFACE.actual.hex", a->actual);
+        chk_error(r,
+                  "%s is an expected file (*.expected.hex), never a dump: an RTL's dump of an interface is "
+                  "IFACE.actual.hex",
+                  a->actual);
         rc = EF_CHECK_INPUT;
     } else if (!S_ISDIR(se.st_mode) && !S_ISDIR(sa.st_mode)) {
         rc = chk_pair(r, a->expected, a->actual, NULL, NULL);
@@ -295,12 +286,9 @@ int ef_check_run(const ef_check_opts *o, ef_check_result *res)
                   S_ISDIR(se.st_mode) ? a->expected : a->actual, S_ISDIR(se.st_mode) ? a->actual : a->expected);
         rc = EF_CHECK_INPUT;
     }
-    if (rc == 0)
-        close_unchecked(r);
-    if (r->oom)
-        rc = EF_CHECK_INTERNAL;
-    if (a->report)
-        fflush(a->report);
+    if (rc == 0) close_unchecked(r);
+    if (r->oom) rc = EF_CHECK_INTERNAL;
+    if (a->report) fflush(a->report);
 
     uint64_t compared = 0, txns = 0, failing = 0;
     for (size_t k = 0; k < r->ncases; k++)
@@ -310,21 +298,22 @@ int ef_check_run(const ef_check_opts *o, ef_check_result *res)
             failing += r->cases[k].mismatches > 0;
         }
     if (rc == 0 && (r->mismatches || r->missing))
-        chk_status(r, "edgeflag check: FAIL: %" PRIu64 " mismatch%s in %" PRIu64 " of %" PRIu64
-                   " comparison%s (%" PRIu64 " reported)%s, %" PRIu64 " interface%s without a dump\n",
+        chk_status(r,
+                   "edgeflag check: FAIL: %" PRIu64 " mismatch%s in %" PRIu64 " of %" PRIu64 " comparison%s (%" PRIu64
+                   " reported)%s, %" PRIu64 " interface%s without a dump\n",
                    r->mismatches, r->mismatches == 1 ? "" : "es", failing, compared, compared == 1 ? "" : "s",
                    r->reported, a->cycles ? "" : ", transactions only (cycles not compared)", r->missing,
                    r->missing == 1 ? "" : "s");
     else if (rc == 0)
         chk_status(r, "edgeflag check: PASS: %" PRIu64 " comparison%s, %" PRIu64 " transactions, %s\n", compared,
-                   compared == 1 ? "" : "s", txns, a->cycles ? "cycle-exact" : "transactions only (cycles not compared)");
+                   compared == 1 ? "" : "s", txns,
+                   a->cycles ? "cycle-exact" : "transactions only (cycles not compared)");
     res->mismatches = r->mismatches;
     res->reported = r->reported;
     res->compared = compared;
     res->transactions = txns;
     res->missing = r->missing;
     res->marks = r->nmarks;
-    if (rc != 0)
-        return rc;
+    if (rc != 0) return rc;
     return r->mismatches || r->missing ? EF_CHECK_FAIL : EF_CHECK_PASS;
 }

@@ -30,7 +30,7 @@
 #include <stdint.h>
 #include <stdio.h>
 
-#include "ef_trace.h"   /* ef_iface bits, ef_image */
+#include "ef_trace.h" /* ef_iface bits, ef_image */
 
 #ifdef __cplusplus
 extern "C" {
@@ -39,22 +39,22 @@ extern "C" {
 /* The exit status of a run (docs/cli.md, `edgeflag check`).  4 (a report not
  * written) belongs to the caller that writes the files. */
 enum {
-    EF_CHECK_PASS = 0,       /* every required interface compared, no mismatch */
-    EF_CHECK_FAIL = 1,       /* a mismatch, or a required interface without a dump */
-    EF_CHECK_INPUT = 2,      /* unreadable or malformed input, ACTUAL is EXPECTED or an expected file */
-    EF_CHECK_INTERNAL = 70   /* out of memory */
+    EF_CHECK_PASS = 0,     /* every required interface compared, no mismatch */
+    EF_CHECK_FAIL = 1,     /* a mismatch, or a required interface without a dump */
+    EF_CHECK_INPUT = 2,    /* unreadable or malformed input, ACTUAL is EXPECTED or an expected file */
+    EF_CHECK_INTERNAL = 70 /* out of memory */
 };
 
 typedef struct ef_check_opts {
-    const char *expected, *actual;  /* two files (hex or binary) or two directories */
-    int32_t errors;          /* mismatch lines reported: 20 (default), 0 = all; the count is exact */
-    int cycles;              /* 1 (default): equal payloads at equal cycles; 0: order and content only */
-    uint32_t only;           /* interfaces compared (bit = ef_iface); default EF_IF_ALL; must hold pix */
-    uint32_t allow_missing;  /* interfaces whose dump may be absent (skipped); never pix */
-    const char *name;        /* the JUnit suite and class name, or NULL: EXPECTED's base name and seed */
-    int keep_marks;          /* 1: keep what ef_check_diff_image needs (the expected pix, the marks) */
-    FILE *report;            /* one line per reported mismatch; NULL: not printed (still counted) */
-    FILE *status;            /* progress, warnings, input errors and the verdict; NULL: silent */
+    const char *expected, *actual; /* two files (hex or binary) or two directories */
+    int32_t errors;                /* mismatch lines reported: 20 (default), 0 = all; the count is exact */
+    int cycles;                    /* 1 (default): equal payloads at equal cycles; 0: order and content only */
+    uint32_t only;                 /* interfaces compared (bit = ef_iface); default EF_IF_ALL; must hold pix */
+    uint32_t allow_missing;        /* interfaces whose dump may be absent (skipped); never pix */
+    const char *name;              /* the JUnit suite and class name, or NULL: EXPECTED's base name and seed */
+    int keep_marks;                /* 1: keep what ef_check_diff_image needs (the expected pix, the marks) */
+    FILE *report;                  /* one line per reported mismatch; NULL: not printed (still counted) */
+    FILE *status;                  /* progress, warnings, input errors and the verdict; NULL: silent */
 } ef_check_opts;
 
 /* The defaults above (expected, actual, report and status NULL). */

@@ -4,8 +4,8 @@
 RTLV_SRC := $(wildcard rtl_vectors/*.c)
 RTLV_OBJ := $(RTLV_SRC:%.c=$(BUILD)/%.o)
 EF_INC += -Irtl_vectors
-# Layer: the public headers and its own; never model/, fixed/ internals or cli/.
-LAYER_INC_rtl_vectors := -Iinclude/edgeflag -Irtl_vectors
+# Layer: the public headers, fixed/ (the bottom layer) and its own; never model/ or cli/.
+LAYER_INC_rtl_vectors := -Iinclude/edgeflag -Ifixed -Irtl_vectors
 $(RTLV_OBJ): EF_INC := $(LAYER_INC_rtl_vectors)
 
 # test_gen needs the generator objects as well as the library; an explicit rule

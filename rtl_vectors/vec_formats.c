@@ -38,8 +38,7 @@ const ef_vec_format ef_vec_formats[EF_VEC_NFORMATS] = {
 const ef_vec_format *ef_vec_format_named(const char *name)
 {
     for (int k = 0; name && k < EF_VEC_NFORMATS; k++)
-        if (strcmp(ef_vec_formats[k].name, name) == 0)
-            return &ef_vec_formats[k];
+        if (strcmp(ef_vec_formats[k].name, name) == 0) return &ef_vec_formats[k];
     return NULL;
 }
 
@@ -48,8 +47,7 @@ const ef_vec_format *ef_vec_format_of_path(const char *path)
     size_t n = strlen(path);
     for (int k = 0; k < EF_VEC_NFORMATS; k++) {
         size_t e = strlen(ef_vec_formats[k].ext);
-        if (n >= e && strcmp(path + n - e, ef_vec_formats[k].ext) == 0)
-            return &ef_vec_formats[k];
+        if (n >= e && strcmp(path + n - e, ef_vec_formats[k].ext) == 0) return &ef_vec_formats[k];
     }
     return NULL;
 }

@@ -8,37 +8,9 @@
  * sed) can read it as well as a JSON parser.
  */
 #include "ef_vec.h"
+#include "ef_fixed.h"   /* ef_utf8_len */
 
 #include <string.h>
-
-/* Length of the UTF-8 sequence starting at p (at most n bytes available)
- * if it is well-formed (RFC 3629: shortest form, no surrogates, <= U+10FFFF),
- * else 0. */
-static size_t utf8_len(const unsigned char *p, size_t n)
-{
-    size_t len;
-    uint32_t cp, min;
-    if (p[0] < 0x80)
-        return 1;
-    if ((p[0] & 0xE0) == 0xC0)
-        len = 2, cp = p[0] & 0x1Fu, min = 0x80;
-    else if ((p[0] & 0xF0) == 0xE0)
-        len = 3, cp = p[0] & 0x0Fu, min = 0x800;
-    else if ((p[0] & 0xF8) == 0xF0)
-        len = 4, cp = p[0] & 0x07u, min = 0x10000;
-    else
-        return 0;
-    if (len > n)
-        return 0;
-    for (size_t i = 1; i < len; i++) {
-        if ((p[i] & 0xC0) != 0x80)
-            return 0;
-        cp = cp << 6 | (p[i] & 0x3Fu);
-    }
-    if (cp < min || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF))
-        return 0;
-    return len;
-}
 
 /* A JSON string (RFC 8259): '"' and '\' escaped, control characters as
  * \u00XX, well-formed UTF-8 copied, and each byte of anything else as
@@ -50,7 +22,7 @@ static void out_json_string(ef_vec_out *o, const char *s)
     size_t n = strlen(s);
     ef_vec_out_puts(o, "\"");
     while (n) {
-        size_t len = utf8_len(p, n);
+        size_t len = ef_utf8_len(p, n);
         if (len == 1 && (*p == '"' || *p == '\\')) {
             char e[2] = { '\\', (char)*p };
             ef_vec_out_write(o, e, 2);

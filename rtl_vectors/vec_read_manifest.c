@@ -11,6 +11,7 @@
  * (and trust as expected data) a file outside it.
  */
 #include "vec_read_internal.h"
+#include "ef_fixed.h"   /* ef_utf8_len */
 
 #include <errno.h>
 #include <inttypes.h>
@@ -136,23 +137,6 @@ static int hex4(const jp *j, size_t at, uint32_t *u)
     return 1;
 }
 
-/* Length of the valid UTF-8 sequence at p[i] (RFC 3629: no overlongs, no
- * surrogates, at most U+10FFFF), or 0. */
-static size_t utf8_len(const uint8_t *p, size_t n, size_t i)
-{
-    uint8_t c = p[i];
-    size_t len = c < 0x80 ? 1 : c >= 0xC2 && c <= 0xDF ? 2 : c >= 0xE0 && c <= 0xEF ? 3 : c >= 0xF0 && c <= 0xF4 ? 4 : 0;
-    if (!len || i + len > n)
-        return 0;
-    for (size_t k = 1; k < len; k++)
-        if ((p[i + k] & 0xC0u) != 0x80u)
-            return 0;
-    if ((c == 0xE0 && p[i + 1] < 0xA0) || (c == 0xED && p[i + 1] > 0x9F) || (c == 0xF0 && p[i + 1] < 0x90) ||
-        (c == 0xF4 && p[i + 1] > 0x8F))
-        return 0;
-    return len;
-}
-
 /* A string at p[i] == '"'; its decoded bytes in *out (malloc'ed, NUL-terminated). */
 static ef_status string(jp *j, jstr *out)
 {
@@ -214,7 +198,7 @@ static ef_status string(jp *j, jstr *out)
             put_utf8(d, &o, u);
             continue;
         }
-        size_t len = utf8_len(j->p, j->n, j->i);
+        size_t len = ef_utf8_len(j->p + j->i, j->n - j->i);
         if (!len) {
             free(d);
             return unexpected(j, "valid UTF-8");

@@ -49,8 +49,20 @@ EF_API const char *ef_strerror(ef_status s);
 /* -------------------------------------------------------- configuration */
 typedef enum ef_rule { EF_RULE_NONZERO = 0, EF_RULE_EVENODD = 1 } ef_rule;
 
-/* Samples per pixel: 8, 16 or 32. */
+/* Samples per pixel: 8, 16 or 32 (EF_SAMPLES_TEXT in messages).  Adding a
+ * count is the walk of docs/source.md, "To add a sample count". */
+#define EF_SAMPLES_MAX 32
+#define EF_SAMPLES_TEXT "8, 16 or 32"
 static inline int ef_samples_valid(int n) { return n == 8 || n == 16 || n == 32; }
+
+/* A pixel's coverage mask: bit s = sample s (docs/spec.md section 4), so it
+ * holds EF_SAMPLES_MAX bits. */
+typedef uint32_t ef_mask;
+#if defined(__cplusplus)
+static_assert(sizeof(ef_mask) * 8 >= EF_SAMPLES_MAX, "a mask holds a bit per sample");
+#else
+_Static_assert(sizeof(ef_mask) * 8 >= EF_SAMPLES_MAX, "a mask holds a bit per sample");
+#endif
 
 /* ------------------------------------------------------------ geometry */
 /* A vertex in device space, Q16.8: value = x / 256 px, y grows downward,
@@ -84,7 +96,7 @@ EF_API int ef_ctx_samples(const ef_ctx *ctx);
  * (bit s = sample s of the pixel, docs/spec.md section 4).  A full mask
  * (all `samples` bits set) is a solid span; any other mask covers one pixel
  * per call unless neighbours share it. */
-typedef void (*ef_span_fn)(void *user, int32_t y, int32_t x, int32_t len, uint32_t mask);
+typedef void (*ef_span_fn)(void *user, int32_t y, int32_t x, int32_t len, ef_mask mask);
 
 /* Rasterizes one polygon under `rule` and reports its coverage spans.
  * Returns EF_ERR_LIMIT if the polygon has more edges than the edge store
@@ -107,7 +119,7 @@ EF_API const uint8_t *ef_pattern(int samples);
 
 /* ---------------------------------------------------- coverage, compositing */
 /* alpha = floor((255 * popcount(mask) + N/2) / N), docs/spec.md section 7. */
-EF_API uint8_t ef_coverage_alpha(uint32_t mask, int samples);
+EF_API uint8_t ef_coverage_alpha(ef_mask mask, int samples);
 /* mul(a, b) = round(a * b / 255), computed as t = a*b + 128; ((t >> 8) + t) >> 8. */
 static inline uint8_t ef_mul255(uint32_t a, uint32_t b)
 {

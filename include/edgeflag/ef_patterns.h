@@ -22,7 +22,7 @@ extern "C" {
 #endif
 
 /* Largest pattern handled (tables are uint8_t[N], N = 8, 16 or 32). */
-#define EF_PATTERN_MAX 32
+#define EF_PATTERN_MAX EF_SAMPLES_MAX
 
 /* The criterion's numbers for one pattern, all exact integers.
  *

@@ -16,20 +16,20 @@ extern "C" {
 
 typedef struct ef_shape {
     ef_rule rule;
-    ef_rgba8 color;          /* straight colour, a = fill opacity x opacity */
-    uint32_t first_contour;  /* into ef_scene.start */
+    ef_rgba8 color;         /* straight colour, a = fill opacity x opacity */
+    uint32_t first_contour; /* into ef_scene.start */
     uint32_t ncontours;
 } ef_shape;
 
 typedef struct ef_scene {
-    int32_t width, height;   /* canvas in pixels */
+    int32_t width, height; /* canvas in pixels */
     ef_shape *shapes;
     uint32_t nshapes, shapes_cap;
-    uint32_t *start;         /* contour c = points[start[c] .. start[c+1]-1] */
+    uint32_t *start; /* contour c = points[start[c] .. start[c+1]-1] */
     uint32_t ncontours, start_cap;
     ef_point *points;
     uint32_t npoints, points_cap;
-    uint32_t notes;          /* count of ignored features reported to the note callback */
+    uint32_t notes; /* count of ignored features reported to the note callback */
 } ef_scene;
 
 /* ----- building (used by the readers and by generated scenes) ----- */
