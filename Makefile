@@ -12,8 +12,16 @@ EF_SVG   ?= $(abspath tests/data/svg)
 export EF_SVG
 
 WARN     := -std=c11 -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wvla
-CPPFLAGS := -D_POSIX_C_SOURCE=200809L -Ifixed -Imodel
-CFLAGS_ALL = $(WARN) $(OPT) -g -fPIC -MMD -MP $(EXTRA_CFLAGS)
+# CPPFLAGS = the defines (EF_DEFS) and the include path (EF_INC).  EF_INC here is the wide one that
+# tests, bench and new folders compile with; each layer of the library and the CLI narrows it for its
+# own objects in its module.mk (docs/source.md, "Layers"), so an include that the architecture forbids
+# (the model reaching the readers, a library reaching cli/) is a build error, not a review comment.
+# include/edgeflag/ holds the public headers: `#include "edgeflag.h"` resolves everywhere.
+EF_DEFS  := -D_POSIX_C_SOURCE=200809L
+EF_INC   := -Iinclude/edgeflag -Ifixed -Imodel
+CPPFLAGS = $(EF_DEFS) $(EF_INC)
+# Hidden by default: only declarations marked EF_API (include/edgeflag/ef_api.h) are exported.
+CFLAGS_ALL = $(WARN) $(OPT) -g -fPIC -fvisibility=hidden -MMD -MP $(EXTRA_CFLAGS)
 LDFLAGS_ALL = $(EXTRA_LDFLAGS)
 
 # WITH_SVG=0 builds without expat (SVG input then fails with a clear error);

@@ -33,7 +33,7 @@ $(BUILD)/bench/%.o: bench/%.c
 
 $(BUILD)/bench/%.o: bench/%.cpp
 	@mkdir -p $(dir $@)
-	$(CXX) -std=c++11 -Wall -Wextra -Werror $(OPT) -g -MMD -MP -Ibench -Imodel $(BENCH_PKG_CFLAGS) -c $< -o $@
+	$(CXX) -std=c++11 -Wall -Wextra -Werror $(OPT) -g -MMD -MP -Ibench -Iinclude/edgeflag $(BENCH_PKG_CFLAGS) -c $< -o $@
 
 $(EFBENCH): $(BENCH_OBJ) $(LIB_A)
 	$(CXX) $(LDFLAGS_ALL) -o $@ $(BENCH_OBJ) $(LIB_A) $(EXPAT_LIBS) $(BENCH_PKG_LIBS) -lm

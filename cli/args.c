@@ -115,8 +115,8 @@ int ef_cli_scene_option(const char *cmd, int argc, char **argv, int *i, int32_t 
             return -1;
         if (seen[0]++)
             return ef_cli_usage_error(cmd, "--samples given twice"), -1;
-        if (!ef_cli_parse_int(v, 1, 32, samples) || !ef_samples_valid(*samples))
-            return ef_cli_usage_error(cmd, "--samples must be 8, 16 or 32, not '%s'", v), -1;
+        if (!ef_cli_parse_int(v, 1, EF_SAMPLES_MAX, samples) || !ef_samples_valid(*samples))
+            return ef_cli_usage_error(cmd, "--samples must be " EF_SAMPLES_TEXT ", not '%s'", v), -1;
     } else if ((r = ef_cli_option_value(cmd, argc, argv, i, "--rule", &v)) != 0) {
         if (r < 0)
             return -1;

@@ -8,6 +8,7 @@
 
 #include <stdint.h>
 
+#include "ef_vec.h"
 #include "image_write.h"
 
 /* Exit codes, documented in docs/cli.md.  Scripts depend on them: do not
@@ -19,6 +20,11 @@ enum {
     EF_CLI_EXIT_OUTPUT = 4,    /* output could not be written */
     EF_CLI_EXIT_INTERNAL = 70  /* a bug, or out of memory */
 };
+
+/* The sample count of `render` and `vectors` without --samples (docs/cli.md):
+ * 16, as `gen` level 1 uses for its grid-dependent cases, so the default
+ * vectors of a scene are of the picture its default render draws. */
+#define EF_CLI_SAMPLES_DEFAULT 16
 
 /* Subcommands: argv[0] is the command name; return an exit code. */
 int ef_cli_render(int argc, char **argv);
@@ -34,7 +40,7 @@ int ef_cli_vectors(int argc, char **argv); /* cmd_vectors.c, docs/vectors.md */
  * usage error, which has then been reported). */
 typedef struct ef_cli_render_args {
     const char *input, *output;
-    int32_t samples;            /* 8, 16 (default) or 32 */
+    int32_t samples;            /* 8, 16 or 32 (default EF_CLI_SAMPLES_DEFAULT) */
     int rule;                   /* -1: each shape's own; else an ef_rule */
     int32_t fit_w, fit_h;       /* 0, 0: the file's own size */
     ef_cli_format fmt;
@@ -61,11 +67,11 @@ typedef struct ef_cli_check_args {
 } ef_cli_check_args;
 int ef_cli_check_parse(int argc, char **argv, ef_cli_check_args *a);
 
-/* `edgeflag vectors`: formats are EF_CLI_VEC_* bits, interfaces ef_iface bits. */
-enum { EF_CLI_VEC_HEX = 1, EF_CLI_VEC_VCD = 2, EF_CLI_VEC_BIN = 4, EF_CLI_VEC_ALL = 7 };
+/* `edgeflag vectors`: formats are the table's EF_VEC_F_* bits (ef_vec.h), interfaces ef_iface bits. */
+enum { EF_CLI_VEC_ALL = EF_VEC_F_ALL };
 typedef struct ef_cli_vectors_args {
     const char *input, *dir;
-    int32_t samples;            /* 8 (default), 16 or 32 */
+    int32_t samples;            /* 8, 16 or 32 (default EF_CLI_SAMPLES_DEFAULT) */
     int rule;                   /* -1: each shape's own; else an ef_rule */
     int32_t fit_w, fit_h;       /* 0, 0: the file's own size */
     unsigned formats;           /* default EF_CLI_VEC_ALL */

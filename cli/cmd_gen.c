@@ -179,8 +179,8 @@ static int parse(int argc, char **argv, gen_args *a)
                 return EF_CLI_EXIT_USAGE;
             if (seen_samples++)
                 return ef_cli_usage_error(CMD, "--samples given twice");
-            if (!ef_cli_parse_int(v, 1, 32, &samples) || !ef_samples_valid(samples))
-                return ef_cli_usage_error(CMD, "--samples must be 8, 16 or 32, not '%s'", v);
+            if (!ef_cli_parse_int(v, 1, EF_SAMPLES_MAX, &samples) || !ef_samples_valid(samples))
+                return ef_cli_usage_error(CMD, "--samples must be " EF_SAMPLES_TEXT ", not '%s'", v);
         } else if (arg[0] == '-') {
             return ef_cli_usage_error(CMD, "unknown option '%s'", arg);
         } else {

@@ -204,8 +204,8 @@ int ef_cli_patterns_parse(int argc, char **argv, ef_cli_patterns_args *a)
         if (r > 0) {
             if (n)
                 return ef_cli_usage_error(CMD, "--samples given twice");
-            if (!ef_cli_parse_int(v, 1, 32, &n) || !ef_samples_valid(n))
-                return ef_cli_usage_error(CMD, "--samples must be 8, 16 or 32, not '%s'", v);
+            if (!ef_cli_parse_int(v, 1, EF_SAMPLES_MAX, &n) || !ef_samples_valid(n))
+                return ef_cli_usage_error(CMD, "--samples must be " EF_SAMPLES_TEXT ", not '%s'", v);
         } else if (strcmp(argv[i], "--emit-c") == 0) {
             if (emit)
                 return ef_cli_usage_error(CMD, "--emit-c given twice");

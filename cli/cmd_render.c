@@ -60,7 +60,7 @@ int ef_cli_render_parse(int argc, char **argv, render_args *a)
     int seen_filter[2] = { 0, 0 };   /* --filter, --subpixel */
 
     memset(a, 0, sizeof *a);
-    a->samples = 16;
+    a->samples = EF_CLI_SAMPLES_DEFAULT;
     a->rule = -1;
 
     /* --help wins over anything else on the line, even earlier junk. */

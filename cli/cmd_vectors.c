@@ -45,7 +45,7 @@ static void usage(FILE *f)
           "\n"
           "options:\n"
           "  -o, --output DIR   directory to write (created with its parents if missing)\n"
-          "  --samples N        samples per pixel: 8 (default), 16 or 32\n"
+          "  --samples N        samples per pixel: 8, 16 (default) or 32\n"
           "  --rule RULE        fill every shape with RULE (nonzero or evenodd) instead of\n"
           "                     its own\n"
           "  --size WxH         fit the drawing into a W x H pixel canvas (1..16384 each)\n"
@@ -72,7 +72,6 @@ static void usage(FILE *f)
           f);
 }
 
-static const char *const FORMAT_NAMES[] = { "hex", "vcd", "bin" };
 
 /* Returns -1 when parsing succeeded, else the exit code to return. */
 int ef_cli_vectors_parse(int argc, char **argv, ef_cli_vectors_args *a)
@@ -83,7 +82,7 @@ int ef_cli_vectors_parse(int argc, char **argv, ef_cli_vectors_args *a)
     int seen_formats = 0, seen_ifaces = 0;
 
     memset(a, 0, sizeof *a);
-    a->samples = 8;
+    a->samples = EF_CLI_SAMPLES_DEFAULT;
     a->rule = -1;
     a->formats = EF_CLI_VEC_ALL;
     a->ifaces = EF_IF_ALL;
@@ -146,9 +145,14 @@ int ef_cli_vectors_parse(int argc, char **argv, ef_cli_vectors_args *a)
                 return EF_CLI_EXIT_USAGE;
             if (seen_formats++)
                 return ef_cli_usage_error(CMD, "--formats given twice");
-            if (!ef_cli_parse_list(CMD, "--formats", v, FORMAT_NAMES, 3, &bits))
+            const char *format_names[EF_VEC_NFORMATS];
+            for (int k = 0; k < EF_VEC_NFORMATS; k++)
+                format_names[k] = ef_vec_formats[k].name;
+            if (!ef_cli_parse_list(CMD, "--formats", v, format_names, EF_VEC_NFORMATS, &bits))
                 return EF_CLI_EXIT_USAGE;
-            a->formats = bits;
+            a->formats = 0;
+            for (int k = 0; k < EF_VEC_NFORMATS; k++)
+                a->formats |= (bits >> k & 1u) ? ef_vec_formats[k].bit : 0u;
         } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "--interfaces", &v)) != 0) {
             if (r < 0)
                 return EF_CLI_EXIT_USAGE;

@@ -1,6 +1,9 @@
 CLI_SRC := $(wildcard cli/*.c)
 CLI_OBJ := $(CLI_SRC:%.c=$(BUILD)/%.o) $(RTLV_OBJ)
 EDGEFLAG := $(BUILD)/edgeflag
+# Layer: the public headers, fixed/, the vector library and its own.
+LAYER_INC_cli := -Iinclude/edgeflag -Ifixed -Irtl_vectors -Icli
+$(CLI_SRC:%.c=$(BUILD)/%.o): EF_INC := $(LAYER_INC_cli)
 
 cli: $(EDGEFLAG)
 $(EDGEFLAG): $(CLI_OBJ) $(LIB_A)

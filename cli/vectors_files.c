@@ -40,33 +40,28 @@ static size_t plan(const ef_cli_vec_job *job, ef_vec_file *f)
     size_t n = 0;
     const char *tag = job->dump ? ".actual" : "";
     memset(f, 0, MAX_FILES * sizeof *f);
-    if (job->formats & EF_CLI_VEC_HEX) {
+    for (int k = 0; k < EF_VEC_NFORMATS; k++) {
+        const ef_vec_format *fm = &ef_vec_formats[k];
+        if (!(job->formats & fm->bit))
+            continue;
+        if (!fm->per_iface) {
+            snprintf(f[n].name, sizeof f[n].name, "vectors%s%s", tag, fm->ext);
+            f[n].format = fm->name;
+            f[n].iface = -1;
+            f[n].role = "all";
+            n++;
+            continue;
+        }
         for (int i = 0; i < EF_IF_COUNT; i++) {
             if (!(job->ifaces >> i & 1u))
                 continue;
-            if (job->dump)
-                snprintf(f[n].name, sizeof f[n].name, "%s.actual.hex", ef_iface_get(i)->name);
-            else
-                ef_vec_hex_name(i, f[n].name, sizeof f[n].name);
-            f[n].format = "hex";
+            snprintf(f[n].name, sizeof f[n].name, "%s.%s%s", ef_iface_get(i)->name,
+                     job->dump ? "actual" : ef_vec_role(i), fm->ext);
+            f[n].format = fm->name;
             f[n].iface = i;
             f[n].role = ef_vec_role(i);
             n++;
         }
-    }
-    if (job->formats & EF_CLI_VEC_VCD) {
-        snprintf(f[n].name, sizeof f[n].name, "vectors%s.vcd", tag);
-        f[n].format = "vcd";
-        f[n].iface = -1;
-        f[n].role = "all";
-        n++;
-    }
-    if (job->formats & EF_CLI_VEC_BIN) {
-        snprintf(f[n].name, sizeof f[n].name, "vectors%s.bin", tag);
-        f[n].format = "bin";
-        f[n].iface = -1;
-        f[n].role = "all";
-        n++;
     }
     snprintf(f[n].name, sizeof f[n].name, "frame%s.%s", tag, frame_format() == EF_CLI_FMT_PNG ? "png" : "pam");
     f[n].format = frame_format() == EF_CLI_FMT_PNG ? "png" : "pam";
@@ -128,12 +123,9 @@ typedef struct body {
 static int fill(ef_vec_out *o, const ef_vec_file *f, const body *b)
 {
     const ef_cli_vec_job *job = b->job;
-    if (strcmp(f->format, "hex") == 0)
-        ef_vec_hex_write(o, job->info, job->collect, f->iface);
-    else if (strcmp(f->format, "vcd") == 0)
-        ef_vec_vcd_write(o, job->info, job->collect);
-    else if (strcmp(f->format, "bin") == 0)
-        return ef_vec_bin_write(o, job->info, job->collect);
+    const ef_vec_format *fm = ef_vec_format_named(f->format);
+    if (fm)
+        return fm->write(o, job->info, job->collect, f->iface);
 #ifndef EF_NO_MANIFEST
     else if (strcmp(f->name, MANIFEST) == 0)
         return ef_vec_manifest_write(o, job->info, job->collect, b->files, b->nfiles);

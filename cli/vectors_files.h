@@ -14,7 +14,7 @@
 
 typedef struct ef_cli_vec_job {
     const char *dir;
-    unsigned formats;            /* EF_CLI_VEC_* bits (cli.h) */
+    unsigned formats;            /* EF_VEC_F_* bits (ef_vec.h) */
     uint32_t ifaces;             /* interfaces recorded */
     int force;
     int dump;                    /* IFACE.actual.hex, vectors.actual.*, frame.actual.*, no manifest */

@@ -25,6 +25,6 @@ bool ef_mul_i64_checked(int64_t a, int64_t b, int64_t *out)
     bool fits = (p.hi == 0 && p.lo <= (uint64_t)INT64_MAX) ||
                 (p.hi == -1 && p.lo > (uint64_t)INT64_MAX);
     if (!fits) return false;
-    *out = ef_i64_from_u64_bits(p.lo);
+    *out = ef_wrap_i64(p.lo);
     return true;
 }

@@ -13,7 +13,7 @@
  *            arc geometry).  Range [-2^31, 2^31) with resolution 2^-32.
  *   ef_q16   Q47.16 in int64_t: device-space control points during flattening.
  *   device   Q16.8 in int32_t: vertex coordinates handed to the rasterizer
- *            (1/256 px units, |v| < 2^23).  See model/edgeflag.h.
+ *            (1/256 px units, |v| < 2^23).  See include/edgeflag/edgeflag.h.
  *   ef_angle an unsigned 32-bit binary angle: one full turn = 2^32, so angle
  *            arithmetic wraps modulo a turn by construction.
  *   ef_q30   Q1.30 in int32_t: sines, cosines and other values in [-1, 1].
@@ -81,7 +81,9 @@ static inline int64_t ef_asr_i64(int64_t v, unsigned n)
  * guarantees |v| * 2^n < 2^63 where the exact value matters. */
 static inline int64_t ef_wrap_i64(uint64_t u)
 {
-    /* Modular unsigned -> signed without the implementation-defined cast. */
+    /* Modular unsigned -> signed without the implementation-defined cast of a
+     * value above INT64_MAX; compilers turn it into a no-op.  The one such
+     * conversion of the tree (the readers and fixed/ used copies of it). */
     return u <= (uint64_t)INT64_MAX ? (int64_t)u : (int64_t)(u - (uint64_t)INT64_MAX - 1u) + INT64_MIN;
 }
 static inline int64_t ef_shl_i64(int64_t v, unsigned n) { return ef_wrap_i64((uint64_t)v << n); }
@@ -185,6 +187,42 @@ void ef_sincos(ef_angle a, int32_t *sin_q30, int32_t *cos_q30);
 ef_angle ef_atan2(int64_t y, int64_t x);
 /* Degrees (Q32) to a binary angle: round_nearest(deg * 2^32 / 360) mod 2^32. */
 ef_angle ef_angle_from_deg_q32(ef_q32 deg);
+
+/* ---------------------------------------------------------------------------
+ * Integer primitives shared by every layer (fixed/ is the bottom one)
+ * ------------------------------------------------------------------------ */
+
+/* Bits set in v (0..32).  SWAR, branch-free, the same on every target (no
+ * dependence on a popcnt instruction). */
+static inline unsigned ef_popcount32(uint32_t v)
+{
+    v = v - ((v >> 1) & 0x55555555u);
+    v = (v & 0x33333333u) + ((v >> 2) & 0x33333333u);
+    v = (v + (v >> 4)) & 0x0F0F0F0Fu;
+    return (v * 0x01010101u) >> 24;
+}
+
+/* Floor division of int32: q = floor(a / d), r = a - q*d with 0 <= r < d.
+ * d > 0; a any int32.  C's `/` truncates toward zero, so a negative remainder
+ * moves q down one and r up by d, without a branch (the sign of a is data and
+ * would mispredict in the DDA start of every edge, docs/spec.md 5 step 5). */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void ef_divmod_floor_i32(int32_t a, int32_t d, int32_t *q, int32_t *r)
+{
+    const int32_t q0 = a / d, r0 = a % d, neg = -(int32_t)(r0 < 0);
+    *q = q0 + neg;
+    *r = r0 + (d & neg);
+}
+
+/* |v| as uint64; exact for every v including INT64_MIN (2^63). */
+static inline uint64_t ef_abs_u64(int64_t v) { return v < 0 ? (uint64_t)0 - (uint64_t)v : (uint64_t)v; }
+
+/* The length (1..4) of the well-formed UTF-8 sequence at s[0..n) (RFC 3629:
+ * shortest form, no surrogates, at most U+10FFFF; an ASCII byte, control
+ * characters included, is 1), or 0 when s does not start one (or n is 0). */
+size_t ef_utf8_len(const unsigned char *s, size_t n);
 
 /* ---------------------------------------------------------------------------
  * Exact decimal text -> fixed point

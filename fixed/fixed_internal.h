@@ -13,19 +13,7 @@
 /* Unsigned 128-bit value hi:lo, used for magnitudes of wide products. */
 typedef struct ef_u128 { uint64_t hi, lo; } ef_u128;
 
-/* Modular (two's complement) conversion uint64 -> int64.  A plain cast is
- * implementation-defined for u > INT64_MAX; this is not, and compilers turn
- * it into a no-op. */
-static inline int64_t ef_i64_from_u64_bits(uint64_t u)
-{
-    return u <= (uint64_t)INT64_MAX ? (int64_t)u : (int64_t)(u - ((uint64_t)1 << 63)) + INT64_MIN;
-}
-
-/* |v| as uint64; exact for every v including INT64_MIN (2^63). */
-static inline uint64_t ef_abs_u64(int64_t v)
-{
-    return v < 0 ? (uint64_t)0 - (uint64_t)v : (uint64_t)v;
-}
+/* uint64 -> int64 modulo 2^64 is ef_wrap_i64 and |v| is ef_abs_u64 (ef_fixed.h). */
 
 /* Number of leading zero bits of a non-zero uint64 (0..63).  A portable
  * binary search: no compiler builtin, so every toolchain agrees. */

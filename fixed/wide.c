@@ -45,7 +45,7 @@ ef_i128 ef_mul_i64_wide(int64_t a, int64_t b)
     if (a < 0) hi -= ub;
     if (b < 0) hi -= ua;
     ef_i128 r;
-    r.hi = ef_i64_from_u64_bits(hi);
+    r.hi = ef_wrap_i64(hi);
     r.lo = p.lo;
     return r;
 }
@@ -101,7 +101,7 @@ static bool round_div_signed(ef_u128 n, uint64_t d, bool negative, int64_t *out)
     uint64_t limit = negative ? (uint64_t)1 << 63 : ((uint64_t)1 << 63) - 1u;
     if (q > limit || (up && q == limit)) return false;
     q += up ? 1u : 0u;
-    *out = negative ? ef_i64_from_u64_bits((uint64_t)0 - q) : (int64_t)q;
+    *out = negative ? ef_wrap_i64((uint64_t)0 - q) : (int64_t)q;
     return true;
 }
 
@@ -115,7 +115,7 @@ bool ef_q32_mul(ef_q32 a, ef_q32 b, ef_q32 *out)
     int64_t hi = p.hi + (lo < p.lo ? 1 : 0);
     /* The result hi * 2^32 + (lo >> 32) fits int64 iff -2^31 <= hi < 2^31. */
     if (hi < -((int64_t)1 << 31) || hi >= ((int64_t)1 << 31)) return false;
-    out->v = ef_i64_from_u64_bits(((uint64_t)hi << 32) | (lo >> 32));
+    out->v = ef_wrap_i64(((uint64_t)hi << 32) | (lo >> 32));
     return true;
 }
 

@@ -29,7 +29,7 @@ const uint8_t *ef_alpha_of_count(int samples)
     return samples == 8 ? alpha_count8 : samples == 16 ? alpha_count16 : alpha_count32;
 }
 
-uint8_t ef_coverage_alpha(uint32_t mask, int samples)
+uint8_t ef_coverage_alpha(ef_mask mask, int samples)
 {
     uint32_t n = (uint32_t)samples;
     return (uint8_t)((255u * ef_popcount32(mask) + n / 2u) / n);

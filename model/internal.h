@@ -86,7 +86,7 @@ struct ef_ctx {
     int32_t width, height;
     int samples;            /* N */
     int32_t h, c;           /* 256/N and h/2, Q16.8 */
-    int32_t off[32];        /* plot offset per sub-scanline: 256 - h*k_s - c */
+    int32_t off[EF_SAMPLES_MAX];  /* plot offset per sub-scanline: 256 - h*k_s - c */
     _Alignas(16) int16_t mask_pairs[64]; /* (s, off[s]), s = 0..N-1: MASK rows' multiplier pairs (plotter.c) */
 
     /* edge store and edge table */
@@ -120,15 +120,7 @@ struct ef_ctx {
  * (row_min > row_max when none). */
 ef_status ef_edges_setup(ef_ctx *ctx, const ef_polygon *poly, int32_t *row_min, int32_t *row_max);
 
-/* floor(a / d) and a - d * floor(a / d) for d > 0, in 32 bits.  C division
- * truncates; the floor is taken without a branch (the sign of a is data and
- * would mispredict): remainder r < 0 -> q - 1, r + d. */
-static EF_ALWAYS_INLINE void ef_divmod_floor_i32(int32_t a, int32_t d, int32_t *q, int32_t *r)
-{
-    const int32_t q0 = a / d, r0 = a % d, neg = -(int32_t)(r0 < 0);
-    *q = q0 + neg;
-    *r = r0 + (d & neg);
-}
+/* floor(a / d) and its remainder in 32 bits: ef_divmod_floor_i32 (fixed/ef_fixed.h). */
 
 /* Spec 5 step 5, exact: the DDA of an edge set up by ef_edges_setup, at its
  * first sample row r0, and its plotter path.  h = 256/N, c = h/2, last_s =
@@ -311,14 +303,7 @@ static inline uint32_t ef_gather_pads(uint64_t pads)
     return (uint32_t)(((pads >> 7) * UINT64_C(0x0102040810204080)) >> 56);
 }
 
-/* Population count, the coverage block's core (portable; compilers fold it). */
-static inline unsigned ef_popcount32(uint32_t v)
-{
-    v = v - ((v >> 1) & 0x55555555u);
-    v = (v & 0x33333333u) + ((v >> 2) & 0x33333333u);
-    v = (v + (v >> 4)) & 0x0F0F0F0Fu;
-    return (v * 0x01010101u) >> 24;
-}
+/* Population count, the coverage block's core: ef_popcount32 (fixed/ef_fixed.h). */
 
 /* ---------------------------------------------------------------------------
  * Compositing four channels at once (docs/spec.md section 8, bit for bit).
@@ -412,7 +397,7 @@ static inline void ef_blend_span_n(const ef_blend *b, int32_t y, int32_t x, int3
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline void ef_blend_span(const ef_blend *b, int32_t y, int32_t x, int32_t len, uint32_t mask)
+static inline void ef_blend_span(const ef_blend *b, int32_t y, int32_t x, int32_t len, ef_mask mask)
 {
     const uint32_t n = b->samples == 8 ? b->count8[mask] : ef_popcount32(mask);
     ef_blend_span_n(b, y, x, len, n);

@@ -408,7 +408,7 @@ static EF_ALWAYS_INLINE void plot_row(ef_ctx *ctx, int32_t row, int32_t head, in
     ef_edge *edges = ctx->edges;
     int32_t *aet = ctx->aet;
     const uint32_t naet = ctx->naet;
-    int32_t off[32];
+    int32_t off[EF_SAMPLES_MAX];
     load_offsets(ctx, off, NS);
     int32_t lo = *xmin, hi = *xmax, lox = INT32_MAX, hix = -1;
     uint64_t overflows = 0;

@@ -155,7 +155,7 @@ static int accumulate_nz(raster *r, int32_t p, int64_t *acc, uint32_t *mask)
 /* FILL for row y: steps xmin..xmax and the flush step from the cursor. */
 static void scan(raster *r, int32_t y, int32_t xmin, int32_t xmax)
 {
-    int64_t acc_nz[32] = { 0 };
+    int64_t acc_nz[EF_SAMPLES_MAX] = { 0 };
     uint32_t mask = 0;
     int32_t start = xmin;
     uint64_t t = r->t;

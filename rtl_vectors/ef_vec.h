@@ -206,6 +206,30 @@ void ef_vec_bin_header_counts(uint8_t h[EF_VEC_BIN_HEADER], const ef_vec_info *i
 void ef_vec_bin_header(uint8_t h[EF_VEC_BIN_HEADER], const ef_vec_info *info, const ef_vec_collect *c,
                        uint32_t records_crc);
 
+/* ------------------------------------------------------------ the formats */
+
+/* The --formats bits of `edgeflag vectors`. */
+enum { EF_VEC_F_HEX = 1, EF_VEC_F_VCD = 2, EF_VEC_F_BIN = 4, EF_VEC_F_ALL = 7 };
+#define EF_VEC_NFORMATS 3
+
+/* One vector file format: the table ef_vec_formats (vec_formats.c) is the
+ * only place that knows them all; the writers of `vectors`, the manifest,
+ * --formats and the readers of `check` go through it. */
+typedef struct ef_vec_format {
+    const char *name;      /* "hex": --formats and the manifest's "format" */
+    unsigned bit;          /* EF_VEC_F_* */
+    int per_iface;         /* 1: one file per interface (IFACE.ROLE.hex); 0: one for all (vectors.EXT) */
+    const char *ext;       /* ".hex" */
+    /* Writes the file (iface: the interface of a per-interface file, else ignored); 0, or -1 out of memory. */
+    int (*write)(ef_vec_out *o, const ef_vec_info *info, const ef_vec_collect *c, int iface);
+    int reader;            /* EF_VEC_FMT_* of ef_vec_read.h that reads it back; 0: none (VCD: GTKWave's) */
+} ef_vec_format;
+extern const ef_vec_format ef_vec_formats[EF_VEC_NFORMATS];
+/* The format called name, or NULL. */
+const ef_vec_format *ef_vec_format_named(const char *name);
+/* The format of a file name by its extension, or NULL. */
+const ef_vec_format *ef_vec_format_of_path(const char *path);
+
 /* One file written, as the manifest lists it. */
 typedef struct ef_vec_file {
     char name[32];

@@ -15,7 +15,7 @@
  * the input's size; a failed read leaves the result empty.
  *
  * Field layouts are never written out here: transactions are kept as the
- * cycle and the payload bits of model/ef_trace.h and decoded with
+ * cycle and the payload bits of include/edgeflag/ef_trace.h and decoded with
  * ef_txn_field() against the interface table (model/trace_iface.c).
  */
 #ifndef EF_VEC_READ_H

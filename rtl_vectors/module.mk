@@ -3,7 +3,10 @@
 # to CLI_OBJ) and into tests/unit/test_gen.c.
 RTLV_SRC := $(wildcard rtl_vectors/*.c)
 RTLV_OBJ := $(RTLV_SRC:%.c=$(BUILD)/%.o)
-CPPFLAGS += -Irtl_vectors
+EF_INC += -Irtl_vectors
+# Layer: the public headers, fixed/ (the bottom layer) and its own; never model/ or cli/.
+LAYER_INC_rtl_vectors := -Iinclude/edgeflag -Ifixed -Irtl_vectors
+$(RTLV_OBJ): EF_INC := $(LAYER_INC_rtl_vectors)
 
 # test_gen needs the generator objects as well as the library; an explicit rule
 # overrides tests/module.mk's pattern rule for this one binary.

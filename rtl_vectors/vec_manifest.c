@@ -17,6 +17,7 @@
  * have no json-c and write none.
  */
 #include "ef_vec.h"
+#include "ef_fixed.h"   /* ef_utf8_len */
 
 #ifndef EF_NO_MANIFEST
 
@@ -26,36 +27,6 @@
 
 #define FLAGS_LINE (JSON_C_TO_STRING_SPACED | JSON_C_TO_STRING_NOSLASHESCAPE)
 #define FLAGS_TOP (JSON_C_TO_STRING_PRETTY | JSON_C_TO_STRING_SPACED | JSON_C_TO_STRING_NOSLASHESCAPE)
-
-/* Length of the UTF-8 sequence starting at p (at most n bytes available)
- * if it is well-formed (RFC 3629: shortest form, no surrogates, <= U+10FFFF),
- * else 0.  json-c copies string bytes as they are, so a file name that is
- * not UTF-8 would make the manifest invalid JSON: such bytes become U+FFFD. */
-static size_t utf8_len(const unsigned char *p, size_t n)
-{
-    size_t len;
-    uint32_t cp, min;
-    if (p[0] < 0x80)
-        return 1;
-    if ((p[0] & 0xE0) == 0xC0)
-        len = 2, cp = p[0] & 0x1Fu, min = 0x80;
-    else if ((p[0] & 0xF0) == 0xE0)
-        len = 3, cp = p[0] & 0x0Fu, min = 0x800;
-    else if ((p[0] & 0xF8) == 0xF0)
-        len = 4, cp = p[0] & 0x07u, min = 0x10000;
-    else
-        return 0;
-    if (len > n)
-        return 0;
-    for (size_t i = 1; i < len; i++) {
-        if ((p[i] & 0xC0) != 0x80)
-            return 0;
-        cp = cp << 6 | (p[i] & 0x3Fu);
-    }
-    if (cp < min || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF))
-        return 0;
-    return len;
-}
 
 /* s as a json-c string, every byte that is not well-formed UTF-8 replaced
  * by U+FFFD; NULL when out of memory. */
@@ -68,7 +39,7 @@ static json_object *utf8_string(const char *s)
     if (!d)
         return NULL;
     while (n) {
-        size_t len = utf8_len(p, n);
+        size_t len = ef_utf8_len(p, n);
         if (len == 0) {
             memcpy(d + o, "\xef\xbf\xbd", 3);
             o += 3;

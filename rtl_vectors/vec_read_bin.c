@@ -74,9 +74,9 @@ static ef_status read_header(ef_vr_src *s, const char *name, ef_vec_dump *out, u
                              hcrc, le(hd + 100, 4));
     /* The CRC holds, so a bad field below was written so, not damaged. */
     const unsigned samples = hd[12], rule = hd[13];
-    if (samples != 8 && samples != 16 && samples != 32)
+    if (!ef_samples_valid((int)samples))
         return ef_vr_err_bin(err, EF_ERR_RANGE, name, EF_VEC_AT_HEADER, 0, 12,
-                             "samples %u: 8, 16 or 32 expected", samples);
+                             "samples %u: " EF_SAMPLES_TEXT " expected", samples);
     if (rule > 2)
         return ef_vr_err_bin(err, EF_ERR_RANGE, name, EF_VEC_AT_HEADER, 0, 13,
                              "rule %u: 0 (nonzero), 1 (evenodd) or 2 (each shape's own) expected", rule);

@@ -290,12 +290,6 @@ ef_status ef_vec_read_bin(const char *name, const uint8_t *data, size_t len, ef_
     return ef_vr_bin(&s, name, out, err);
 }
 
-static int ends_with(const char *s, const char *suffix)
-{
-    size_t n = strlen(s), k = strlen(suffix);
-    return n >= k && strcmp(s + n - k, suffix) == 0;
-}
-
 ef_status ef_vec_read_fp(FILE *fp, const char *name, int binary, int want, int hint, ef_vec_dump *out,
                          ef_vec_read_error *err)
 {
@@ -332,7 +326,8 @@ ef_status ef_vec_read_path(const char *path, const char *name, int want, int hin
     FILE *fp = fopen(path, "rb");
     if (!fp)
         return ef_vr_err_file(err, EF_ERR_IO, name, "cannot open: %s", strerror(errno));
-    ef_status st = ef_vec_read_fp(fp, name, ends_with(path, ".bin"), want, hint, out, err);
+    const ef_vec_format *fm = ef_vec_format_of_path(path);
+    ef_status st = ef_vec_read_fp(fp, name, fm && fm->reader == EF_VEC_FMT_BIN, want, hint, out, err);
     fclose(fp);
     return st;
 }

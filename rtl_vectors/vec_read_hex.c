@@ -181,7 +181,7 @@ static ef_status header_generator(hex_state *h, const char *t)
             h->out->width = (int32_t)a;
             h->out->height = (int32_t)b;
         } else if (starts(t, &k, "samples ")) {
-            if (dec_at(t, &k, &a) && (a == 8 || a == 16 || a == 32))
+            if (dec_at(t, &k, &a) && a <= EF_SAMPLES_MAX && ef_samples_valid((int)a))
                 h->out->samples = (int)a;
         }
     }

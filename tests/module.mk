@@ -38,6 +38,7 @@ $(AREA_CHECK): tests/area_check.c $(LIB_A)
 
 test-build: lib cli $(UNIT_BIN) $(ORACLE_CHECK) $(ORACLE_SELFTEST) $(TOOL_BIN) $(AREA_CHECK)
 	bash tests/install_check.sh $(BUILD)
+	@bash tests/layers/run.sh $(BUILD)
 
 test-unit: $(UNIT_BIN)
 	@set -e; for t in $(UNIT_BIN); do echo "== $$t"; EF_SVG=$(EF_SVG) $$t; done
@@ -80,3 +81,4 @@ include tests/host/socket.mk
 include tests/sanitize/module.mk
 include tests/portability.mk
 include tests/filter/module.mk
+include tests/layers/module.mk

@@ -111,7 +111,7 @@ static ef_angle atan2_wide(ef_i128 py, ef_i128 px)
         py.lo = (py.lo >> 1) | ((uint64_t)py.hi << 63);
         py.hi = ef_asr_i64(py.hi, 1);
     }
-    return ef_atan2(ef_in_i64_from_bits(py.lo), ef_in_i64_from_bits(px.lo));
+    return ef_atan2(ef_wrap_i64(py.lo), ef_wrap_i64(px.lo));
 }
 
 ef_status ef_in_build_svg_arc(ef_in_builder *b, ef_q32 x0, ef_q32 y0, ef_q32 rx, ef_q32 ry, ef_q32 phi_deg,

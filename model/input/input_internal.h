@@ -40,14 +40,7 @@
 /* Flattening tolerance: 1/16 px, in Q47.16 units. */
 #define EF_IN_TOL_Q16 ((int64_t)1 << 12)
 
-/* Modular conversion of 64 bits to int64 (a plain cast of a value above
- * INT64_MAX is implementation-defined). */
-static inline int64_t ef_in_i64_from_bits(uint64_t u)
-{
-    return u <= (uint64_t)INT64_MAX ? (int64_t)u : (int64_t)(u - ((uint64_t)1 << 63)) + INT64_MIN;
-}
-/* |v| as uint64, exact for INT64_MIN. */
-static inline uint64_t ef_in_abs_u64(int64_t v) { return v < 0 ? (uint64_t)0 - (uint64_t)v : (uint64_t)v; }
+/* uint64 -> int64 modulo 2^64 and |v| as uint64: ef_wrap_i64, ef_abs_u64 (fixed/ef_fixed.h). */
 
 /* ------------------------------------------------------- 128-bit helpers
  * Exact sums of the 128-bit products ef_mul_i64_wide returns.  Callers keep
@@ -57,7 +50,7 @@ static inline ef_i128 ef_in_i128_add(ef_i128 a, ef_i128 b)
     ef_i128 r;
     r.lo = a.lo + b.lo;
     uint64_t carry = r.lo < a.lo ? 1u : 0u;
-    r.hi = ef_in_i64_from_bits((uint64_t)a.hi + (uint64_t)b.hi + carry);  /* bounded: no wrap */
+    r.hi = ef_wrap_i64((uint64_t)a.hi + (uint64_t)b.hi + carry);  /* bounded: no wrap */
     return r;
 }
 /* v * 2^s for a non-negative 64-bit shift into 128 bits (0 <= s < 64). */

@@ -26,27 +26,13 @@
  * not be able to write control sequences to the user's terminal or invalid
  * UTF-8 to a log: control characters, bytes that are not part of a valid
  * UTF-8 sequence and the invisible U+FEFF (a byte order mark where none
- * belongs) are written as \xNN / \uFEFF.  Valid UTF-8 is copied. */
-static size_t utf8_len(const unsigned char *s)
-{
-    unsigned c = s[0];
-    size_t n = c < 0x80 ? 1 : (c & 0xE0) == 0xC0 ? 2 : (c & 0xF0) == 0xE0 ? 3 : (c & 0xF8) == 0xF0 ? 4 : 0;
-    if (n == 0 || (n == 2 && c < 0xC2) || (n == 4 && c > 0xF4)) return 0;
-    for (size_t i = 1; i < n; i++)
-        if ((s[i] & 0xC0) != 0x80) return 0;
-    uint32_t cp = n == 1 ? c : n == 2 ? c & 0x1F : n == 3 ? c & 0x0F : c & 0x07;
-    for (size_t i = 1; i < n; i++) cp = cp << 6 | (s[i] & 0x3Fu);
-    if ((n == 3 && cp < 0x800) || (n == 4 && (cp < 0x10000 || cp > 0x10FFFF)) || (cp >= 0xD800 && cp <= 0xDFFF))
-        return 0;
-    return n;
-}
-
+ * belongs) are written as \xNN / \uFEFF.  Valid UTF-8 (ef_utf8_len) is copied. */
 static void safe_text(char *out, size_t size, const char *in)
 {
     size_t o = 0;
-    const unsigned char *p = (const unsigned char *)in;
+    const unsigned char *p = (const unsigned char *)in, *end = p + strlen(in);
     while (*p) {
-        size_t n = utf8_len(p);
+        size_t n = ef_utf8_len(p, (size_t)(end - p));
         char esc[8];
         const char *src = (const char *)p;
         size_t len = n;

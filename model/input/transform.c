@@ -60,7 +60,7 @@ bool ef_in_i128_round_shr(ef_i128 v, unsigned n, int64_t *out)
     }
     /* Fits int64 iff the high word is the sign extension of the low one. */
     if (!((rhi == 0 && (rlo >> 63) == 0) || (rhi == -1 && (rlo >> 63) == 1))) return false;
-    *out = ef_in_i64_from_bits(rlo);
+    *out = ef_wrap_i64(rlo);
     return true;
 }
 

@@ -7,7 +7,7 @@
 #                      pixel; --transactions, --errors, --junit (xmllint),
 #                      --diff-image; usage errors.
 # The two helpers link the readers (rtl_vectors/) as well as the library.
-CHECK_TOOLS := $(BUILD)/tests/check/vec_mutate $(BUILD)/tests/check/vec_load
+CHECK_TOOLS := $(BUILD)/tests/check/vec_mutate $(BUILD)/tests/check/vec_load $(BUILD)/tests/check/check_lib
 
 $(BUILD)/tests/check/%: tests/check/%.c $(RTLV_OBJ) $(LIB_A)
 	@mkdir -p $(dir $@)

@@ -32,6 +32,7 @@ root=$(cd "$(dirname "$0")/../.." && pwd)
 case $build in /*) ;; *) build=$PWD/$build ;; esac
 EF=$build/edgeflag
 MUT=$build/tests/check/vec_mutate
+LIB=$build/tests/check/check_lib
 # EF_CHECK_WRITER=PATH: write the vectors with another build's edgeflag (e.g.
 # to run the checker under a sanitizer the model's tracing does not pass).
 EFW=${EF_CHECK_WRITER:-$EF}
@@ -340,6 +341,30 @@ run check V E --errors 7
     ok "--errors 7: 7 lines, 30 counted" || bad "--errors 7" "exit $rc, $(wc -l <out) lines"
 run check V E --errors=0
 [ $rc = 1 ] && [ "$(wc -l <out)" = 30 ] && ok "--errors 0: all 30 lines" || bad "--errors 0" "exit $rc, $(wc -l <out) lines"
+
+# ------------------------------------------------------------ the library
+# The verifier through rtl_vectors/ef_check.h (tests/check/check_lib.c), as the host tool and a
+# DPI-C bench call it: the same exit status, the same mismatch lines and the same JUnit (but for
+# its times) as the command, the same pixels marked, and not one byte on stderr (no status stream).
+if [ -x "$LIB" ]; then
+    for pair in "V/vectors.bin B/vectors.bin" "V/pix.expected.hex A/pix.actual.hex" "V A" "V E"; do
+        read -r e a <<<"$pair"
+        run check "$e" "$a" --errors 0 --junit jc.xml --diff-image dc.pam
+        crc=$rc
+        "$LIB" "$e" "$a" lib_report lib_junit.xml >lib_out 2>lib_err
+        hdr=$(grep -abo ENDHDR dc.pam | head -n 1 | cut -d: -f1)   # the pixels start after "ENDHDR\n"
+        marked=$(tail -c +$((hdr + 8)) dc.pam | od -An -v -tx1 -w4 | grep -c '^ ff 00 ff ff$')
+        if grep -q "^rc $crc mismatches .* magenta $marked\$" lib_out && cmp -s out lib_report && [ ! -s lib_err ] &&
+            cmp -s <(sed 's/time="[0-9.]*"//g' jc.xml) <(sed 's/time="[0-9.]*"//g' lib_junit.xml); then
+            ok "ef_check_run on $e vs $a: exit $crc, the command's report, JUnit and $marked marked pixels, silent"
+        else
+            bad "ef_check_run on $e vs $a" "command: exit $crc, $marked magenta; library: $(cat lib_out)" \
+                "$(diff out lib_report | head -n 4)"
+        fi
+    done
+else
+    bad "tests/check/check_lib not built"
+fi
 
 # ------------------------------------------------------------ --junit
 run check V E --junit j.xml

@@ -37,7 +37,7 @@ extern "C" {
 #define EO_MAX_CANVAS 16384
 #define EO_COORD_LIMIT (1 << 23) /* |x|, |y| < 2^23 (Q16.8) */
 
-/* Same layout as ef_point / ef_polygon (model/edgeflag.h), defined here so the
+/* Same layout as ef_point / ef_polygon (include/edgeflag/edgeflag.h), defined here so the
  * oracle does not include the model's header.  Coordinates are Q16.8 device
  * units (v / 256 px), y grows downward.  Contour c is
  * pts[start[c] .. start[c+1]-1]; start has ncontours+1 entries.  A contour of

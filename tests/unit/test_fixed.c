@@ -400,7 +400,7 @@ static void test_mul_wide(void **state)
     p = ef_mul_i64_wide(-1, 1);
     assert_true(p.hi == -1 && p.lo == UINT64_MAX);
     for (int i = 0; i < 50000; i++) {
-        int64_t a = (i & 1) ? ef_i64_from_u64_bits(rnd64()) : rnd_i64(), b = (i & 2) ? ef_i64_from_u64_bits(rnd64()) : rnd_i64();
+        int64_t a = (i & 1) ? ef_wrap_i64(rnd64()) : rnd_i64(), b = (i & 2) ? ef_wrap_i64(rnd64()) : rnd_i64();
         uint64_t hi, lo;
         p = ef_mul_i64_wide(a, b);
         ref_mul_wide(a, b, &hi, &lo);
@@ -514,8 +514,8 @@ static void test_q32_mul(void **state)
     for (int i = 0; i < 30000; i++) {
         int64_t a = rnd_i64(), b = rnd_i64(), want = 0;
         if (i % 4 == 0) {       /* b = 2^31 mod 2^32 and a odd: a*b / 2^32 is a tie */
-            b = ef_i64_from_u64_bits(((uint64_t)b & ~UINT64_C(0xFFFFFFFF)) | UINT64_C(0x80000000));
-            a = ef_i64_from_u64_bits((uint64_t)a | 1u);
+            b = ef_wrap_i64(((uint64_t)b & ~UINT64_C(0xFFFFFFFF)) | UINT64_C(0x80000000));
+            a = ef_wrap_i64((uint64_t)a | 1u);
         }
         bool wok = ref_q32_mul(a, b, &want);
         bool ok = ef_q32_mul(ef_q32_raw(a), ef_q32_raw(b), &r);
@@ -910,7 +910,7 @@ static void test_format_roundtrip(void **state)
     /* format prints the exact value, so parsing it back is the identity
      * (except INT64_MIN = -2^31, which the parser rejects by design). */
     for (int i = 0; i < 200000; i++) {
-        int64_t v = i < 1000 ? (int64_t)i - 500 : (i & 1) ? ef_i64_from_u64_bits(rnd64()) : rnd_i64();
+        int64_t v = i < 1000 ? (int64_t)i - 500 : (i & 1) ? ef_wrap_i64(rnd64()) : rnd_i64();
         if (v == INT64_MIN) v = INT64_MIN + 1;
         char buf[48];
         size_t n = ef_q32_format(ef_q32_raw(v), buf);
@@ -1056,7 +1056,7 @@ static void test_atan2(void **state)
         for (int64_t x = -150; x <= 150; x++) check_atan2(y, x);
     for (int i = 0; i < 200000; i++) {
         int64_t y = rnd_i64(), x = rnd_i64();
-        if (i % 5 == 0) y = ef_i64_from_u64_bits((uint64_t)x + rnd64() % 9 - 4);   /* near the diagonal */
+        if (i % 5 == 0) y = ef_wrap_i64((uint64_t)x + rnd64() % 9 - 4);   /* near the diagonal */
         if (i % 7 == 0) y = (int64_t)(rnd64() % 5) - 2;         /* near the axis */
         check_atan2(y, x);
         if (y != INT64_MIN && x != INT64_MIN) {
@@ -1179,6 +1179,133 @@ static void test_cordic_spec(void **state)
     }
 }
 
+/* ---------------------------------------------------------------------------
+ * Integer primitives, each against something not derived from it.
+ * ------------------------------------------------------------------------ */
+
+/* popcount against a bit-by-bit count: every 16-bit value in both halves and
+ * a stride through the rest. */
+static void test_popcount32(void **state)
+{
+    (void)state;
+    for (uint64_t k = 0; k < (UINT64_C(1) << 32); k += (k < 65536u ? 1u : 65521u * 3u)) {
+        uint32_t vs[2] = { (uint32_t)k, (uint32_t)k << 16 | (uint32_t)k >> 16 };
+        for (int j = 0; j < 2; j++) {
+            unsigned n = 0;
+            for (int b = 0; b < 32; b++)
+                n += vs[j] >> b & 1u;
+            assert_int_equal(ef_popcount32(vs[j]), n);
+        }
+    }
+    assert_int_equal(ef_popcount32(0xFFFFFFFFu), 32);
+}
+
+/* floor divmod of int32 against the definition, checked in 64 bits: q*d + r
+ * = a and 0 <= r < d, for a near 0, near the ends and d in 1..300 and huge. */
+static void test_divmod_floor_i32(void **state)
+{
+    (void)state;
+    static const int32_t ds[] = { 1, 2, 3, 7, 32, 255, 256, 300, 65536, 1 << 24, INT32_MAX };
+    for (size_t i = 0; i < sizeof ds / sizeof ds[0]; i++)
+        for (int64_t a = -70000; a <= 70000; a += (a > -600 && a < 600) ? 1 : 97) {
+            static const int64_t ends[] = { INT32_MIN, INT32_MIN + 1, INT32_MAX - 1, INT32_MAX };
+            for (int e = -1; e < 4; e++) {
+                int32_t av = (int32_t)(e < 0 ? a : ends[e]), q, r;
+                ef_divmod_floor_i32(av, ds[i], &q, &r);
+                assert_true((int64_t)q * ds[i] + r == av);
+                assert_true(r >= 0 && r < ds[i]);
+            }
+        }
+}
+
+/* uint64 -> int64 modulo 2^64: the value plus a multiple of 2^64, in range. */
+static void test_wrap_i64(void **state)
+{
+    (void)state;
+    static const uint64_t us[] = { 0, 1, (uint64_t)INT64_MAX, (uint64_t)INT64_MAX + 1u, UINT64_MAX, UINT64_MAX - 1u,
+                                   UINT64_C(0x8000000000000001), UINT64_C(0x0123456789ABCDEF),
+                                   UINT64_C(0xFEDCBA9876543210) };
+    for (size_t i = 0; i < sizeof us / sizeof us[0]; i++) {
+        int64_t v = ef_wrap_i64(us[i]);
+        assert_true((uint64_t)v == us[i]);   /* the conversion back is defined: modulo 2^64 */
+        assert_true((v < 0) == (us[i] > (uint64_t)INT64_MAX));
+    }
+    assert_true(ef_abs_u64(INT64_MIN) == (uint64_t)1 << 63);
+    assert_true(ef_abs_u64(-5) == 5u && ef_abs_u64(7) == 7u && ef_abs_u64(0) == 0u);
+}
+
+/* The UTF-8 validator against an encoder: the sequences it accepts are
+ * exactly the shortest encodings of the scalar values (0..10FFFF without the
+ * surrogates).  1, 2 and 3 bytes exhaustively (a 4-byte lead in 3 bytes is
+ * 0); 4 bytes by count (every
+ * 4-byte encoding accepted, and as many accepted 4-byte sequences as there
+ * are supplementary values); and never past n. */
+static size_t utf8_encode(uint32_t cp, unsigned char *o)
+{
+    if (cp < 0x80u) { o[0] = (unsigned char)cp; return 1; }
+    if (cp < 0x800u) { o[0] = (unsigned char)(0xC0u | cp >> 6); o[1] = (unsigned char)(0x80u | (cp & 0x3Fu)); return 2; }
+    if (cp < 0x10000u) {
+        o[0] = (unsigned char)(0xE0u | cp >> 12);
+        o[1] = (unsigned char)(0x80u | (cp >> 6 & 0x3Fu));
+        o[2] = (unsigned char)(0x80u | (cp & 0x3Fu));
+        return 3;
+    }
+    o[0] = (unsigned char)(0xF0u | cp >> 18);
+    o[1] = (unsigned char)(0x80u | (cp >> 12 & 0x3Fu));
+    o[2] = (unsigned char)(0x80u | (cp >> 6 & 0x3Fu));
+    o[3] = (unsigned char)(0x80u | (cp & 0x3Fu));
+    return 4;
+}
+
+static void test_utf8_len(void **state)
+{
+    (void)state;
+    static unsigned char valid3[1u << 21];   /* bit per 3-byte sequence */
+    static unsigned char valid2[1u << 13];
+    memset(valid3, 0, sizeof valid3);
+    memset(valid2, 0, sizeof valid2);
+    uint64_t n4 = 0;
+    for (uint32_t cp = 0; cp <= 0x10FFFFu; cp++) {
+        unsigned char e[4];
+        if (cp >= 0xD800u && cp <= 0xDFFFu)
+            continue;
+        size_t len = utf8_encode(cp, e);
+        assert_int_equal(ef_utf8_len(e, len), len);
+        assert_int_equal(ef_utf8_len(e, len - 1), 0);   /* one byte short: never read past n */
+        if (len == 2) {
+            uint32_t k = (uint32_t)e[0] << 8 | e[1];
+            valid2[k >> 3] |= (unsigned char)(1u << (k & 7u));
+        } else if (len == 3) {
+            uint32_t k = (uint32_t)e[0] << 16 | (uint32_t)e[1] << 8 | e[2];
+            valid3[k >> 3] |= (unsigned char)(1u << (k & 7u));
+        } else if (len == 4) {
+            n4++;
+        }
+    }
+    assert_int_equal(n4, 0x100000u);
+    for (uint32_t k = 0; k < (1u << 24); k++) {
+        unsigned char s[3] = { (unsigned char)(k >> 16), (unsigned char)(k >> 8), (unsigned char)k };
+        size_t got = ef_utf8_len(s, 3);
+        uint32_t k2 = k >> 8;
+        size_t want = s[0] < 0x80u ? 1
+                      : (valid2[k2 >> 3] >> (k2 & 7u) & 1u) ? 2
+                      : (valid3[k >> 3] >> (k & 7u) & 1u) ? 3 : 0;
+        assert_int_equal(got, want);
+    }
+    uint64_t acc4 = 0;
+    for (uint32_t k = 0; k < (1u << 24); k++) {
+        for (unsigned lead = 0xF0u; lead <= 0xF7u; lead++) {
+            unsigned char s[4] = { (unsigned char)lead, (unsigned char)(k >> 16), (unsigned char)(k >> 8),
+                                   (unsigned char)k };
+            size_t got = ef_utf8_len(s, 4);
+            assert_true(got == 0 || got == 4);
+            acc4 += got == 4;
+        }
+    }
+    assert_int_equal(acc4, 0x100000u);   /* with every encoding accepted: exactly those */
+    assert_int_equal(ef_utf8_len((const unsigned char *)"", 0), 0);
+}
+
 static void test_angle_from_deg(void **state)
 {
     (void)state;
@@ -1241,6 +1368,10 @@ int main(void)
         cmocka_unit_test(test_atan2),
         cmocka_unit_test(test_cordic_spec),
         cmocka_unit_test(test_angle_from_deg),
+        cmocka_unit_test(test_popcount32),
+        cmocka_unit_test(test_divmod_floor_i32),
+        cmocka_unit_test(test_wrap_i64),
+        cmocka_unit_test(test_utf8_len),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -19,6 +19,7 @@
 #include <cmocka.h>
 
 #include "ef_vec.h"
+#include "ef_vec_read.h"   /* EF_VEC_FMT_* of the table's readers */
 
 /* ------------------------------------------------------------ helpers */
 
@@ -564,6 +565,31 @@ static void test_seed(void **state)
     assert_true(s == 7);
 }
 
+/* The format table: names, bits and extensions distinct; lookups by name and by
+ * file name find the row; the bits are the --formats bits. */
+static void test_format_table(void **state)
+{
+    (void)state;
+    unsigned all = 0;
+    for (int k = 0; k < EF_VEC_NFORMATS; k++) {
+        const ef_vec_format *f = &ef_vec_formats[k];
+        assert_ptr_equal(ef_vec_format_named(f->name), f);
+        char name[64];
+        snprintf(name, sizeof name, "dir.x/pix.expected%s", f->ext);
+        assert_ptr_equal(ef_vec_format_of_path(name), f);
+        assert_int_equal(all & f->bit, 0);
+        all |= f->bit;
+        assert_non_null(f->write);
+    }
+    assert_int_equal(all, EF_VEC_F_ALL);
+    assert_int_equal(ef_vec_format_named("hex")->reader, EF_VEC_FMT_HEX);
+    assert_int_equal(ef_vec_format_named("bin")->reader, EF_VEC_FMT_BIN);
+    assert_int_equal(ef_vec_format_named("vcd")->reader, 0);
+    assert_null(ef_vec_format_named("fst"));
+    assert_null(ef_vec_format_of_path("frame.png"));
+    assert_null(ef_vec_format_of_path("hex"));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -582,6 +608,7 @@ int main(void)
         cmocka_unit_test(test_out_hash),
         cmocka_unit_test(test_out_thread),
         cmocka_unit_test(test_seed),
+        cmocka_unit_test(test_format_table),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -4,7 +4,7 @@
 #                        read back by independent tools (od, sha256sum, GTKWave's
 #                        vcd2fst/fst2vcd, tests/tools/vec_bin_check, vcd_compare)
 VEC_OBJ := $(addprefix $(BUILD)/rtl_vectors/,vec_crc32.o vec_sha256.o vec_out.o vec_collect.o vec_merge.o \
-             vec_hex.o vec_vcd.o vec_bin.o vec_manifest.o vec_seed.o)
+             vec_hex.o vec_vcd.o vec_bin.o vec_manifest.o vec_seed.o vec_formats.o)
 
 # test_vec links the writers' objects as well as the library; an explicit rule
 # overrides tests/module.mk's pattern rule for this one binary.

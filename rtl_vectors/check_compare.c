@@ -15,7 +15,7 @@
  * never field layouts: fields are decoded (ef_txn_field against the
  * interface table) just to print them.
  */
-#include "check.h"
+#include "check_internal.h"
 
 #include <inttypes.h>
 #include <stdarg.h>
@@ -174,7 +174,7 @@ static void report(cmp *c, int kind, size_t i, size_t j)
     ef_vec_dump_txn(c->a, c->iface, j, &ta);
     r->mismatches++;
     c->tc->mismatches++;
-    if (r->a->diff_image) {
+    if (r->a->keep_marks) {
         if (kind != M_EXTRA)
             chk_mark_txn(r, &te);
         if (kind != M_MISSING)
@@ -234,7 +234,8 @@ static void report(cmp *c, int kind, size_t i, size_t j)
     if (b.oom) {
         r->oom = 1;
     } else {
-        fprintf(r->out, "%s\n", b.p);
+        if (r->a->report)
+            fprintf(r->a->report, "%s\n", b.p);
         case_text(r, c->tc, b.p, b.n);
     }
     free(b.p);

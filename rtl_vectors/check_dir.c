@@ -8,7 +8,7 @@
  * checked to be plain file names by its reader, so nothing outside EXPECTED
  * is ever opened.
  */
-#include "check.h"
+#include "check_internal.h"
 
 #include <dirent.h>
 #include <errno.h>
@@ -16,24 +16,43 @@
 #include <stdlib.h>
 #include <string.h>
 
-static int ends_with(const char *s, const char *suffix)
+/* The format of an expected file `name` that check reads (by its extension,
+ * ef_vec_formats), and its stem: STEM.expected.hex (a per-interface format)
+ * or vectors.bin (one file for all).  NULL for any other file. */
+static const ef_vec_format *expected_format(const char *name, size_t *stem)
 {
-    size_t n = strlen(s), k = strlen(suffix);
-    return n >= k && strcmp(s + n - k, suffix) == 0;
+    const ef_vec_format *fm = ef_vec_format_of_path(name);
+    size_t n = strlen(name);
+    if (!fm || !fm->reader)
+        return NULL;
+    if (fm->per_iface) {
+        size_t k = strlen(".expected") + strlen(fm->ext);
+        if (n < k || strncmp(name + n - k, ".expected", strlen(".expected")) != 0)
+            return NULL;
+        *stem = n - k;
+    } else {
+        *stem = n - strlen(fm->ext);
+    }
+    return fm;
 }
 
 /* The dump in ACTUAL of EXPECTED's file `name`: STEM.actual.hex for
  * STEM.expected.hex, STEM.actual.bin for STEM.bin.  NULL if there is none. */
 static char *counterpart(const char *adir, const char *name)
 {
-    const char *from = ends_with(name, ".bin") ? ".bin" : ".expected.hex";
-    const char *to = ends_with(name, ".bin") ? ".actual.bin" : ".actual.hex";
-    size_t stem = ends_with(name, from) ? strlen(name) - strlen(from) : strlen(name);
-    char *nm = malloc(stem + strlen(to) + 1);
+    size_t stem = strlen(name);
+    const ef_vec_format *fm = expected_format(name, &stem);
+    if (!fm)   /* a manifest's expected file of another name: NAME.actual.EXT */
+        fm = ef_vec_format_of_path(name);
+    if (!fm)
+        return NULL;
+    const char *ext = fm->ext;
+    char *nm = malloc(stem + strlen(".actual") + strlen(ext) + 1);
     if (!nm)
         return NULL;
     memcpy(nm, name, stem);
-    strcpy(nm + stem, to);
+    strcpy(nm + stem, ".actual");
+    strcat(nm + stem, ext);
     char *p = chk_join(adir, nm);
     free(nm);
     if (p && !chk_is_file(p)) {
@@ -41,6 +60,15 @@ static char *counterpart(const char *adir, const char *name)
         p = NULL;
     }
     return p;
+}
+
+/* Without a manifest, the files compared: every STEM.expected.EXT of a
+ * per-interface format and vectors.EXT of a one-file format that check reads. */
+static int scanned(const char *name)
+{
+    size_t stem;
+    const ef_vec_format *fm = expected_format(name, &stem);
+    return fm && (fm->per_iface || (stem == strlen("vectors") && strncmp(name, "vectors", stem) == 0));
 }
 
 static int cmp_names(const void *x, const void *y)
@@ -59,7 +87,7 @@ static int scan_dir(const char *dir, char ***names, size_t *n)
     if (!d)
         return -1;
     while ((de = readdir(d)) != NULL) {
-        if (!ends_with(de->d_name, ".expected.hex") && strcmp(de->d_name, "vectors.bin") != 0)
+        if (!scanned(de->d_name))
             continue;
         char **nn = *n < cap ? *names : realloc(*names, (cap = cap ? cap * 2 : 16) * sizeof *nn);
         char *nm = nn ? malloc(strlen(de->d_name) + 1) : NULL;
@@ -91,7 +119,7 @@ static int dir_entry(chk_run *r, const char *name, const ef_vec_manifest_file *m
     int rc = 0;
     if (!ep) {
         free(ap);
-        return EF_CLI_EXIT_INTERNAL;
+        return EF_CHECK_INTERNAL;
     }
     if (mf && !chk_is_file(ep)) {
         char buf[1024];
@@ -121,7 +149,7 @@ int chk_dirs(chk_run *r)
 
     memset(&m, 0, sizeof m);
     if (!mpath)
-        return EF_CLI_EXIT_INTERNAL;
+        return EF_CHECK_INTERNAL;
     if (chk_is_file(mpath)) {
         ef_status st = ef_vec_read_manifest_path(mpath, NULL, &m, &err);
         if (st != EF_OK) {
@@ -133,16 +161,20 @@ int chk_dirs(chk_run *r)
         r->height = m.height;
         for (size_t k = 0; k < m.nfiles && rc == 0; k++) {
             const ef_vec_manifest_file *f = &m.files[k];
-            int bin = (f->format && strcmp(f->format, "bin") == 0) || ends_with(f->name, ".bin");
-            int hex = !bin && (!f->format || strcmp(f->format, "hex") == 0) &&
-                      (f->role ? strcmp(f->role, "expected") == 0 : ends_with(f->name, ".expected.hex"));
-            if (bin || hex)
+            /* The manifest's format names the table's row (else the extension does); a
+             * per-interface file is compared when it is expected (not the stimulus). */
+            const ef_vec_format *fm = f->format ? ef_vec_format_named(f->format) : ef_vec_format_of_path(f->name);
+            size_t stem;
+            int read = fm && fm->reader &&
+                       (!fm->per_iface || (f->role ? strcmp(f->role, "expected") == 0
+                                                   : expected_format(f->name, &stem) != NULL));
+            if (read)
                 rc = dir_entry(r, f->name, f, mpath, &compared);
         }
     } else {
         char **names;
         size_t n;
-        fprintf(stderr, "edgeflag: warning: %s has no manifest.json (an incomplete `edgeflag vectors` run?): "
+        chk_status(r, "edgeflag: warning: %s has no manifest.json (an incomplete `edgeflag vectors` run?): "
                         "comparing its *.expected.hex and vectors.bin\n", E);
         if (scan_dir(E, &names, &n) != 0) {
             char buf[1024];

@@ -9,11 +9,11 @@
  * well-formed XML 1.0: markup characters as entities, valid UTF-8 as is,
  * control characters and stray bytes (which XML 1.0 cannot hold at all) as
  * the text "\xNN".  Times are integer nanoseconds printed as seconds with
- * three decimals (no floating point).  Written atomically.
+ * three decimals (no floating point).  The caller gives the FILE (the
+ * command writes it atomically).
  */
-#include "check.h"
-
-#include "atomic_file.h"
+#include "check_internal.h"
+#include "ef_fixed.h"   /* ef_utf8_len */
 
 #include <errno.h>
 #include <inttypes.h>
@@ -26,23 +26,6 @@ uint64_t chk_now_ns(void)
     if (clock_gettime(CLOCK_MONOTONIC, &ts) != 0)
         return 0;
     return (uint64_t)ts.tv_sec * UINT64_C(1000000000) + (uint64_t)ts.tv_nsec;
-}
-
-/* Length of a valid UTF-8 sequence at s (no overlongs, no surrogates, at
- * most U+10FFFF) within n bytes, or 0. */
-static size_t utf8_len(const unsigned char *s, size_t n)
-{
-    unsigned char c = s[0];
-    size_t len = c >= 0xC2 && c <= 0xDF ? 2 : c >= 0xE0 && c <= 0xEF ? 3 : c >= 0xF0 && c <= 0xF4 ? 4 : 0;
-    if (!len || len > n)
-        return 0;
-    for (size_t k = 1; k < len; k++)
-        if ((s[k] & 0xC0u) != 0x80u)
-            return 0;
-    if ((c == 0xE0 && s[1] < 0xA0) || (c == 0xED && s[1] > 0x9F) || (c == 0xF0 && s[1] < 0x90) ||
-        (c == 0xF4 && s[1] > 0x8F))
-        return 0;
-    return len;
 }
 
 /* s escaped for XML; newlines kept in text, written as &#10; in attributes. */
@@ -69,7 +52,7 @@ static void esc(FILE *f, const char *str, int attr)
             fputs(attr ? "&#9;" : "\t", f);
         else if (c >= 0x20 && c < 0x7f)
             fputc(c, f);
-        else if (c >= 0x80 && (len = utf8_len(s + i, n - i)) != 0) {
+        else if (c >= 0x80 && (len = ef_utf8_len(s + i, n - i)) != 0) {
             fwrite(s + i, 1, len, f);
             i += len;
             continue;
@@ -162,18 +145,18 @@ static void write_cases(FILE *f, const chk_run *r)
     fputs("  </testsuite>\n</testsuites>\n", f);
 }
 
-int chk_junit_write(const chk_run *r, const char *path)
+int ef_check_junit(const ef_check_result *res, FILE *f)
 {
-    ef_cli_atomic af;
-    if (ef_cli_atomic_open(&af, path) != 0)
-        return -1;
-    errno = 0;
-    write_cases(af.fp, r);
-    if (ferror(af.fp)) {
-        int saved = errno ? errno : EIO;
-        ef_cli_atomic_abort(&af);
-        errno = saved;
+    if (!res->run) {
+        errno = EINVAL;
         return -1;
     }
-    return ef_cli_atomic_commit(&af);
+    errno = 0;
+    write_cases(f, res->run);
+    if (ferror(f)) {
+        if (!errno)
+            errno = EIO;
+        return -1;
+    }
+    return 0;
 }

@@ -31,20 +31,20 @@ typedef enum ef_subpixel {
 /* Selects the options (EF_ERR_ARG for values outside the enums, EF_ERR_NOMEM).
  * The tent needs a (W+1) x (H+1) mask canvas per channel; the contexts for
  * it are made here, once. */
-ef_status ef_ctx_set_filter(ef_ctx *ctx, ef_filter filter, ef_subpixel subpixel);
-void ef_ctx_get_filter(const ef_ctx *ctx, ef_filter *filter, ef_subpixel *subpixel);
+EF_API ef_status ef_ctx_set_filter(ef_ctx *ctx, ef_filter filter, ef_subpixel subpixel);
+EF_API void ef_ctx_get_filter(const ef_ctx *ctx, ef_filter *filter, ef_subpixel *subpixel);
 
 /* The denominator D of the filter's coverage: N for the box, 4 N^3 for the
  * tent.  A channel's coverage is sum / D (0 <= sum <= D), its alpha
  * floor((255 sum + D/2) / D). */
-uint32_t ef_filter_denominator(const ef_ctx *ctx);
+EF_API uint32_t ef_filter_denominator(const ef_ctx *ctx);
 
 /* Per-pixel coverage of poly under rule with the context's options: called
  * for every pixel (x, y) of the canvas with a non-zero sum in some channel,
  * row by row, left to right; sum[0..2] are R, G, B (all three equal without
  * subpixel offsets).  The same numbers ef_fill composites. */
 typedef void (*ef_cov_fn)(void *user, int32_t y, int32_t x, const uint32_t sum[3]);
-ef_status ef_filter_coverage(ef_ctx *ctx, const ef_polygon *poly, ef_rule rule, ef_cov_fn fn, void *user);
+EF_API ef_status ef_filter_coverage(ef_ctx *ctx, const ef_polygon *poly, ef_rule rule, ef_cov_fn fn, void *user);
 
 #ifdef __cplusplus
 }

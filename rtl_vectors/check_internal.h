@@ -1,18 +1,20 @@
 /*
- * check.h - the pieces of `edgeflag check` (docs/vectors.md section 7):
- * cmd_check.c runs the command (options, a pair of files, exit code),
+ * check_internal.h - the pieces of the verifier (ef_check.h, docs/vectors.md
+ * section 7): check_run.c runs a comparison (a pair of files, the verdict),
  * check_dir.c pairs the files of two directories,
  * check_compare.c aligns and reports one interface's transactions,
- * check_junit.c writes the JUnit XML, check_image.c the diff image.
+ * check_junit.c writes the JUnit XML, check_image.c draws the diff image.
+ * cli/cmd_check.c is the command's shell around them.
  */
-#ifndef EF_CLI_CHECK_H
-#define EF_CLI_CHECK_H
+#ifndef EF_CHECK_INTERNAL_H
+#define EF_CHECK_INTERNAL_H
 
 #include <threads.h>
 #include <stdint.h>
 #include <stdio.h>
 
-#include "cli.h"
+#include "ef_check.h"
+#include "ef_vec.h"        /* the format table */
 #include "ef_vec_read.h"
 
 /* One JUnit test case: one interface of one pair of files. */
@@ -34,9 +36,9 @@ typedef struct chk_mark {
     int32_t y, x, len;
 } chk_mark;
 
-typedef struct chk_run {
-    const ef_cli_check_args *a;
-    FILE *out;              /* mismatch lines (stdout) */
+typedef struct ef_check_run_state {
+    ef_check_opts opts;     /* a copy: the writers run after ef_check_run returns */
+    const ef_check_opts *a; /* &opts */
     uint64_t mismatches;    /* in all, exact */
     uint64_t reported;      /* lines printed (at most --errors unless 0) */
     int oom;                /* an allocation failed: exit 70 */
@@ -54,7 +56,20 @@ typedef struct chk_run {
     int have_bg;
 } chk_run;
 
-/* cmd_check.c: reads EXPECTED file ep (mf: its manifest entry in mname, or
+/* "edgeflag: <message>" on the status stream (input errors, as the command
+ * always printed them); chk_status prints the line as given. */
+void chk_error(const chk_run *r, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+void chk_status(const chk_run *r, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
+/* check_run.c: reads EXPECTED file ep (mf: its manifest entry in mname, or
  * NULL) and, when ap is not NULL, ACTUAL file ap, and compares every
  * interface both hold.  0, or the exit code of an input error (reported). */
 int chk_pair(chk_run *r, const char *ep, const char *ap, const ef_vec_manifest_file *mf, const char *mname);
@@ -76,7 +91,7 @@ void chk_read_drop(chk_async_read *ar);
 /* check_dir.c: two directories (r->a->expected, r->a->actual); as chk_pair. */
 int chk_dirs(chk_run *r);
 /* Reports an input error on stderr and as a JUnit <error>; the exit code
- * (2, or 70 for EF_ERR_NOMEM).  chk_read_error formats a reader's error. */
+ * (EF_CHECK_INPUT, or EF_CHECK_INTERNAL for EF_ERR_NOMEM).  chk_read_error formats a reader's error. */
 int chk_input_error(chk_run *r, ef_status st, const char *msg, const char *ename, const char *aname);
 int chk_read_error(chk_run *r, ef_status st, const ef_vec_read_error *err, const char *ename, const char *aname);
 /* "dir/name" (malloc'ed, NULL when out of memory); whether path is a file. */
@@ -88,21 +103,16 @@ chk_case *chk_case_add(chk_run *r, const char *ename, const char *aname, const c
 
 /* Compares interface iface of e (file ename) and a (file aname) into tc:
  * aligns the two sequences by content in order, reports each mismatch on
- * r->out (while under --errors) and counts every one. */
+ * the report stream (while under `errors`) and counts every one. */
 void chk_compare(chk_run *r, chk_case *tc, int iface, const ef_vec_dump *e, const char *ename, const ef_vec_dump *a,
                  const char *aname);
 
-/* Writes the JUnit XML of r's cases to path atomically; 0, or -1 with errno. */
-int chk_junit_write(const chk_run *r, const char *path);
 
 /* Records the pixels of a pix/span transaction for the diff image. */
 void chk_mark_txn(chk_run *r, const ef_txn *t);
 
-/* Draws the expected frame with the marks and writes it atomically; 0, or
- * -1 with a message in err. */
-int chk_image_write(chk_run *r, const char *path, ef_cli_format fmt, char *err, size_t errsize);
 
 /* Monotonic nanoseconds (JUnit times; integers only). */
 uint64_t chk_now_ns(void);
 
-#endif /* EF_CLI_CHECK_H */
+#endif /* EF_CHECK_INTERNAL_H */

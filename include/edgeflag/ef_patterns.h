@@ -22,7 +22,7 @@ extern "C" {
 #endif
 
 /* Largest pattern handled (tables are uint8_t[N], N = 8, 16 or 32). */
-#define EF_PATTERN_MAX 32
+#define EF_PATTERN_MAX EF_SAMPLES_MAX
 
 /* The criterion's numbers for one pattern, all exact integers.
  *
@@ -47,20 +47,20 @@ typedef struct ef_pattern_score {
 
 /* 1 when k[0..n-1] is a permutation of 0..n-1 (one sample per sub-row and
  * sub-column) and n is 8, 16 or 32; else 0. */
-int ef_pattern_is_nrooks(int n, const uint8_t *k);
+EF_API int ef_pattern_is_nrooks(int n, const uint8_t *k);
 
 /* Scores k.  EF_ERR_ARG if k is not an n-rooks pattern of a valid n. */
-ef_status ef_pattern_score_of(int n, const uint8_t *k, ef_pattern_score *out);
+EF_API ef_status ef_pattern_score_of(int n, const uint8_t *k, ef_pattern_score *out);
 
 /* Orders two scores of the same n by the criterion: discrepancy ascending,
  * then spread descending.  <0: a is better, 0: equal, >0: b is better.
  * `star` is ignored (it does not rank patterns, only orientations). */
-int ef_pattern_compare(const ef_pattern_score *a, const ef_pattern_score *b);
+EF_API int ef_pattern_compare(const ef_pattern_score *a, const ef_pattern_score *b);
 
 /* The canonical orientation of k among its 8 images under the symmetries of
  * the square (mirrors and transposition), which all score the same: least
  * `star`, then the lexicographically least table.  out may alias k. */
-ef_status ef_pattern_canonical(int n, const uint8_t *k, uint8_t *out);
+EF_API ef_status ef_pattern_canonical(int n, const uint8_t *k, uint8_t *out);
 
 /* Searches the n-rooks patterns of n samples for the best under the
  * criterion and returns it in canonical orientation, with its score (score
@@ -69,7 +69,7 @@ ef_status ef_pattern_canonical(int n, const uint8_t *k, uint8_t *out);
  * nets) followed by a late-acceptance local search with a fixed seed and
  * fixed iteration counts, so the result is reproducible but not proven
  * optimal.  EF_ERR_ARG for any other n. */
-ef_status ef_pattern_search(int n, uint8_t *k_out, ef_pattern_score *score);
+EF_API ef_status ef_pattern_search(int n, uint8_t *k_out, ef_pattern_score *score);
 
 #ifdef __cplusplus
 }

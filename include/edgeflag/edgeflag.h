@@ -19,6 +19,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "ef_api.h"
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -36,7 +38,7 @@ typedef enum ef_status {
     EF_ERR_IO = -6,           /* reading or writing a file failed */
     EF_ERR_UNSUPPORTED = -7   /* valid input using a feature we do not model */
 } ef_status;
-const char *ef_strerror(ef_status s);
+EF_API const char *ef_strerror(ef_status s);
 
 /* ---------------------------------------------------------------- limits */
 #define EF_MAX_CANVAS 16384                 /* width and height, pixels */
@@ -47,8 +49,20 @@ const char *ef_strerror(ef_status s);
 /* -------------------------------------------------------- configuration */
 typedef enum ef_rule { EF_RULE_NONZERO = 0, EF_RULE_EVENODD = 1 } ef_rule;
 
-/* Samples per pixel: 8, 16 or 32. */
+/* Samples per pixel: 8, 16 or 32 (EF_SAMPLES_TEXT in messages).  Adding a
+ * count is the walk of docs/source.md, "To add a sample count". */
+#define EF_SAMPLES_MAX 32
+#define EF_SAMPLES_TEXT "8, 16 or 32"
 static inline int ef_samples_valid(int n) { return n == 8 || n == 16 || n == 32; }
+
+/* A pixel's coverage mask: bit s = sample s (docs/spec.md section 4), so it
+ * holds EF_SAMPLES_MAX bits. */
+typedef uint32_t ef_mask;
+#if defined(__cplusplus)
+static_assert(sizeof(ef_mask) * 8 >= EF_SAMPLES_MAX, "a mask holds a bit per sample");
+#else
+_Static_assert(sizeof(ef_mask) * 8 >= EF_SAMPLES_MAX, "a mask holds a bit per sample");
+#endif
 
 /* ------------------------------------------------------------ geometry */
 /* A vertex in device space, Q16.8: value = x / 256 px, y grows downward,
@@ -71,23 +85,23 @@ typedef struct ef_ctx ef_ctx;
 
 /* Creates a model for a width x height clip rectangle (the canvas) at
  * `samples` samples per pixel.  1 <= width, height <= EF_MAX_CANVAS. */
-ef_status ef_ctx_create(ef_ctx **out, int32_t width, int32_t height, int samples);
-void ef_ctx_destroy(ef_ctx *ctx);
-int32_t ef_ctx_width(const ef_ctx *ctx);
-int32_t ef_ctx_height(const ef_ctx *ctx);
-int ef_ctx_samples(const ef_ctx *ctx);
+EF_API ef_status ef_ctx_create(ef_ctx **out, int32_t width, int32_t height, int samples);
+EF_API void ef_ctx_destroy(ef_ctx *ctx);
+EF_API int32_t ef_ctx_width(const ef_ctx *ctx);
+EF_API int32_t ef_ctx_height(const ef_ctx *ctx);
+EF_API int ef_ctx_samples(const ef_ctx *ctx);
 
 /* Coverage spans.  The filler reports, scanline by scanline left to right,
  * runs of pixels [x, x+len) on row y that share one non-empty coverage mask
  * (bit s = sample s of the pixel, docs/spec.md section 4).  A full mask
  * (all `samples` bits set) is a solid span; any other mask covers one pixel
  * per call unless neighbours share it. */
-typedef void (*ef_span_fn)(void *user, int32_t y, int32_t x, int32_t len, uint32_t mask);
+typedef void (*ef_span_fn)(void *user, int32_t y, int32_t x, int32_t len, ef_mask mask);
 
 /* Rasterizes one polygon under `rule` and reports its coverage spans.
  * Returns EF_ERR_LIMIT if the polygon has more edges than the edge store
  * holds (docs/limits.md), EF_ERR_ARG on coordinates outside the range. */
-ef_status ef_rasterize(ef_ctx *ctx, const ef_polygon *poly, ef_rule rule,
+EF_API ef_status ef_rasterize(ef_ctx *ctx, const ef_polygon *poly, ef_rule rule,
                        ef_span_fn span, void *user);
 
 /* Diagnostics accumulated since the context was created (never change a result). */
@@ -96,16 +110,16 @@ typedef struct ef_diag {
     uint64_t edges_dropped;       /* crossing no sample row inside the clip rectangle */
     uint64_t winding_overflows;   /* 7-bit signed winding counter left [-64, 63] (spec 6.4) */
 } ef_diag;
-void ef_ctx_diag(const ef_ctx *ctx, ef_diag *out);
+EF_API void ef_ctx_diag(const ef_ctx *ctx, ef_diag *out);
 
 /* ------------------------------------------------------------ patterns */
 /* Horizontal sample index k_s (0..N-1) of sub-scanline s: sample s of pixel
  * (i, j) sits at (i + (2k_s+1)/(2N), j + (2s+1)/(2N)).  NULL if N invalid. */
-const uint8_t *ef_pattern(int samples);
+EF_API const uint8_t *ef_pattern(int samples);
 
 /* ---------------------------------------------------- coverage, compositing */
 /* alpha = floor((255 * popcount(mask) + N/2) / N), docs/spec.md section 7. */
-uint8_t ef_coverage_alpha(uint32_t mask, int samples);
+EF_API uint8_t ef_coverage_alpha(ef_mask mask, int samples);
 /* mul(a, b) = round(a * b / 255), computed as t = a*b + 128; ((t >> 8) + t) >> 8. */
 static inline uint8_t ef_mul255(uint32_t a, uint32_t b)
 {
@@ -119,12 +133,12 @@ typedef struct ef_image {
     int32_t width, height;
     size_t stride;
 } ef_image;
-ef_status ef_image_alloc(ef_image *img, int32_t width, int32_t height);
-void ef_image_free(ef_image *img);
+EF_API ef_status ef_image_alloc(ef_image *img, int32_t width, int32_t height);
+EF_API void ef_image_free(ef_image *img);
 
 /* Composites `color` source-over onto img with the coverage of polygon under
  * rule (docs/spec.md section 8). */
-ef_status ef_fill(ef_ctx *ctx, ef_image *img, const ef_polygon *poly, ef_rule rule, ef_rgba8 color);
+EF_API ef_status ef_fill(ef_ctx *ctx, ef_image *img, const ef_polygon *poly, ef_rule rule, ef_rgba8 color);
 
 #ifdef __cplusplus
 }

@@ -4,11 +4,10 @@
  * winning, as the frame buffer would hold it) with each pixel of a
  * mismatching `pix` or `span` transaction painted opaque magenta, a colour
  * a rasterizer's coverage of real artwork rarely produces, so a glance at
- * the image shows where the RTL went wrong.  Written atomically.
+ * the image shows where the RTL went wrong.  The caller writes it
+ * (`edgeflag check --diff-image`: atomically, as PNG or PAM).
  */
-#include "check.h"
-
-#include "atomic_file.h"
+#include "check_internal.h"
 
 #include <errno.h>
 #include <stdlib.h>
@@ -78,12 +77,20 @@ static void paint(ef_image *img, int64_t x, int64_t y, const uint8_t rgba[4])
     memcpy(img->px + (size_t)y * img->stride + (size_t)x * 4u, rgba, 4);
 }
 
-int chk_image_write(chk_run *r, const char *path, ef_cli_format fmt, char *err, size_t errsize)
+int ef_check_diff_image(const ef_check_result *res, ef_image *out, char *err, size_t errsize)
 {
-    int32_t w = r->width, h = r->height;
+    const chk_run *r = res->run;
+    int32_t w, h;
     ef_image img;
-    ef_cli_atomic af;
 
+    memset(out, 0, sizeof *out);
+    if (!r) {
+        snprintf(err, errsize, "no comparison was run");
+        errno = 0;
+        return -1;
+    }
+    w = r->width;
+    h = r->height;
     if (w <= 0 || h <= 0)
         bounding_size(r, &w, &h);
     if (w <= 0 || h <= 0) {
@@ -115,19 +122,6 @@ int chk_image_write(chk_run *r, const char *path, ef_cli_format fmt, char *err, 
         for (int64_t x = m->x; x < (int64_t)m->x + len && x < w; x++)
             paint(&img, x, m->y, MARK);
     }
-    int rc = -1;
-    errno = 0;
-    if (ef_cli_atomic_open(&af, path) != 0) {
-        snprintf(err, errsize, "%s", strerror(errno));
-    } else if (ef_cli_write_image(af.fp, fmt, &img, err, errsize) != 0) {
-        int saved = errno;
-        ef_cli_atomic_abort(&af);
-        errno = saved;
-    } else if (ef_cli_atomic_commit(&af) != 0) {
-        snprintf(err, errsize, "%s", strerror(errno));
-    } else {
-        rc = 0;
-    }
-    ef_image_free(&img);
-    return rc;
+    *out = img;
+    return 0;
 }

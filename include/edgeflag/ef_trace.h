@@ -48,7 +48,7 @@ typedef enum ef_iface {
 /* Commands (the `op` field of cmd). */
 enum { EF_OP_FRAME = 1, EF_OP_SHAPE = 2, EF_OP_EDGE = 3, EF_OP_SHAPE_END = 4, EF_OP_FRAME_END = 5 };
 /* "FRAME" .. "FRAME_END" (docs/microarch.md 3.1), NULL for another op. */
-const char *ef_op_name(int op);
+EF_API const char *ef_op_name(int op);
 
 typedef struct ef_field_desc {
     const char *name;
@@ -65,10 +65,10 @@ typedef struct ef_iface_desc {
 } ef_iface_desc;
 
 /* NULL when iface is out of range. */
-const ef_iface_desc *ef_iface_get(int iface);
+EF_API const ef_iface_desc *ef_iface_get(int iface);
 /* The interface called `name`, or -1.  The old name `edge` (of `seg`) is read
  * as an alias. */
-int ef_iface_find(const char *name);
+EF_API int ef_iface_find(const char *name);
 
 /* One transfer.  The payload is the concatenation of the fields, most
  * significant first, as one little number: bit 0 is bit 0 of w[0]. */
@@ -79,10 +79,10 @@ typedef struct ef_txn {
 } ef_txn;
 /* Field k of t (raw bits, zero-extended), and sign-extended when the field
  * is signed. */
-uint64_t ef_txn_field(const ef_txn *t, unsigned k);
-int64_t ef_txn_field_value(const ef_txn *t, unsigned k);
+EF_API uint64_t ef_txn_field(const ef_txn *t, unsigned k);
+EF_API int64_t ef_txn_field_value(const ef_txn *t, unsigned k);
 /* Stores the low width bits of v into field k. */
-void ef_txn_set_field(ef_txn *t, unsigned k, uint64_t v);
+EF_API void ef_txn_set_field(ef_txn *t, unsigned k, uint64_t v);
 
 /* Receives every transaction of the enabled interfaces.  Within one
  * interface transactions arrive in cycle order; across interfaces they do
@@ -91,12 +91,12 @@ typedef void (*ef_txn_fn)(void *user, const ef_txn *t);
 
 /* Enables tracing of the interfaces in iface_mask (bit i = ef_iface i) to
  * sink, or disables it (sink NULL).  EF_ERR_ARG for a bad mask. */
-ef_status ef_trace_enable(ef_ctx *ctx, uint32_t iface_mask, ef_txn_fn sink, void *user);
+EF_API ef_status ef_trace_enable(ef_ctx *ctx, uint32_t iface_mask, ef_txn_fn sink, void *user);
 /* Starts a frame: the FRAME command at cycle 0 (the clock restarts). */
-ef_status ef_trace_frame_begin(ef_ctx *ctx);
+EF_API ef_status ef_trace_frame_begin(ef_ctx *ctx);
 /* Ends it: the FRAME_END command; *cycles (if not NULL) receives the
  * frame's length, one past the last transfer's cycle. */
-ef_status ef_trace_frame_end(ef_ctx *ctx, uint64_t *cycles);
+EF_API ef_status ef_trace_frame_end(ef_ctx *ctx, uint64_t *cycles);
 
 #ifdef __cplusplus
 }

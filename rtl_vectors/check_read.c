@@ -7,7 +7,7 @@
  * reports EXPECTED's error first, and reads again, serially, otherwise.
  * When no thread can be started the read happens here and now.
  */
-#include "check.h"
+#include "check_internal.h"
 
 #include <string.h>
 

@@ -1,0 +1,14 @@
+# The layering is enforced by include paths (docs/source.md, "Layers"): each folder of the library and
+# the CLI compiles with its own LAYER_INC_<folder>.  make test-layers (run by test-build) compiles a
+# one-line probe `#include "H"` with each layer's flags: every arrow in tests/layers/arrows.tsv must
+# compile or fail as the table says.
+.PHONY: test-layers layers-print
+layers-print:
+	@echo "fixed|$(LAYER_INC_fixed)"
+	@echo "model|$(LAYER_INC_model)"
+	@echo "input|$(LAYER_INC_input)"
+	@echo "rtl_vectors|$(LAYER_INC_rtl_vectors)"
+	@echo "cli|$(LAYER_INC_cli)"
+
+test-layers: $(CORE_STAGED_H)
+	@bash tests/layers/run.sh $(BUILD)
