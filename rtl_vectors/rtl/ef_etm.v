@@ -2,7 +2,8 @@
 // microarchitecture (docs/microarch.md 3.3, 3.5 and section 4 item 4; the
 // edge table is docs/spec.md section 6).
 // Interfaces:  et_wr (SETUP -> ETM) in,  et_rd (ETM -> AET) out,
-//              plus a row-request port and a record read port for the AET.
+//              plus a row-request port, a next-occupied-slot query and a
+//              record read port for the AET and sequencer.
 //
 // Memories (ef_slb_ram: one write port, one synchronous read port):
 //   rec  [E_MAX]: the record of edge eid (r0 r1 x e qs rs dy dir), written
@@ -35,6 +36,10 @@
 // at that edge).  A request while a list is presented is ignored
 // (row_req_ready low); et_wr is not taken while one is (et_wr_ready low):
 // in the reference schedule neither happens.
+//
+// Next occupied slot: nx_req with nx_after in cycle u; at u+2 nx_valid
+// pulses with nx_found and nx_row, the least row above nx_after whose slot
+// holds an edge (for the sequencer, when the AET empties).
 //
 // Record read port: rec_re/rec_ra in cycle t, the record on rec_* in t+1
 // (held while rec_re is low): the AET reads the record of an et_rd's eid in
@@ -83,6 +88,14 @@ module ef_etm #(
     input  wire [13:0] row_req_row,
     output reg         row_ack,       // pulse in the cycle after the request
     output wire        row_nonempty,  // with row_ack: slot j holds edges
+
+    // next occupied slot: the least row > nx_after whose slot holds an
+    // edge, 2 cycles after nx_req (nx_valid pulse)
+    input  wire        nx_req,
+    input  wire [13:0] nx_after,
+    output reg         nx_valid,
+    output reg         nx_found,
+    output reg  [13:0] nx_row,
 
     // et_rd: row[13:0] eid[21:0]
     output wire        et_rd_valid,
@@ -198,6 +211,94 @@ module ef_etm #(
     assign s_wd = (!init_done || !w2_v) ? {SW{1'b0}} : w2_entry;
     assign s_re = take_e || req;
     assign s_ra = take_e ? et_wr_slot[HW-1:0] : row_req_row[HW-1:0];
+
+    // ------------------------------------------------ occupancy bitmap
+    // One bit per slot, in groups of 64 flip-flops with a per-group "any":
+    // set when a slot gets its first record, cleared when the slot is taken.
+    // A query finds the least set bit above nx_after in two cycles: (1) the
+    // query's own group masked, and the groups above it; (2) the first of
+    // those groups, if the own group had none.  The sequencer needs it when
+    // the AET empties: the rows up to the next occupied slot cost no cycle.
+    localparam NG = (H_MAX + 63) / 64;
+    wire          occ_set = w2_v && !cur_v;            // first record of the slot
+    wire          occ_clr = head_cycle && cur_v;       // the slot is taken
+    wire [13:0]   occ_a   = occ_set ? {{(14-HW){1'b0}}, w2_slot} : rq_row;
+    localparam [31:0] NG32 = NG;
+    localparam [8:0]  NG9  = NG32[8:0];               // NG <= 256
+    reg  [NG*64-1:0] occ_all;
+    wire [NG-1:0] occ_any, occ_any_now;
+    wire [NG*64-1:0] occ_bit;     // one-hot: slot occ_a
+    integer gi;
+    always @(posedge clk) begin
+        if (rst) begin
+            for (gi = 0; gi < NG; gi = gi + 1)
+                occ_all[64*gi +: 64] <= 64'd0;
+        end else if (occ_set)
+            occ_all <= occ_all | occ_bit;
+        else if (occ_clr)
+            occ_all <= occ_all & ~occ_bit;
+    end
+    genvar g;
+    generate
+        for (g = 0; g < NG; g = g + 1) begin : grp
+            localparam [31:0] G32 = g;
+            assign occ_any[g] = |occ_all[64*g +: 64];
+            // with the bit being set in this cycle: the query in the eos
+            // cycle must see the last record's slot (its stage 2 is then)
+            assign occ_any_now[g] = occ_any[g] || (occ_set && occ_a[13:6] == G32[7:0]);
+            assign occ_bit[64*g +: 64] = (occ_a[13:6] == G32[7:0]) ? (64'd1 << occ_a[5:0]) : 64'd0;
+        end
+    endgenerate
+
+    function [5:0] ffs64;          // least set bit (0 when none)
+        input [63:0] v;
+        integer i;
+        begin
+            ffs64 = 6'd0;
+            for (i = 63; i >= 0; i = i - 1)
+                if (v[i]) ffs64 = i[5:0];
+        end
+    endfunction
+    function [7:0] ffsg;           // least set group (0 when none)
+        input [NG-1:0] v;
+        integer i;
+        begin
+            ffsg = 8'd0;
+            for (i = NG - 1; i >= 0; i = i - 1)
+                if (v[i]) ffsg = i[7:0];
+        end
+    endfunction
+
+    wire [7:0]    q_g    = nx_after[13:6];
+    wire [6:0]    q_b1   = {1'b0, nx_after[5:0]} + 7'd1;
+    wire [63:0]   q_own  = ({1'b0, q_g} < NG9) ?
+                           (occ_all[64*q_g +: 64] | (occ_set ? occ_bit[64*q_g +: 64] : 64'd0)) & ({64{1'b1}} << q_b1)
+                           : 64'd0;
+    wire [NG-1:0] q_up   = occ_any_now & ({{(NG-1){1'b1}}, 1'b1} << ({1'b0, q_g} + 9'd1));
+    reg           n1_v;
+    reg [7:0]     n1_g;
+    reg [63:0]    n1_own;
+    reg [NG-1:0]  n1_up;
+    wire [7:0]    n1_g2  = ffsg(n1_up);
+    wire [63:0]   n1_bits = occ_all[64*n1_g2 +: 64];
+    always @(posedge clk) begin
+        if (rst) begin
+            n1_v     <= 1'b0;
+            nx_valid <= 1'b0;
+        end else begin
+            n1_v <= nx_req;
+            if (nx_req) begin
+                n1_g   <= q_g;
+                n1_own <= q_own;
+                n1_up  <= q_up;
+            end
+            nx_valid <= n1_v;
+            if (n1_v) begin
+                nx_found <= (|n1_own) || (|n1_up);
+                nx_row   <= (|n1_own) ? {n1_g, ffs64(n1_own)} : {n1_g2, ffs64(n1_bits)};
+            end
+        end
+    end
 
     wire [18:0] last_row_w = et_wr_r1 >> LOG2NS;
     wire [4:0]  unused_lr = last_row_w[18:14];

@@ -155,8 +155,10 @@ static const char *vec_option(int argc, char **argv, const char *name)
     return NULL;
 }
 
-/* docs/vectors.md: a comma-separated list of known names, each at most once. */
-static bool ref_list(const char *v, const char *const *names, int n, uint32_t *mask)
+/* docs/vectors.md: a comma-separated list of known names, each at most once;
+ * alias (when not NULL) is another name of names[1] (`edge`, the old name of
+ * the interface `seg`). */
+static bool ref_list(const char *v, const char *const *names, int n, const char *alias, uint32_t *mask)
 {
     uint32_t m = 0;
     for (;;) {
@@ -164,6 +166,7 @@ static bool ref_list(const char *v, const char *const *names, int n, uint32_t *m
         size_t len = comma ? (size_t)(comma - v) : strlen(v);
         int k = 0;
         while (k < n && !(strlen(names[k]) == len && memcmp(names[k], v, len) == 0)) k++;
+        if (k == n && alias && strlen(alias) == len && memcmp(alias, v, len) == 0) k = 1;
         if (k == n || (m >> k & 1u)) return false;
         m |= 1u << k;
         if (!comma) break;
@@ -184,6 +187,14 @@ static void check_vectors(int argc, char **argv)
     if (has_help(argc, argv) != (rc == EF_CLI_EXIT_OK)) FAIL("vectors: --help and exit %d disagree", rc);
     if (rc != -1 && rc != EF_CLI_EXIT_OK && rc != EF_CLI_EXIT_USAGE) FAIL("vectors: exit code %d", rc);
     if (rc != -1) return;
+    if (a.rtl_headers) {    /* --rtl-headers -o DIR [--force], nothing else */
+        if (a.input || !a.dir || !a.dir[0] || vec_option(argc, argv, "--samples") || vec_option(argc, argv, "--rule") ||
+            vec_option(argc, argv, "--size") || vec_option(argc, argv, "--formats") ||
+            vec_option(argc, argv, "--interfaces") || a.dump)
+            FAIL("vectors: --rtl-headers accepted with an input or another option");
+        if (a.rtl_headers != b.rtl_headers || a.dir != b.dir || a.force != b.force) FAIL("vectors: two parses differ");
+        return;
+    }
     if (!a.input || !a.dir || !a.dir[0]) FAIL("vectors: accepted without input or directory");
     if (!ef_samples_valid(a.samples)) FAIL("vectors: accepted %" PRId32 " samples", a.samples);
     if (a.rule != -1 && a.rule != EF_RULE_NONZERO && a.rule != EF_RULE_EVENODD) FAIL("vectors: rule %d", a.rule);
@@ -194,7 +205,7 @@ static void check_vectors(int argc, char **argv)
     /* The lists against the reference: default all, else exactly the names given. */
     const char *fv = vec_option(argc, argv, "--formats"), *iv = vec_option(argc, argv, "--interfaces");
     uint32_t want_f = EF_CLI_VEC_ALL, want_i = (1u << 7) - 1u;
-    if ((fv && !ref_list(fv, formats, 3, &want_f)) || (iv && !ref_list(iv, ifaces, 7, &want_i)))
+    if ((fv && !ref_list(fv, formats, 3, NULL, &want_f)) || (iv && !ref_list(iv, ifaces, 7, "edge", &want_i)))
         FAIL("vectors: accepted --formats '%s' / --interfaces '%s'", fv ? fv : "", iv ? iv : "");
     if (a.formats != want_f || a.ifaces != want_i)
         FAIL("vectors: formats %u interfaces %u, reference %u %u", a.formats, (unsigned)a.ifaces, (unsigned)want_f,

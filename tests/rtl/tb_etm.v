@@ -51,7 +51,8 @@ module tb_etm #(
     wire       init_done, wr_ready, shape_go, shape_any, err_full, row_req_ready, row_ack, row_nonempty;
     wire [13:0] row_first, row_last, rd_row;
     wire [22:0] shape_nedges;
-    wire       rd_valid, rd_last;
+    wire       rd_valid, rd_last, nx_valid, nx_found;
+    wire [13:0] nx_row;
     wire [21:0] rd_eid;
     wire [18:0] rec_r0, rec_r1;
     wire [24:0] rec_x;
@@ -68,6 +69,7 @@ module tb_etm #(
         .shape_nedges(shape_nedges), .err_full(err_full),
         .row_req(row_req), .row_req_ready(row_req_ready), .row_req_row(row_req_row),
         .row_ack(row_ack), .row_nonempty(row_nonempty),
+        .nx_req(row_req), .nx_after(row_req_row), .nx_valid(nx_valid), .nx_found(nx_found), .nx_row(nx_row),
         .et_rd_valid(rd_valid), .et_rd_ready(1'b1), .et_rd_row(rd_row), .et_rd_eid(rd_eid),
         .et_rd_last(rd_last),
         .rec_re(rd_valid), .rec_ra(rd_eid), .rec_r0(rec_r0), .rec_r1(rec_r1), .rec_x(rec_x), .rec_e(rec_e),
@@ -79,6 +81,11 @@ module tb_etm #(
     reg [PWD-1:0] pl_mem  [0:NPLOT];
     reg [13:0]    rq_row  [0:NREQ];
     reg [47:0]    rq_cyc  [0:NREQ];    // the row's first cycle
+    reg [13:0]    g_row   [0:NRD];     // et_rd groups (rows with new edges)
+    reg [47:0]    g_cyc   [0:NRD];
+    integer       ngrp, ig, nnx;
+    reg           exp_found;
+    reg [13:0]    exp_row;
     reg [8*240-1:0] wr_name, rd_name, pl_name, out_name;
     integer iw, k, ir, nreq, irq, nrd, errors, fo, nshape, wr_base, rd_base, rec_chk;
     reg [47:0] cyc, last;
@@ -95,6 +102,7 @@ module tb_etm #(
         reg [13:0] gr [0:0];
         begin
             nreq = 0;
+            ngrp = 0;
             a = 0;                           // et_rd index
             for (p = 0; p < NPLOT; p = p + 1) begin
                 if (p == 0 || pl_mem[p-1][`EF_PLOT_LAST_LSB]) begin
@@ -106,6 +114,9 @@ module tb_etm #(
                             rq_row[nreq] = rd_mem[a][`EF_ET_RD_ROW_MSB:`EF_ET_RD_ROW_LSB];
                             rq_cyc[nreq] = rd_mem[a][RWD-1 -: 48];
                             nreq = nreq + 1;
+                            g_row[ngrp] = rq_row[nreq-1];
+                            g_cyc[ngrp] = rq_cyc[nreq-1];
+                            ngrp = ngrp + 1;
                         end
                         a = a + 1;
                     end
@@ -153,6 +164,13 @@ module tb_etm #(
             if (irq < nreq && rq_cyc[irq] == c + 1) begin
                 row_req <= 1'b1;
                 row_req_row <= rq_row[irq];
+                // The next occupied slot above this row (asked with the
+                // request): the shape's next row with new edges, i.e. the
+                // next et_rd group before the next shape's first et_wr.
+                while (ig < ngrp && g_cyc[ig] <= c + 1)
+                    ig = ig + 1;
+                exp_found = ig < ngrp && (iw >= NWR || g_cyc[ig] < wr_mem[iw][WWD-1 -: 48]);
+                exp_row = exp_found ? g_row[ig] : 14'd0;
                 irq = irq + 1;
             end
         end
@@ -192,7 +210,7 @@ module tb_etm #(
             end
         end
         build_requests;
-        iw = 0; irq = 0; nrd = 0; nshape = 0; wr_base = 0; rd_base = 0; rec_chk = 0;
+        iw = 0; irq = 0; nrd = 0; ig = 0; nnx = 0; nshape = 0; wr_base = 0; rd_base = 0; rec_chk = 0;
         running = 1'b0; done = 1'b0; chk_pending = 1'b0; first_after_go = 1'b0; cyc = 0;
         last = NWR > 0 ? wr_mem[NWR-1][WWD-1 -: 48] : 48'd0;
         if (nreq > 0 && rq_cyc[nreq-1] > last) last = rq_cyc[nreq-1];
@@ -253,6 +271,14 @@ module tb_etm #(
                 end
                 first_after_go = 1'b0;
             end
+            if (nx_valid) begin
+                if (nx_found !== exp_found || (exp_found && nx_row !== exp_row)) begin
+                    if (errors < 10) $display("tb_etm: cycle %0d: next occupied slot: found %0d row %0d, expected found %0d row %0d",
+                                              cyc, nx_found, nx_row, exp_found, exp_row);
+                    errors = errors + 1;
+                end
+                nnx = nnx + 1;
+            end
             if (rd_valid) begin
                 word = {RWD{1'b0}};
                 word[RWD-1 -: 48] = cyc;
@@ -269,8 +295,8 @@ module tb_etm #(
                 done <= 1'b1;
                 $fclose(fo);
                 if (errors == 0)
-                    $display("tb_etm: PASS NS=%0d: %0d et_wr, %0d row requests, %0d et_rd, %0d records read back, %0d shapes",
-                             NS, NWR, nreq, nrd, rec_chk, nshape);
+                    $display("tb_etm: PASS NS=%0d: %0d et_wr, %0d row requests, %0d et_rd, %0d records read back, %0d next-slot answers, %0d shapes",
+                             NS, NWR, nreq, nrd, rec_chk, nnx, nshape);
                 else
                     $display("tb_etm: FAIL NS=%0d: %0d errors", NS, errors);
                 $finish;
