@@ -141,6 +141,8 @@ module ef_raster #(
     wire        shape_go, shape_any, err_full;
     wire [13:0] row_first, row_last;
     wire [22:0] shape_nedges;
+    wire        nx_valid, nx_found;
+    wire [13:0] nx_row;
 
     ef_etm #(.NS(NS), .H_MAX(H_MAX), .E_MAX(E_MAX)) u_etm (
         .clk(clk), .rst(rst), .init_done(etm_init),
@@ -158,7 +160,9 @@ module ef_raster #(
         .et_rd_valid(et_rd_valid), .et_rd_ready(et_rd_ready), .et_rd_row(et_rd_row), .et_rd_eid(et_rd_eid),
         .et_rd_last(et_rd_last),
         .rec_re(rec_re), .rec_ra(rec_ra), .rec_r0(rec_r0), .rec_r1(rec_r1), .rec_x(rec_x), .rec_e(rec_e),
-        .rec_qs(rec_qs), .rec_rs(rec_rs), .rec_dy(rec_dy), .rec_dir(rec_dir)
+        .rec_qs(rec_qs), .rec_rs(rec_rs), .rec_dy(rec_dy), .rec_dir(rec_dir),
+        // the sequencer keeps its own row bitmap (docs/microarch.md 3.6)
+        .nx_req(1'b0), .nx_after(14'd0), .nx_valid(nx_valid), .nx_found(nx_found), .nx_row(nx_row)
     );
 
     wire etw_take = et_wr_valid && et_wr_ready;
@@ -215,6 +219,6 @@ module ef_raster #(
     assign err = cfg_err || err_full;
 
     /* verilator lint_off UNUSEDSIGNAL */
-    wire unused = slb_idle_unused ^ row_req_ready ^ shape_go ^ shape_any ^ row_ack ^ row_nonempty ^ (^row_first) ^ (^row_last) ^ (^shape_nedges);
+    wire unused = nx_valid ^ nx_found ^ (^nx_row) ^ slb_idle_unused ^ row_req_ready ^ shape_go ^ shape_any ^ row_ack ^ row_nonempty ^ (^row_first) ^ (^row_last) ^ (^shape_nedges);
     /* verilator lint_on UNUSEDSIGNAL */
 endmodule

@@ -63,6 +63,8 @@ module tb_backend #(
     wire          etw_ready, shape_go, shape_any, err_full;
     wire [13:0]   row_first, row_last;
     wire [22:0]   shape_nedges;
+    wire          nx_valid, nx_found;
+    wire [13:0]   nx_row;
 
     // ------------------------------------------------ DUT
     wire        plot_valid, plot_ready, plot_last, plot_dir, aet_busy;
@@ -95,7 +97,9 @@ module tb_backend #(
         .et_rd_valid(rd_valid), .et_rd_ready(rd_ready), .et_rd_row(rd_row), .et_rd_eid(rd_eid),
         .et_rd_last(rd_last),
         .rec_re(rec_re), .rec_ra(rec_ra), .rec_r0(rec_r0), .rec_r1(rec_r1), .rec_x(rec_x), .rec_e(rec_e),
-        .rec_qs(rec_qs), .rec_rs(rec_rs), .rec_dy(rec_dy), .rec_dir(rec_dir)
+        .rec_qs(rec_qs), .rec_rs(rec_rs), .rec_dy(rec_dy), .rec_dir(rec_dir),
+        // the sequencer keeps its own row bitmap (docs/microarch.md 3.6)
+        .nx_req(1'b0), .nx_after(14'd0), .nx_valid(nx_valid), .nx_found(nx_found), .nx_row(nx_row)
     );
     ef_aet #(.NS(NS), .H_MAX(H_MAX), .E_MAX(E_MAX)) u_aet (
         .clk(clk), .rst(rst), .cfg_width(cfg_width),
