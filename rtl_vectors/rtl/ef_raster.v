@@ -153,10 +153,6 @@ module ef_raster #(
         .shape_nedges(shape_nedges), .err_full(err_full),
         .row_req(row_req), .row_req_ready(row_req_ready), .row_req_row(row_req_row),
         .row_ack(row_ack), .row_nonempty(row_nonempty),
-        // the sequencer keeps its own bit per row (docs/microarch.md 3.6): ETM's query is unused
-        /* verilator lint_off PINCONNECTEMPTY */
-        .nx_req(1'b0), .nx_after(14'd0), .nx_valid(), .nx_found(), .nx_row(),
-        /* verilator lint_on PINCONNECTEMPTY */
         .et_rd_valid(et_rd_valid), .et_rd_ready(et_rd_ready), .et_rd_row(et_rd_row), .et_rd_eid(et_rd_eid),
         .et_rd_last(et_rd_last),
         .rec_re(rec_re), .rec_ra(rec_ra), .rec_r0(rec_r0), .rec_r1(rec_r1), .rec_x(rec_x), .rec_e(rec_e),
