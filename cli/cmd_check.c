@@ -63,14 +63,11 @@ static void usage(FILE *f)
 int ef_cli_check_parse(int argc, char **argv, ef_cli_check_args *a)
 {
     int i, only_positional = 0, seen_errors = 0, seen_cycles = 0, seen_txn = 0, seen_only = 0, seen_allow = 0;
-    const char *iface_names[EF_IF_COUNT];
 
     memset(a, 0, sizeof *a);
     a->errors = 20;
     a->cycles = 1;
     a->only = EF_IF_ALL;
-    for (int k = 0; k < EF_IF_COUNT; k++)
-        iface_names[k] = ef_iface_get(k)->name;
     for (i = 1; i < argc && strcmp(argv[i], "--") != 0; i++)
         if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
             usage(stdout);
@@ -115,7 +112,7 @@ int ef_cli_check_parse(int argc, char **argv, ef_cli_check_args *a)
                 return EF_CLI_EXIT_USAGE;
             if (seen_only++)
                 return ef_cli_usage_error(CMD, "--interfaces given twice");
-            if (!ef_cli_parse_list(CMD, "--interfaces", v, iface_names, EF_IF_COUNT, &a->only))
+            if (!ef_cli_parse_ifaces(CMD, "--interfaces", v, &a->only))   /* `edge` read as `seg` */
                 return EF_CLI_EXIT_USAGE;
             if (!(a->only >> EF_IF_PIX & 1u))
                 return ef_cli_usage_error(CMD, "--interfaces must include pix (the DUT's output is always checked)");
@@ -124,7 +121,7 @@ int ef_cli_check_parse(int argc, char **argv, ef_cli_check_args *a)
                 return EF_CLI_EXIT_USAGE;
             if (seen_allow++)
                 return ef_cli_usage_error(CMD, "--allow-missing given twice");
-            if (!ef_cli_parse_list(CMD, "--allow-missing", v, iface_names, EF_IF_COUNT, &a->allow_missing))
+            if (!ef_cli_parse_ifaces(CMD, "--allow-missing", v, &a->allow_missing))
                 return EF_CLI_EXIT_USAGE;
             if (a->allow_missing >> EF_IF_PIX & 1u)
                 return ef_cli_usage_error(CMD, "--allow-missing cannot name pix (the DUT's output is always checked)");
