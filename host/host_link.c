@@ -20,6 +20,7 @@
 #include "host_link.h"
 
 #include <errno.h>
+#include <stdarg.h>
 #include <inttypes.h>
 #include <stdlib.h>
 #include <string.h>
@@ -129,12 +130,15 @@ void ef_host_ident_describe(const ef_host_ident *id, char *buf, size_t size)
 }
 
 /* --------------------------------------------------------------- output */
-static int fail(hl *h, int code, const char *fmt, const char *detail)
+__attribute__((format(printf, 3, 4))) static int fail(hl *h, int code, const char *fmt, ...)
 {
-    fprintf(stderr, "edgeflag-host: ");
-    fprintf(stderr, fmt, detail ? detail : "");
-    fputc('\n', stderr);
+    va_list ap;
     (void)h;
+    fputs("edgeflag-host: ", stderr);
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fputc('\n', stderr);
     return code;
 }
 
@@ -282,10 +286,10 @@ static int take(hl *h, const ef_frame *f, int *progress)
     switch (f->type) {
     case EF_FT_ACK: {
         if (f->len < 12)
-            return fail(h, EF_HX_BOARD, "the board sent a malformed ACK%s", "");
+            return fail(h, EF_HX_BOARD, "the board sent a malformed ACK");
         const uint32_t next = ef_get32(f->payload), credits = ef_get32(f->payload + 4);
         if (next > h->last_seq + 1)
-            return fail(h, EF_HX_BOARD, "the board acknowledged frames that were never sent%s", "");
+            return fail(h, EF_HX_BOARD, "the board acknowledged frames that were never sent");
         if (next > h->base) {
             h->base = next;
             *progress = 1;
@@ -298,13 +302,13 @@ static int take(hl *h, const ef_frame *f, int *progress)
     }
     case EF_FT_NAK: {
         if (f->len < 8)
-            return fail(h, EF_HX_BOARD, "the board sent a malformed NAK%s", "");
+            return fail(h, EF_HX_BOARD, "the board sent a malformed NAK");
         const uint32_t want = ef_get32(f->payload);
         h->rep->naks++;
         if (want < h->base)
             return fail(h, EF_HX_BOARD,
                         "the board asks again for frames it had acknowledged: it was reset or lost its state "
-                        "during the run; run again without --resume%s", "");
+                        "during the run; run again without --resume");
         if (want < h->next) {
             h->rep->retransmits += h->next - want;
             h->next = want;                    /* go back */
@@ -339,7 +343,7 @@ static int take(hl *h, const ef_frame *f, int *progress)
              * a board keeps it until then, so a host killed in between gets it
              * again on --resume */
             if (f->len != EF_BOARD_DONE_LEN)
-                return fail(h, EF_HX_BOARD, "the board sent a malformed DONE%s", "");
+                return fail(h, EF_HX_BOARD, "the board sent a malformed DONE");
             memcpy(h->done_payload, f->payload, EF_BOARD_DONE_LEN);
             h->done = 1;
             return 0;
@@ -489,7 +493,7 @@ static int load_vectors(hl *h)
     h->cmds = malloc(s->n * EF_BOARD_CMD_BYTES);
     if (!h->cmds) {
         ef_vec_dump_free(&d);
-        return fail(h, EF_HX_INTERNAL, "out of memory%s", "");
+        return fail(h, EF_HX_INTERNAL, "out of memory");
     }
     for (size_t k = 0; k < s->n; k++) {
         uint8_t *c = h->cmds + k * EF_BOARD_CMD_BYTES;
@@ -558,7 +562,7 @@ static int run(hl *h)
             snprintf(b, sizeof b, "%u", id.protocol);
             return fail(h, EF_HX_BOARD, "the board speaks protocol version %s; this edgeflag-host speaks 1", b);
         }
-        return fail(h, EF_HX_BOARD, "the device did not answer identify as an edgeflag board (no \"EFB1\")%s", "");
+        return fail(h, EF_HX_BOARD, "the device did not answer identify as an edgeflag board (no \"EFB1\")");
     }
     if (!(id.samples_mask >> ef_board_samples_bit((unsigned)h->samples) & 1u) || (uint32_t)h->info.width > id.width_max ||
         (uint32_t)h->info.height > id.height_max) {
@@ -571,34 +575,32 @@ static int run(hl *h)
     h->window = id.window ? id.window : 1;
     if (o->iface_mask & ~id.iface_mask)
         return fail(h, EF_HX_BOARD, "the board cannot return the internal interfaces asked for (it returns "
-                                    "only what identify lists); use --interfaces pix%s", "");
+                                    "only what identify lists); use --interfaces pix");
 
     if (o->resume) {
         const int s = load_state(h);
         if (s != 0)
             return fail(h, EF_HX_USAGE,
-                        s == -1 ? "--resume: no resume state in the results folder (nothing was interrupted)%s"
-                                : "--resume: the resume state belongs to another vectors file or is damaged%s",
-                        "");
+                        s == -1 ? "--resume: no resume state in the results folder (nothing was interrupted)"
+                                : "--resume: the resume state belongs to another vectors file or is damaged");
         uint8_t st[EF_BOARD_STATUS_LEN];
         if ((r = h->ops->status(h->l, st)) < 0)
             return r == EF_HOST_ENODEV || r == EF_HOST_ETIMEDOUT ? lost(h, r)
                                                                    : link_fail(h, "status", r);
         if (memcmp(st, EF_BOARD_MAGIC, 4) != 0)
-            return fail(h, EF_HX_BOARD, "the board's status answer is malformed%s", "");
+            return fail(h, EF_HX_BOARD, "the board's status answer is malformed");
         const uint32_t rx_seq = ef_get32(st + 8), res_made = ef_get32(st + 12);
         if (st[6] == EF_BS_IDLE || rx_seq == 0)
             return fail(h, EF_HX_BOARD, "the board has no run to resume (it was reset or power-cycled); run "
-                                        "again without --resume%s", "");
+                                        "again without --resume");
         uint64_t taken = (uint64_t)(rx_seq - 1) * h->per_frame;   /* commands in the DATA frames it took */
         if (taken > h->ncmds)
             taken = h->ncmds;
         if (ef_get32(st + 20) != ef_frame_crc32(0, h->cmds, (size_t)taken * EF_BOARD_CMD_BYTES))
             return fail(h, EF_HX_BOARD, "the board's run is not this vectors file (its input CRC differs); run "
-                                        "again without --resume%s", "");
+                                        "again without --resume");
         if (res_made < h->res_next)
-            return fail(h, EF_HX_BOARD, "the board made fewer result frames than were kept: not the same run%s",
-                        "");
+            return fail(h, EF_HX_BOARD, "the board made fewer result frames than were kept: not the same run");
         h->last_seq = (uint32_t)((h->ncmds + h->per_frame - 1) / h->per_frame) + 1;
         h->base = h->next = rx_seq;
         h->rep->resumed_from = rx_seq;
@@ -629,7 +631,7 @@ static int run(hl *h)
     h->rcap = 4 * EF_BOARD_FRAME_MAX;
     h->rbuf = malloc(h->rcap);
     if (!h->fbuf || !h->rbuf)
-        return fail(h, EF_HX_INTERNAL, "out of memory%s", "");
+        return fail(h, EF_HX_INTERNAL, "out of memory");
 
     const int timeout = o->timeout_ms > 0 ? o->timeout_ms : 2000;
     const double t0 = now_s();
