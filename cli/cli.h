@@ -6,7 +6,9 @@
 #ifndef EF_CLI_H
 #define EF_CLI_H
 
+#include <getopt.h>
 #include <stdint.h>
+#include <stdio.h>
 
 #include "ef_vec.h"
 #include "image_write.h"
@@ -83,12 +85,72 @@ typedef struct ef_cli_vectors_args {
 } ef_cli_vectors_args;
 int ef_cli_vectors_parse(int argc, char **argv, ef_cli_vectors_args *a);
 
-/* filter_opts.c: --filter box|tent, --subpixel none|rgb|bgr (docs/spec.md 10).
- * Returns 0 when argv[*i] is neither, 1 when parsed (i advanced), -1 after a
- * usage error.  ef_cli_apply_filter sets them on ctx: -1 on success, else an
- * exit code (the error reported). */
+/* The options of all commands, as getopt_long's `val`: a short spelling is
+ * its character (-o, -n), a long-only option a number above 255.  One
+ * meaning, one value, so the value parsers shared by commands (scene,
+ * filter) are keyed by it. */
+enum {
+    EF_OPT_OUTPUT = 'o',
+    EF_OPT_N = 'n',
+    EF_OPT_SAMPLES = 256, EF_OPT_RULE, EF_OPT_SIZE, EF_OPT_FILTER, EF_OPT_SUBPIXEL,
+    EF_OPT_FORCE, EF_OPT_DUMP, EF_OPT_RTL_HEADERS, EF_OPT_FORMATS, EF_OPT_INTERFACES,
+    EF_OPT_SEED, EF_OPT_LEVEL, EF_OPT_SHARD, EF_OPT_LIST, EF_OPT_EMIT_C,
+    EF_OPT_ERRORS, EF_OPT_CYCLES, EF_OPT_TRANSACTIONS, EF_OPT_ALLOW_MISSING, EF_OPT_NAME,
+    EF_OPT_JUNIT, EF_OPT_DIFF_IMAGE
+};
+enum { EF_CLI_MAX_OPTIONS = 24 };   /* entries of one command's table */
+
+/* One command's command line, read by ef_cli_getopt (args.c) with
+ * getopt_long.  `options` is the command's getopt_long table (ended by a
+ * zero entry): has_arg is the value kind (no_argument: a flag,
+ * required_argument: "--NAME VALUE" or "--NAME=VALUE"), flag is NULL, val an
+ * EF_OPT_*; an option with only a short spelling has the name "" (and two
+ * entries with one val, -o and --output, are one option).  The driver takes
+ * --help/-h first, then each option at most once ("--NAME given twice", or
+ * twice(val) when that is not NULL), in any order with the operands; "--"
+ * ends the options where `dashdash` is set (else it is an operand like any
+ * other).  A command without operand() refuses every operand: "unknown
+ * option" when it starts with '-' (so "-" and "--" too), else "unexpected
+ * argument".  option(), operand() and finish() return
+ * -1 to go on, else an exit code (a usage error then reported). */
+typedef struct ef_cli_command {
+    const char *name;
+    const struct option *options;
+    int dashdash;
+    void (*usage)(FILE *f);
+    int (*option)(void *a, int val, const char *value);
+    int (*operand)(void *a, const char *arg);   /* NULL: the command takes no operands */
+    const char *no_operand_hint;                 /* then: said after "unexpected argument 'ARG'" */
+    int (*finish)(void *a);              /* after the last word; NULL: nothing to check */
+    const char *(*twice)(int val);       /* NULL, or a message for val given twice (NULL: the usual) */
+} ef_cli_command;
+/* The options `render` and `vectors` share, for their tables. */
+#define EF_CLI_SCENE_OPTIONS                                                                                    \
+    { "samples", required_argument, NULL, EF_OPT_SAMPLES }, { "rule", required_argument, NULL, EF_OPT_RULE },   \
+    { "size", required_argument, NULL, EF_OPT_SIZE }, { "filter", required_argument, NULL, EF_OPT_FILTER },     \
+    { "subpixel", required_argument, NULL, EF_OPT_SUBPIXEL }
+/* Returns -1 when the line parsed and the command should run, else the exit code. */
+int ef_cli_getopt(const ef_cli_command *c, int argc, char **argv, void *a);
+
+/* The scene options of `render` and `vectors` (--samples 8|16|32,
+ * --rule nonzero|evenodd, --size WxH, --filter box|tent,
+ * --subpixel none|rgb|bgr; docs/spec.md 10 for the last two): where the
+ * values go. */
+typedef struct ef_cli_scene {
+    int32_t *samples;
+    int *rule;
+    int32_t *fit_w, *fit_h;
+    int *filter, *subpixel;
+} ef_cli_scene;
+/* 1 when val is a scene option and v was stored, -1 after a usage error
+ * (reported under cmd), 0 when val is another option. */
+int ef_cli_scene_value(const char *cmd, int val, const char *v, ef_cli_scene *s);
+/* filter_opts.c: the --filter or --subpixel part of it; ef_cli_apply_filter
+ * sets them on ctx: -1 on success, else an exit code (the error reported). */
+int ef_cli_filter_value(const char *cmd, int val, const char *v, int *filter, int *subpixel);
+/* --samples 8|16|32: 1 and stored, or 0 after a usage error. */
+int ef_cli_parse_samples(const char *cmd, const char *v, int32_t *samples);
 struct ef_ctx;
-int ef_cli_filter_option(const char *cmd, int argc, char **argv, int *i, int *filter, int *subpixel, int seen[2]);
 int ef_cli_apply_filter(struct ef_ctx *ctx, const char *input, int filter, int subpixel);
 
 /* Exact decimal integer: one or more ASCII digits and nothing else (no sign,
@@ -99,23 +161,6 @@ int ef_cli_parse_int(const char *s, int32_t min, int32_t max, int32_t *out);
 /* "WxH" (lower-case x), each in [1, max].  Returns 1 or 0. */
 int ef_cli_parse_size(const char *s, int32_t max, int32_t *w, int32_t *h);
 
-/* Option matching for hand-written parsers.  `arg` is argv[*i].  If it is
- * `name` (then the value is argv[*i + 1]) or `name=value`, sets *value and
- * advances *i past what was consumed, returning 1.  Returns 0 if arg is a
- * different option, -1 if it is this option but the value is missing (a
- * usage error already reported under `cmd`). */
-int ef_cli_option_value(const char *cmd, int argc, char **argv, int *i, const char *name,
-                        const char **value);
-
-/* "edgeflag: <cmd>: <message>" + a hint line on stderr; returns
- * EF_CLI_EXIT_USAGE so callers can `return ef_cli_usage_error(...)`. */
-/* The scene options of `render` and `vectors`: --samples 8|16|32,
- * --rule nonzero|evenodd, --size WxH, each at most once (seen[3] counts them).
- * Returns 1 when argv[*i] was one of them (stored, *i advanced), 0 when it is
- * another argument, -1 after a usage error (reported under cmd). */
-int ef_cli_scene_option(const char *cmd, int argc, char **argv, int *i, int32_t *samples, int *rule,
-                        int32_t *fit_w, int32_t *fit_h, int seen[3]);
-
 /* A comma-separated list of names[0..n-1], each at most once, as bits
  * (1 << k); 1, or 0 after a usage error naming opt and the valid names. */
 int ef_cli_parse_list(const char *cmd, const char *opt, const char *v, const char *const *names, int n,
@@ -124,6 +169,8 @@ int ef_cli_parse_list(const char *cmd, const char *opt, const char *v, const cha
  * `edge` of `seg` too. */
 int ef_cli_parse_ifaces(const char *cmd, const char *opt, const char *v, uint32_t *out);
 
+/* "edgeflag: <cmd>: <message>" + a hint line on stderr; returns
+ * EF_CLI_EXIT_USAGE so callers can `return ef_cli_usage_error(...)`. */
 int ef_cli_usage_error(const char *cmd, const char *fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 2, 3)))

@@ -60,108 +60,107 @@ static void usage(FILE *f)
           f);
 }
 
-int ef_cli_check_parse(int argc, char **argv, ef_cli_check_args *a)
-{
-    int i, only_positional = 0, seen_errors = 0, seen_cycles = 0, seen_txn = 0, seen_only = 0, seen_allow = 0;
+static const struct option OPTIONS[] = {
+    { "errors", required_argument, NULL, EF_OPT_ERRORS },
+    { "cycles", no_argument, NULL, EF_OPT_CYCLES },
+    { "transactions", no_argument, NULL, EF_OPT_TRANSACTIONS },
+    { "interfaces", required_argument, NULL, EF_OPT_INTERFACES },
+    { "allow-missing", required_argument, NULL, EF_OPT_ALLOW_MISSING },
+    { "name", required_argument, NULL, EF_OPT_NAME },
+    { "junit", required_argument, NULL, EF_OPT_JUNIT },
+    { "diff-image", required_argument, NULL, EF_OPT_DIFF_IMAGE },
+    { NULL, 0, NULL, 0 }
+};
 
-    memset(a, 0, sizeof *a);
-    a->errors = 20;
-    a->cycles = 1;
-    a->only = EF_IF_ALL;
-    for (i = 1; i < argc && strcmp(argv[i], "--") != 0; i++)
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            usage(stdout);
-            return EF_CLI_EXIT_OK;
-        }
-    for (i = 1; i < argc;) {
-        const char *arg = argv[i], *v = NULL;
-        int r;
-        if (only_positional || arg[0] != '-' || arg[1] == '\0') {
-            if (!a->expected)
-                a->expected = arg;
-            else if (!a->actual)
-                a->actual = arg;
-            else
-                return ef_cli_usage_error(CMD, "more than two files ('%s' after '%s' and '%s')", arg, a->expected,
-                                          a->actual);
-            i++;
-            continue;
-        }
-        if (strcmp(arg, "--") == 0) {
-            only_positional = 1;
-            i++;
-        } else if (strcmp(arg, "--cycles") == 0 || strcmp(arg, "--transactions") == 0) {
-            int *seen = arg[2] == 'c' ? &seen_cycles : &seen_txn;
-            if ((*seen)++)
-                return ef_cli_usage_error(CMD, "%s given twice", arg);
-            if (seen_cycles && seen_txn)
-                return ef_cli_usage_error(CMD, "--cycles and --transactions exclude each other");
-            a->cycles = arg[2] == 'c';
-            i++;
-        } else if (strncmp(arg, "--cycles=", 9) == 0 || strncmp(arg, "--transactions=", 15) == 0) {
-            return ef_cli_usage_error(CMD, "option '%.*s' takes no value", (int)(strchr(arg, '=') - arg), arg);
-        } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "--errors", &v)) != 0) {
-            if (r < 0)
-                return EF_CLI_EXIT_USAGE;
-            if (seen_errors++)
-                return ef_cli_usage_error(CMD, "--errors given twice");
-            if (!ef_cli_parse_int(v, 0, INT32_MAX, &a->errors))
-                return ef_cli_usage_error(CMD, "--errors must be a number 0..%d (0 = all), not '%s'", INT32_MAX, v);
-        } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "--interfaces", &v)) != 0) {
-            if (r < 0)
-                return EF_CLI_EXIT_USAGE;
-            if (seen_only++)
-                return ef_cli_usage_error(CMD, "--interfaces given twice");
-            if (!ef_cli_parse_ifaces(CMD, "--interfaces", v, &a->only))   /* `edge` read as `seg` */
-                return EF_CLI_EXIT_USAGE;
-            if (!(a->only >> EF_IF_PIX & 1u))
-                return ef_cli_usage_error(CMD, "--interfaces must include pix (the DUT's output is always checked)");
-        } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "--allow-missing", &v)) != 0) {
-            if (r < 0)
-                return EF_CLI_EXIT_USAGE;
-            if (seen_allow++)
-                return ef_cli_usage_error(CMD, "--allow-missing given twice");
-            if (!ef_cli_parse_ifaces(CMD, "--allow-missing", v, &a->allow_missing))
-                return EF_CLI_EXIT_USAGE;
-            if (a->allow_missing >> EF_IF_PIX & 1u)
-                return ef_cli_usage_error(CMD, "--allow-missing cannot name pix (the DUT's output is always checked)");
-        } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "--name", &v)) != 0) {
-            if (r < 0)
-                return EF_CLI_EXIT_USAGE;
-            if (a->name)
-                return ef_cli_usage_error(CMD, "--name given twice");
-            if (!*v)
-                return ef_cli_usage_error(CMD, "empty --name");
-            a->name = v;
-        } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "--junit", &v)) != 0) {
-            if (r < 0)
-                return EF_CLI_EXIT_USAGE;
-            if (a->junit)
-                return ef_cli_usage_error(CMD, "--junit given twice");
-            if (!*v)
-                return ef_cli_usage_error(CMD, "empty --junit file name");
-            a->junit = v;
-        } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "--diff-image", &v)) != 0) {
-            if (r < 0)
-                return EF_CLI_EXIT_USAGE;
-            if (a->diff_image)
-                return ef_cli_usage_error(CMD, "--diff-image given twice");
-            a->diff_fmt = ef_cli_format_from_path(v);
-            if (a->diff_fmt != EF_CLI_FMT_PNG && a->diff_fmt != EF_CLI_FMT_PAM)
-                return ef_cli_usage_error(CMD, "--diff-image must name a .png (or .pam) file, not '%s'", v);
-            if (!ef_cli_format_available(a->diff_fmt))
-                return ef_cli_usage_error(CMD, "'%s': this edgeflag was built without PNG support (WITH_PNG=0); "
-                                          "use .pam", v);
-            a->diff_image = v;
-        } else {
-            return ef_cli_usage_error(CMD, "unknown option '%s'", arg);
-        }
+/* The line as read: the request, and which of --cycles/--transactions came. */
+typedef struct check_line {
+    ef_cli_check_args *a;
+    int timing;   /* 0, or the EF_OPT_ of the first of the two */
+} check_line;
+
+static int on_option(void *p, int val, const char *v)
+{
+    check_line *l = p;
+    ef_cli_check_args *a = l->a;
+    switch (val) {
+    case EF_OPT_CYCLES:
+    case EF_OPT_TRANSACTIONS:
+        if (l->timing)
+            return ef_cli_usage_error(CMD, "--cycles and --transactions exclude each other");
+        l->timing = val;
+        a->cycles = val == EF_OPT_CYCLES;
+        return -1;
+    case EF_OPT_ERRORS:
+        if (!ef_cli_parse_int(v, 0, INT32_MAX, &a->errors))
+            return ef_cli_usage_error(CMD, "--errors must be a number 0..%d (0 = all), not '%s'", INT32_MAX, v);
+        return -1;
+    case EF_OPT_INTERFACES:
+        if (!ef_cli_parse_ifaces(CMD, "--interfaces", v, &a->only))   /* `edge` read as `seg` */
+            return EF_CLI_EXIT_USAGE;
+        if (!(a->only >> EF_IF_PIX & 1u))
+            return ef_cli_usage_error(CMD, "--interfaces must include pix (the DUT's output is always checked)");
+        return -1;
+    case EF_OPT_ALLOW_MISSING:
+        if (!ef_cli_parse_ifaces(CMD, "--allow-missing", v, &a->allow_missing))
+            return EF_CLI_EXIT_USAGE;
+        if (a->allow_missing >> EF_IF_PIX & 1u)
+            return ef_cli_usage_error(CMD, "--allow-missing cannot name pix (the DUT's output is always checked)");
+        return -1;
+    case EF_OPT_NAME:
+        if (!*v)
+            return ef_cli_usage_error(CMD, "empty --name");
+        a->name = v;
+        return -1;
+    case EF_OPT_JUNIT:
+        if (!*v)
+            return ef_cli_usage_error(CMD, "empty --junit file name");
+        a->junit = v;
+        return -1;
+    default:   /* EF_OPT_DIFF_IMAGE */
+        a->diff_fmt = ef_cli_format_from_path(v);
+        if (a->diff_fmt != EF_CLI_FMT_PNG && a->diff_fmt != EF_CLI_FMT_PAM)
+            return ef_cli_usage_error(CMD, "--diff-image must name a .png (or .pam) file, not '%s'", v);
+        if (!ef_cli_format_available(a->diff_fmt))
+            return ef_cli_usage_error(CMD, "'%s': this edgeflag was built without PNG support (WITH_PNG=0); "
+                                      "use .pam", v);
+        a->diff_image = v;
+        return -1;
     }
+}
+
+static int on_operand(void *p, const char *arg)
+{
+    ef_cli_check_args *a = ((check_line *)p)->a;
+    if (!a->expected)
+        a->expected = arg;
+    else if (!a->actual)
+        a->actual = arg;
+    else
+        return ef_cli_usage_error(CMD, "more than two files ('%s' after '%s' and '%s')", arg, a->expected,
+                                  a->actual);
+    return -1;
+}
+
+static int finish(void *p)
+{
+    ef_cli_check_args *a = ((check_line *)p)->a;
     if (!a->expected || !a->actual)
         return ef_cli_usage_error(CMD, "two files or directories needed: EXPECTED ACTUAL");
     if (a->junit && a->diff_image && strcmp(a->junit, a->diff_image) == 0)
         return ef_cli_usage_error(CMD, "--junit and --diff-image name the same file");
     return -1;
+}
+
+static const ef_cli_command COMMAND = { "check", OPTIONS, 1, usage, on_option, on_operand, NULL, finish, NULL };
+
+int ef_cli_check_parse(int argc, char **argv, ef_cli_check_args *a)
+{
+    check_line l = { a, 0 };
+    memset(a, 0, sizeof *a);
+    a->errors = 20;
+    a->cycles = 1;
+    a->only = EF_IF_ALL;
+    return ef_cli_getopt(&COMMAND, argc, argv, &l);
 }
 
 /* ---------------------------------------------------------------- the command */

@@ -107,86 +107,75 @@ static int parse_shard(const char *s, uint32_t *i, uint32_t *n)
     return 1;
 }
 
-/* Returns -1 when the line parsed and the command should run, else the exit code. */
-static int parse(int argc, char **argv, gen_args *a)
-{
-    int seen_seed = 0, seen_level = 0, seen_n = 0, seen_shard = 0, seen_samples = 0;
-    int32_t level = 1, samples = 0, k = 0;
-    uint64_t seed = EF_GEN_DEFAULT_SEED;
-    int i;
+static const struct option OPTIONS[] = {
+    { "", required_argument, NULL, EF_OPT_OUTPUT },   /* -o */
+    { "output", required_argument, NULL, EF_OPT_OUTPUT },
+    { "seed", required_argument, NULL, EF_OPT_SEED },
+    { "level", required_argument, NULL, EF_OPT_LEVEL },
+    { "", required_argument, NULL, EF_OPT_N },        /* -n */
+    { "shard", required_argument, NULL, EF_OPT_SHARD },
+    { "samples", required_argument, NULL, EF_OPT_SAMPLES },
+    { "force", no_argument, NULL, EF_OPT_FORCE },
+    { "list", no_argument, NULL, EF_OPT_LIST },
+    { NULL, 0, NULL, 0 }
+};
 
-    memset(a, 0, sizeof *a);
-    a->shard_i = a->shard_n = 1;
-    for (i = 1; i < argc; i++) {
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            usage(stdout);
-            return EF_CLI_EXIT_OK;
-        }
+/* The line as read, before the level's configuration is built from it. */
+typedef struct gen_line {
+    gen_args *a;
+    int32_t level, samples, k;
+    int seen_n;
+    uint64_t seed;
+} gen_line;
+
+static int on_option(void *p, int val, const char *v)
+{
+    gen_line *l = p;
+    gen_args *a = l->a;
+    switch (val) {
+    case EF_OPT_FORCE:
+        a->force = 1;
+        break;
+    case EF_OPT_LIST:
+        a->list = 1;
+        break;
+    case EF_OPT_OUTPUT:
+        if (!*v)
+            return ef_cli_usage_error(CMD, "empty output directory name");
+        a->dir = v;
+        break;
+    case EF_OPT_SEED:
+        if (!parse_u64(v, &l->seed))
+            return ef_cli_usage_error(CMD, "--seed must be a decimal number 0 .. 18446744073709551615, "
+                                      "not '%s'", v);
+        break;
+    case EF_OPT_LEVEL:
+        if (!ef_cli_parse_int(v, 1, 2, &l->level))
+            return ef_cli_usage_error(CMD, "--level must be 1 or 2, not '%s'", v);
+        break;
+    case EF_OPT_N:
+        l->seen_n = 1;
+        if (!ef_cli_parse_int(v, 0, (int32_t)EF_GEN_MAX_CASES, &l->k))
+            return ef_cli_usage_error(CMD, "-n must be a number of random cases up to %u, not '%s'",
+                                      EF_GEN_MAX_CASES, v);
+        break;
+    case EF_OPT_SHARD:
+        if (!parse_shard(v, &a->shard_i, &a->shard_n))
+            return ef_cli_usage_error(CMD, "--shard must be I/N with 1 <= I <= N <= %u, not '%s'",
+                                      EF_GEN_MAX_CASES, v);
+        break;
+    default:   /* EF_OPT_SAMPLES */
+        if (!ef_cli_parse_samples(CMD, v, &l->samples))
+            return EF_CLI_EXIT_USAGE;
+        break;
     }
-    for (i = 1; i < argc;) {
-        const char *arg = argv[i], *v = NULL;
-        int r;
-        if (strcmp(arg, "--force") == 0) {
-            if (a->force++)
-                return ef_cli_usage_error(CMD, "--force given twice");
-            i++;
-        } else if (strcmp(arg, "--list") == 0) {
-            if (a->list++)
-                return ef_cli_usage_error(CMD, "--list given twice");
-            i++;
-        } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "-o", &v)) != 0 ||
-                   (r = ef_cli_option_value(CMD, argc, argv, &i, "--output", &v)) != 0) {
-            if (r < 0)
-                return EF_CLI_EXIT_USAGE;
-            if (a->dir)
-                return ef_cli_usage_error(CMD, "output directory given twice");
-            if (!*v)
-                return ef_cli_usage_error(CMD, "empty output directory name");
-            a->dir = v;
-        } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "--seed", &v)) != 0) {
-            if (r < 0)
-                return EF_CLI_EXIT_USAGE;
-            if (seen_seed++)
-                return ef_cli_usage_error(CMD, "--seed given twice");
-            if (!parse_u64(v, &seed))
-                return ef_cli_usage_error(CMD, "--seed must be a decimal number 0 .. 18446744073709551615, "
-                                          "not '%s'", v);
-        } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "--level", &v)) != 0) {
-            if (r < 0)
-                return EF_CLI_EXIT_USAGE;
-            if (seen_level++)
-                return ef_cli_usage_error(CMD, "--level given twice");
-            if (!ef_cli_parse_int(v, 1, 2, &level))
-                return ef_cli_usage_error(CMD, "--level must be 1 or 2, not '%s'", v);
-        } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "-n", &v)) != 0) {
-            if (r < 0)
-                return EF_CLI_EXIT_USAGE;
-            if (seen_n++)
-                return ef_cli_usage_error(CMD, "-n given twice");
-            if (!ef_cli_parse_int(v, 0, (int32_t)EF_GEN_MAX_CASES, &k))
-                return ef_cli_usage_error(CMD, "-n must be a number of random cases up to %u, not '%s'",
-                                          EF_GEN_MAX_CASES, v);
-        } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "--shard", &v)) != 0) {
-            if (r < 0)
-                return EF_CLI_EXIT_USAGE;
-            if (seen_shard++)
-                return ef_cli_usage_error(CMD, "--shard given twice");
-            if (!parse_shard(v, &a->shard_i, &a->shard_n))
-                return ef_cli_usage_error(CMD, "--shard must be I/N with 1 <= I <= N <= %u, not '%s'",
-                                          EF_GEN_MAX_CASES, v);
-        } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "--samples", &v)) != 0) {
-            if (r < 0)
-                return EF_CLI_EXIT_USAGE;
-            if (seen_samples++)
-                return ef_cli_usage_error(CMD, "--samples given twice");
-            if (!ef_cli_parse_int(v, 1, EF_SAMPLES_MAX, &samples) || !ef_samples_valid(samples))
-                return ef_cli_usage_error(CMD, "--samples must be " EF_SAMPLES_TEXT ", not '%s'", v);
-        } else if (arg[0] == '-') {
-            return ef_cli_usage_error(CMD, "unknown option '%s'", arg);
-        } else {
-            return ef_cli_usage_error(CMD, "unexpected argument '%s' (the directory is given with -o)", arg);
-        }
-    }
+    return -1;
+}
+
+static int finish(void *p)
+{
+    gen_line *l = p;
+    gen_args *a = l->a;
     if (a->list && a->dir)
         return ef_cli_usage_error(CMD, "--list writes no files: it takes no -o");
     if (!a->list && !a->dir)
@@ -194,20 +183,36 @@ static int parse(int argc, char **argv, gen_args *a)
     if (a->list && a->force)
         return ef_cli_usage_error(CMD, "--list writes no files: --force makes no sense with it");
 
-    ef_gen_config_init(&a->cfg, level);
-    a->cfg.seed = seed;
-    a->cfg.grid = samples;
-    if (seen_n) {
-        if ((uint32_t)k < a->cfg.nrandom)
+    ef_gen_config_init(&a->cfg, l->level);
+    a->cfg.seed = l->seed;
+    a->cfg.grid = l->samples;
+    if (l->seen_n) {
+        if ((uint32_t)l->k < a->cfg.nrandom)
             return ef_cli_usage_error(CMD, "-n %" PRId32 " is below level %" PRId32 "'s %" PRIu32
                                       " random cases: -n can raise the count, never lower it",
-                                      k, level, a->cfg.nrandom);
-        a->cfg.nrandom = (uint32_t)k;
+                                      l->k, l->level, a->cfg.nrandom);
+        a->cfg.nrandom = (uint32_t)l->k;
     }
     if (ef_gen_config_check(&a->cfg) != EF_OK)
-        return ef_cli_usage_error(CMD, "-n %" PRId32 " makes more than %u cases (%" PRIu32 " directed)", k,
+        return ef_cli_usage_error(CMD, "-n %" PRId32 " makes more than %u cases (%" PRIu32 " directed)", l->k,
                                   EF_GEN_MAX_CASES, ef_gen_directed_count(&a->cfg));
     return -1;
+}
+
+static const char *twice(int val)
+{
+    return val == EF_OPT_OUTPUT ? "output directory given twice" : NULL;
+}
+
+static const ef_cli_command COMMAND = { "gen", OPTIONS, 0, usage, on_option, NULL, " (the directory is given with -o)", finish, twice };
+
+/* Returns -1 when the line parsed and the command should run, else the exit code. */
+static int parse(int argc, char **argv, gen_args *a)
+{
+    gen_line l = { a, 1, 0, 0, 0, EF_GEN_DEFAULT_SEED };
+    memset(a, 0, sizeof *a);
+    a->shard_i = a->shard_n = 1;
+    return ef_cli_getopt(&COMMAND, argc, argv, &l);
 }
 
 static int join(char *out, size_t size, const char *dir, const char *name)

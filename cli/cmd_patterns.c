@@ -183,45 +183,40 @@ static int emit_c(void)
     return EF_CLI_EXIT_OK;
 }
 
+static const struct option OPTIONS[] = {
+    { "samples", required_argument, NULL, EF_OPT_SAMPLES },
+    { "emit-c", no_argument, NULL, EF_OPT_EMIT_C },
+    { NULL, 0, NULL, 0 }
+};
+
+static int on_option(void *p, int val, const char *v)
+{
+    ef_cli_patterns_args *a = p;
+    if (val == EF_OPT_EMIT_C)
+        a->emit_c = 1;
+    else if (!ef_cli_parse_samples(CMD, v, &a->samples))
+        return EF_CLI_EXIT_USAGE;
+    return -1;
+}
+
+static int finish(void *p)
+{
+    ef_cli_patterns_args *a = p;
+    if (a->emit_c && a->samples)
+        return ef_cli_usage_error(CMD, "--emit-c writes all three tables: drop --samples");
+    return -1;
+}
+
+static const ef_cli_command COMMAND = { "patterns", OPTIONS, 0, usage, on_option, NULL, "", finish, NULL };
+
 int ef_cli_patterns_parse(int argc, char **argv, ef_cli_patterns_args *a)
 {
-    int32_t n = 0;
-    int emit = 0;
-
-    a->samples = 0;
-    a->emit_c = 0;
-    for (int i = 1; i < argc; i++) {
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            usage(stdout);
-            return EF_CLI_EXIT_OK;
-        }
-    }
-    for (int i = 1; i < argc;) {
-        const char *v = NULL;
-        int r = ef_cli_option_value(CMD, argc, argv, &i, "--samples", &v);
-        if (r < 0)
-            return EF_CLI_EXIT_USAGE;
-        if (r > 0) {
-            if (n)
-                return ef_cli_usage_error(CMD, "--samples given twice");
-            if (!ef_cli_parse_int(v, 1, EF_SAMPLES_MAX, &n) || !ef_samples_valid(n))
-                return ef_cli_usage_error(CMD, "--samples must be " EF_SAMPLES_TEXT ", not '%s'", v);
-        } else if (strcmp(argv[i], "--emit-c") == 0) {
-            if (emit)
-                return ef_cli_usage_error(CMD, "--emit-c given twice");
-            emit = 1;
-            i++;
-        } else if (argv[i][0] == '-') {
-            return ef_cli_usage_error(CMD, "unknown option '%s'", argv[i]);
-        } else {
-            return ef_cli_usage_error(CMD, "unexpected argument '%s'", argv[i]);
-        }
-    }
-    if (emit && n)
-        return ef_cli_usage_error(CMD, "--emit-c writes all three tables: drop --samples");
-    a->samples = n;
-    a->emit_c = emit;
-    return -1;
+    ef_cli_patterns_args t = { 0, 0 };
+    int rc = ef_cli_getopt(&COMMAND, argc, argv, &t);
+    /* Nothing stored unless the whole line is good. */
+    a->samples = rc < 0 ? t.samples : 0;
+    a->emit_c = rc < 0 ? t.emit_c : 0;
+    return rc;
 }
 
 int ef_cli_patterns(int argc, char **argv)

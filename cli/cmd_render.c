@@ -52,61 +52,38 @@ static void usage(FILE *f)
 
 typedef ef_cli_render_args render_args;
 
-/* Returns -1 when parsing succeeded, else the exit code to return. */
-int ef_cli_render_parse(int argc, char **argv, render_args *a)
+static const struct option OPTIONS[] = {
+    { "", required_argument, NULL, EF_OPT_OUTPUT },   /* -o */
+    { "output", required_argument, NULL, EF_OPT_OUTPUT },
+    EF_CLI_SCENE_OPTIONS,
+    { NULL, 0, NULL, 0 }
+};
+
+static int on_option(void *p, int val, const char *v)
 {
-    int i, only_positional = 0;
-    int seen[3] = { 0, 0, 0 };   /* --samples, --rule, --size */
-    int seen_filter[2] = { 0, 0 };   /* --filter, --subpixel */
-
-    memset(a, 0, sizeof *a);
-    a->samples = EF_CLI_SAMPLES_DEFAULT;
-    a->rule = -1;
-
-    /* --help wins over anything else on the line, even earlier junk. */
-    for (i = 1; i < argc && strcmp(argv[i], "--") != 0; i++) {
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            usage(stdout);
-            return EF_CLI_EXIT_OK;
-        }
+    render_args *a = p;
+    if (val == EF_OPT_OUTPUT) {
+        if (!*v)
+            return ef_cli_usage_error(CMD, "empty output file name");
+        a->output = v;
+        return -1;
     }
+    ef_cli_scene s = { &a->samples, &a->rule, &a->fit_w, &a->fit_h, &a->filter, &a->subpixel };
+    return ef_cli_scene_value(CMD, val, v, &s) > 0 ? -1 : EF_CLI_EXIT_USAGE;
+}
 
-    for (i = 1; i < argc;) {
-        const char *arg = argv[i], *v = NULL;
-        int r;
+static int on_operand(void *p, const char *arg)
+{
+    render_args *a = p;
+    if (a->input)
+        return ef_cli_usage_error(CMD, "more than one input ('%s' and '%s')", a->input, arg);
+    a->input = arg;
+    return -1;
+}
 
-        if (only_positional || arg[0] != '-' || arg[1] == '\0') {
-            if (a->input)
-                return ef_cli_usage_error(CMD, "more than one input ('%s' and '%s')", a->input, arg);
-            a->input = arg;
-            i++;
-            continue;
-        }
-        if (strcmp(arg, "--") == 0) {
-            only_positional = 1;
-            i++;
-            continue;
-        }
-        if ((r = ef_cli_option_value(CMD, argc, argv, &i, "-o", &v)) != 0 ||
-            (r = ef_cli_option_value(CMD, argc, argv, &i, "--output", &v)) != 0) {
-            if (r < 0)
-                return EF_CLI_EXIT_USAGE;
-            if (a->output)
-                return ef_cli_usage_error(CMD, "output given twice");
-            if (!*v)
-                return ef_cli_usage_error(CMD, "empty output file name");
-            a->output = v;
-        } else if ((r = ef_cli_scene_option(CMD, argc, argv, &i, &a->samples, &a->rule, &a->fit_w, &a->fit_h,
-                                            seen)) != 0) {
-            if (r < 0)
-                return EF_CLI_EXIT_USAGE;
-        } else if ((r = ef_cli_filter_option(CMD, argc, argv, &i, &a->filter, &a->subpixel, seen_filter)) != 0) {
-            if (r < 0)
-                return EF_CLI_EXIT_USAGE;
-        } else {
-            return ef_cli_usage_error(CMD, "unknown option '%s'", arg);
-        }
-    }
+static int finish(void *p)
+{
+    render_args *a = p;
     if (!a->input)
         return ef_cli_usage_error(CMD, "no input file");
     if (!a->output)
@@ -124,6 +101,22 @@ int ef_cli_render_parse(int argc, char **argv, render_args *a)
         return ef_cli_usage_error(CMD, "'%s': this edgeflag was built without PNG support "
                                   "(WITH_PNG=0); use .pam or .pgm", a->output);
     return -1;
+}
+
+static const char *twice(int val)
+{
+    return val == EF_OPT_OUTPUT ? "output given twice" : NULL;
+}
+
+static const ef_cli_command COMMAND = { "render", OPTIONS, 1, usage, on_option, on_operand, NULL, finish, twice };
+
+/* Returns -1 when parsing succeeded, else the exit code to return. */
+int ef_cli_render_parse(int argc, char **argv, render_args *a)
+{
+    memset(a, 0, sizeof *a);
+    a->samples = EF_CLI_SAMPLES_DEFAULT;
+    a->rule = -1;
+    return ef_cli_getopt(&COMMAND, argc, argv, a);
 }
 
 /* Failures the input can cause map to 3; running out of memory is not the

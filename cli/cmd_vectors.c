@@ -74,101 +74,91 @@ static void usage(FILE *f)
 
 
 /* Returns -1 when parsing succeeded, else the exit code to return. */
-int ef_cli_vectors_parse(int argc, char **argv, ef_cli_vectors_args *a)
+static const struct option OPTIONS[] = {
+    { "", required_argument, NULL, EF_OPT_OUTPUT },   /* -o */
+    { "output", required_argument, NULL, EF_OPT_OUTPUT },
+    EF_CLI_SCENE_OPTIONS,
+    { "formats", required_argument, NULL, EF_OPT_FORMATS },
+    { "interfaces", required_argument, NULL, EF_OPT_INTERFACES },
+    { "force", no_argument, NULL, EF_OPT_FORCE },
+    { "dump", no_argument, NULL, EF_OPT_DUMP },
+    { "rtl-headers", no_argument, NULL, EF_OPT_RTL_HEADERS },
+    { NULL, 0, NULL, 0 }
+};
+
+/* The line as read: the request, and whether an option --rtl-headers does
+ * not go with was given. */
+typedef struct vectors_line {
+    ef_cli_vectors_args *a;
+    int scene_options;   /* any option but -o, --force and --rtl-headers itself */
+} vectors_line;
+
+static int on_option(void *p, int val, const char *v)
 {
-    int i, only_positional = 0;
-    int seen[3] = { 0, 0, 0 };   /* --samples, --rule, --size */
-    int seen_filter[2] = { 0, 0 };   /* --filter, --subpixel */
-    int seen_formats = 0, seen_ifaces = 0;
+    vectors_line *l = p;
+    ef_cli_vectors_args *a = l->a;
+    ef_cli_scene s = { &a->samples, &a->rule, &a->fit_w, &a->fit_h, &a->filter, &a->subpixel };
+    uint32_t bits;
+    int r;
 
-    memset(a, 0, sizeof *a);
-    a->samples = EF_CLI_SAMPLES_DEFAULT;
-    a->rule = -1;
-    a->formats = EF_CLI_VEC_ALL;
-    a->ifaces = EF_IF_ALL;
-
-    /* --help wins over anything else on the line, even earlier junk. */
-    for (i = 1; i < argc && strcmp(argv[i], "--") != 0; i++) {
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            usage(stdout);
-            return EF_CLI_EXIT_OK;
-        }
+    switch (val) {
+    case EF_OPT_FORCE:
+        a->force = 1;
+        return -1;
+    case EF_OPT_RTL_HEADERS:
+        a->rtl_headers = 1;
+        return -1;
+    case EF_OPT_OUTPUT:
+        if (!*v)
+            return ef_cli_usage_error(CMD, "empty output directory name");
+        a->dir = v;
+        return -1;
+    case EF_OPT_DUMP:
+        a->dump = 1;
+        l->scene_options = 1;
+        return -1;
+    case EF_OPT_FORMATS: {
+        const char *format_names[EF_VEC_NFORMATS];
+        for (int k = 0; k < EF_VEC_NFORMATS; k++)
+            format_names[k] = ef_vec_formats[k].name;
+        if (!ef_cli_parse_list(CMD, "--formats", v, format_names, EF_VEC_NFORMATS, &bits))
+            return EF_CLI_EXIT_USAGE;
+        a->formats = 0;
+        for (int k = 0; k < EF_VEC_NFORMATS; k++)
+            a->formats |= (bits >> k & 1u) ? ef_vec_formats[k].bit : 0u;
+        l->scene_options = 1;
+        return -1;
     }
-
-    for (i = 1; i < argc;) {
-        const char *arg = argv[i], *v = NULL;
-        uint32_t bits;
-        int r;
-
-        if (only_positional || arg[0] != '-' || arg[1] == '\0') {
-            if (a->input)
-                return ef_cli_usage_error(CMD, "more than one input ('%s' and '%s')", a->input, arg);
-            a->input = arg;
-            i++;
-            continue;
-        }
-        if (strcmp(arg, "--") == 0) {
-            only_positional = 1;
-            i++;
-            continue;
-        }
-        if (strcmp(arg, "--dump") == 0) {
-            if (a->dump++)
-                return ef_cli_usage_error(CMD, "--dump given twice");
-            i++;
-        } else if (strcmp(arg, "--rtl-headers") == 0) {
-            if (a->rtl_headers++)
-                return ef_cli_usage_error(CMD, "--rtl-headers given twice");
-            i++;
-        } else if (strcmp(arg, "--force") == 0) {
-            if (a->force++)
-                return ef_cli_usage_error(CMD, "--force given twice");
-            i++;
-        } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "-o", &v)) != 0 ||
-                   (r = ef_cli_option_value(CMD, argc, argv, &i, "--output", &v)) != 0) {
-            if (r < 0)
-                return EF_CLI_EXIT_USAGE;
-            if (a->dir)
-                return ef_cli_usage_error(CMD, "output directory given twice");
-            if (!*v)
-                return ef_cli_usage_error(CMD, "empty output directory name");
-            a->dir = v;
-        } else if ((r = ef_cli_scene_option(CMD, argc, argv, &i, &a->samples, &a->rule, &a->fit_w, &a->fit_h,
-                                            seen)) != 0) {
-            if (r < 0)
-                return EF_CLI_EXIT_USAGE;
-        } else if ((r = ef_cli_filter_option(CMD, argc, argv, &i, &a->filter, &a->subpixel, seen_filter)) != 0) {
-            if (r < 0)
-                return EF_CLI_EXIT_USAGE;
-        } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "--formats", &v)) != 0) {
-            if (r < 0)
-                return EF_CLI_EXIT_USAGE;
-            if (seen_formats++)
-                return ef_cli_usage_error(CMD, "--formats given twice");
-            const char *format_names[EF_VEC_NFORMATS];
-            for (int k = 0; k < EF_VEC_NFORMATS; k++)
-                format_names[k] = ef_vec_formats[k].name;
-            if (!ef_cli_parse_list(CMD, "--formats", v, format_names, EF_VEC_NFORMATS, &bits))
-                return EF_CLI_EXIT_USAGE;
-            a->formats = 0;
-            for (int k = 0; k < EF_VEC_NFORMATS; k++)
-                a->formats |= (bits >> k & 1u) ? ef_vec_formats[k].bit : 0u;
-        } else if ((r = ef_cli_option_value(CMD, argc, argv, &i, "--interfaces", &v)) != 0) {
-            if (r < 0)
-                return EF_CLI_EXIT_USAGE;
-            if (seen_ifaces++)
-                return ef_cli_usage_error(CMD, "--interfaces given twice");
-            if (!ef_cli_parse_ifaces(CMD, "--interfaces", v, &bits))
-                return EF_CLI_EXIT_USAGE;
-            a->ifaces = bits;
-        } else {
-            return ef_cli_usage_error(CMD, "unknown option '%s'", arg);
-        }
+    case EF_OPT_INTERFACES:
+        if (!ef_cli_parse_ifaces(CMD, "--interfaces", v, &a->ifaces))
+            return EF_CLI_EXIT_USAGE;
+        l->scene_options = 1;
+        return -1;
+    default:
+        if ((r = ef_cli_scene_value(CMD, val, v, &s)) < 0)
+            return EF_CLI_EXIT_USAGE;
+        l->scene_options = 1;   /* --filter and --subpixel too (docs/cli.md: only -o and --force) */
+        return -1;
     }
+}
+
+static int on_operand(void *p, const char *arg)
+{
+    ef_cli_vectors_args *a = ((vectors_line *)p)->a;
+    if (a->input)
+        return ef_cli_usage_error(CMD, "more than one input ('%s' and '%s')", a->input, arg);
+    a->input = arg;
+    return -1;
+}
+
+static int finish(void *p)
+{
+    vectors_line *l = p;
+    ef_cli_vectors_args *a = l->a;
     if (a->rtl_headers) {
         if (a->input)
             return ef_cli_usage_error(CMD, "--rtl-headers takes no input ('%s')", a->input);
-        if (seen[0] || seen[1] || seen[2] || seen_formats || seen_ifaces || a->dump)
+        if (l->scene_options)
             return ef_cli_usage_error(CMD, "--rtl-headers takes only -o DIR and --force");
     } else if (!a->input) {
         return ef_cli_usage_error(CMD, "no input file");
@@ -176,6 +166,24 @@ int ef_cli_vectors_parse(int argc, char **argv, ef_cli_vectors_args *a)
     if (!a->dir)
         return ef_cli_usage_error(CMD, "no output directory (-o DIR)");
     return -1;
+}
+
+static const char *twice(int val)
+{
+    return val == EF_OPT_OUTPUT ? "output directory given twice" : NULL;
+}
+
+static const ef_cli_command COMMAND = { "vectors", OPTIONS, 1, usage, on_option, on_operand, NULL, finish, twice };
+
+int ef_cli_vectors_parse(int argc, char **argv, ef_cli_vectors_args *a)
+{
+    vectors_line l = { a, 0 };
+    memset(a, 0, sizeof *a);
+    a->samples = EF_CLI_SAMPLES_DEFAULT;
+    a->rule = -1;
+    a->formats = EF_CLI_VEC_ALL;
+    a->ifaces = EF_IF_ALL;
+    return ef_cli_getopt(&COMMAND, argc, argv, &l);
 }
 
 /* --rtl-headers: the two files of docs/vectors.md section 8, each atomic;

@@ -9,26 +9,16 @@
 
 #include "ef_filter.h"
 
-int ef_cli_filter_option(const char *cmd, int argc, char **argv, int *i, int *filter, int *subpixel, int seen[2])
+int ef_cli_filter_value(const char *cmd, int val, const char *v, int *filter, int *subpixel)
 {
-    const char *v;
-    int r;
-    if ((r = ef_cli_option_value(cmd, argc, argv, i, "--filter", &v)) != 0) {
-        if (r < 0)
-            return -1;
-        if (seen[0]++)
-            return ef_cli_usage_error(cmd, "--filter given twice"), -1;
+    if (val == EF_OPT_FILTER) {
         if (strcmp(v, "box") == 0)
             *filter = EF_FILTER_BOX;
         else if (strcmp(v, "tent") == 0)
             *filter = EF_FILTER_TENT;
         else
             return ef_cli_usage_error(cmd, "--filter must be box or tent, not '%s'", v), -1;
-    } else if ((r = ef_cli_option_value(cmd, argc, argv, i, "--subpixel", &v)) != 0) {
-        if (r < 0)
-            return -1;
-        if (seen[1]++)
-            return ef_cli_usage_error(cmd, "--subpixel given twice"), -1;
+    } else {
         if (strcmp(v, "none") == 0)
             *subpixel = EF_SUBPIXEL_NONE;
         else if (strcmp(v, "rgb") == 0)
@@ -37,8 +27,6 @@ int ef_cli_filter_option(const char *cmd, int argc, char **argv, int *i, int *fi
             *subpixel = EF_SUBPIXEL_BGR;
         else
             return ef_cli_usage_error(cmd, "--subpixel must be none, rgb or bgr, not '%s'", v), -1;
-    } else {
-        return 0;
     }
     return 1;
 }

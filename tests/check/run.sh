@@ -436,6 +436,8 @@ usage_case "--errors given twice" V V --errors 1 --errors 2
 usage_case "--cycles and --transactions exclude each other" V V --cycles --transactions
 usage_case "option '--cycles' takes no value" V V --cycles=yes
 usage_case "unknown option '--frob'" V V --frob
+usage_case "unknown option '--err'" V V --err 3   # no abbreviations (getopt_long would take it)
+usage_case "unknown option '--trans'" V V --trans
 usage_case "--diff-image must name a .png" V V --diff-image d.jpg
 usage_case "option '--junit' needs a value" V V --junit
 usage_case "--junit and --diff-image name the same file" V V --junit x.png --diff-image x.png

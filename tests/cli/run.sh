@@ -399,6 +399,52 @@ else
     bad "patterns --emit-c" "rc=$rc; diff: $(diff out "$root/model/pattern_tables.c" | head -5 | tr '\n' ' ')"
 fi
 
+# ------------------------------------------- getopt_long's extras stay off (docs/cli.md)
+# The parsers are getopt_long (cli/args.c); what it would accept on its own
+# (abbreviated long options, clustered or attached short values, its own
+# messages) must stay refused with our message, and POSIXLY_CORRECT must not
+# change the order rules.  One line each: the exact first line of stderr, then
+# the command line.
+mkdir -p gd
+while IFS='|' read -r want args; do
+    [ -z "$args" ] && continue
+    rm -rf x.png x.pam gd/*
+    # shellcheck disable=SC2086
+    run $args
+    if [ $rc -eq 2 ] && [ "$(head -n 1 err)" = "$want" ] && [ ! -s out ] && absent x.png && absent x.pam &&
+        [ -z "$(ls gd)" ]; then
+        ok "getopt extras: $args -> 2, '$want'"
+    else
+        bad "getopt extras: $args" "rc=$rc, first line '$(head -n 1 err)', want 2 and '$want'"
+    fi
+done <<'EOF'
+edgeflag: render: unknown option '--samp'|render ok.scene -o x.png --samp 8
+edgeflag: render: unknown option '--out=x.png'|render ok.scene --out=x.png
+edgeflag: render: unknown option '-ox.png'|render ok.scene -ox.png
+edgeflag: render: unknown option '-xo'|render ok.scene -xo x.png
+edgeflag: render: option '--output' needs a value|render ok.scene --output
+edgeflag: render: output given twice|render ok.scene -o x.png --output=x.pam
+edgeflag: vectors: unknown option '--inter'|vectors ok.scene -o gd --inter pix
+edgeflag: vectors: option '--force' takes no value|vectors ok.scene -o gd --force=1
+edgeflag: vectors: --rtl-headers takes only -o DIR and --force|vectors --rtl-headers -o gd --filter tent
+edgeflag: gen: unknown option '--lev'|gen -o gd --lev 2
+edgeflag: gen: -n given twice|gen -o gd -n 300 -n 400
+edgeflag: gen: unknown option '-n300'|gen -o gd -n300
+edgeflag: gen: unknown option '--'|gen -o gd --
+edgeflag: patterns: option '--emit-c' takes no value|patterns --emit-c=yes
+edgeflag: patterns: unknown option '--emit'|patterns --emit
+EOF
+# ... and the spellings docs/cli.md promises are all accepted, in any order,
+# with or without POSIXLY_CORRECT.
+rm -f x.pam y.pam
+run render --samples=8 -o=x.pam --rule evenodd ok.scene --size=8x8
+POSIXLY_CORRECT=1 "$EF" render ok.scene --samples 8 --output y.pam --rule=evenodd --size 8x8 >out 2>err
+rc2=$?
+if [ $rc -eq 0 ] && [ $rc2 -eq 0 ] && cmp -s x.pam y.pam; then
+    ok "render: --name=value, -o=FILE, options after the input, POSIXLY_CORRECT: one image"
+else bad "render spellings" "rc=$rc/$rc2 $(head -c 200 err)"; fi
+rm -rf x.pam y.pam gd
+
 # ------------------------------------------- --filter, --subpixel (docs/spec.md 10)
 printf 'scene 6 4\nshape nonzero 200 100 50 255\ncontour 0.3 0.2 5.1 1.4 2.2 3.9\n' >opt.scene
 run render opt.scene -o box.pam --samples 16

@@ -11,7 +11,9 @@
  * patterns ...` and `edgeflag check ...`: a parse that succeeds must leave a complete, valid request
  * (an input, an output with a known format, N in {8, 16, 32}, a rule, a size
  * in range or none); any other result is 0 (help) or 2 (usage error), and the
- * same vector gives the same answer twice.  Nothing is read or written: the
+ * same vector gives the same answer twice, and an accepted line has every
+ * option word spelt in full (getopt_long's abbreviations and attached short
+ * values stay off: ref_full_names).  Nothing is read or written: the
  * parsers never touch a file.
  */
 #include <inttypes.h>
@@ -80,6 +82,30 @@ static bool has_help(int argc, char **argv)
     return false;
 }
 
+/* docs/cli.md: every word in an option's place is a full option name
+ * ("NAME" or "NAME=VALUE"; the value of NAME VALUE is skipped) until "--"
+ * (where it ends options): the parsers are getopt_long, which on its own
+ * would take any unique prefix ("--err" for "--errors") and clustered or
+ * attached short values ("-ox.png").  false if some option word is not. */
+static bool ref_full_names(int argc, char **argv, const char *const *valued, const char *const *flags, bool dashdash)
+{
+    for (int i = 1; i < argc; i++) {
+        const char *w = argv[i];
+        if (dashdash && strcmp(w, "--") == 0) return true;
+        if (w[0] != '-' || w[1] == '\0') continue;   /* an operand */
+        bool known = false;
+        for (int k = 0; valued[k] && !known; k++) {
+            size_t n = strlen(valued[k]);
+            if (strcmp(w, valued[k]) == 0) known = true, i++;
+            else if (strncmp(w, valued[k], n) == 0 && w[n] == '=') known = true;
+        }
+        for (int k = 0; flags[k] && !known; k++)
+            if (strcmp(w, flags[k]) == 0) known = true;
+        if (!known) return false;
+    }
+    return true;
+}
+
 static void check_render(int argc, char **argv)
 {
     ef_cli_render_args a, b;
@@ -94,6 +120,10 @@ static void check_render(int argc, char **argv)
     if (rc != -1 && rc != EF_CLI_EXIT_OK && rc != EF_CLI_EXIT_USAGE && rc != EF_CLI_EXIT_OUTPUT)
         FAIL("render: exit code %d", rc);
     if (rc != -1) return;
+    static const char *const r_valued[] = { "-o", "--output", "--samples", "--rule", "--size", "--filter", "--subpixel",
+                                            NULL };
+    static const char *const r_flags[] = { NULL };
+    if (!ref_full_names(argc, argv, r_valued, r_flags, true)) FAIL("render: accepted a word that is no option");
     if (!a.input || !a.output || !a.output[0]) FAIL("render: accepted without input or output");
     if (!ef_samples_valid(a.samples)) FAIL("render: accepted %" PRId32 " samples", a.samples);
     if (a.rule != -1 && a.rule != EF_RULE_NONZERO && a.rule != EF_RULE_EVENODD) FAIL("render: rule %d", a.rule);
@@ -119,6 +149,8 @@ static void check_patterns(int argc, char **argv)
     if (help != (rc == EF_CLI_EXIT_OK)) FAIL("patterns: --help and exit %d disagree", rc);
     if (rc != -1 && rc != EF_CLI_EXIT_OK && rc != EF_CLI_EXIT_USAGE) FAIL("patterns: exit code %d", rc);
     if (rc != -1) return;
+    static const char *const p_valued[] = { "--samples", NULL }, *const p_flags[] = { "--emit-c", NULL };
+    if (!ref_full_names(argc, argv, p_valued, p_flags, false)) FAIL("patterns: accepted a word that is no option");
     if (!(a.samples == 0 || ef_samples_valid(a.samples))) FAIL("patterns: %" PRId32 " samples", a.samples);
     if (a.emit_c && a.samples) FAIL("patterns: --emit-c with --samples accepted");
     if (a.samples != b.samples || a.emit_c != b.emit_c) FAIL("patterns: two parses differ");
@@ -133,6 +165,10 @@ static void check_check(int argc, char **argv)
     if (has_help(argc, argv) != (rc == EF_CLI_EXIT_OK)) FAIL("check: --help and exit %d disagree", rc);
     if (rc != -1 && rc != EF_CLI_EXIT_OK && rc != EF_CLI_EXIT_USAGE) FAIL("check: exit code %d", rc);
     if (rc != -1) return;
+    static const char *const c_valued[] = { "--errors", "--interfaces", "--allow-missing", "--name", "--junit",
+                                            "--diff-image", NULL };
+    static const char *const c_flags[] = { "--cycles", "--transactions", NULL };
+    if (!ref_full_names(argc, argv, c_valued, c_flags, true)) FAIL("check: accepted a word that is no option");
     if (!a.expected || !a.actual) FAIL("check: accepted without two files");
     if (a.errors < 0) FAIL("check: --errors %" PRId32, a.errors);
     if (a.cycles != 0 && a.cycles != 1) FAIL("check: cycles %d", a.cycles);
@@ -150,7 +186,8 @@ static void check_check(int argc, char **argv)
  * "--", skipping the values of the options that take one; NULL if absent. */
 static const char *vec_option(int argc, char **argv, const char *name)
 {
-    static const char *const valued[] = { "-o", "--output", "--samples", "--rule", "--size", "--formats", "--interfaces" };
+    static const char *const valued[] = { "-o", "--output", "--samples", "--rule", "--size", "--formats", "--interfaces",
+                                          "--filter", "--subpixel" };
     const size_t n = strlen(name);
     for (int i = 1; i < argc && strcmp(argv[i], "--") != 0; i++) {
         if (strncmp(argv[i], name, n) == 0 && argv[i][n] == '=') return argv[i] + n + 1;
@@ -193,10 +230,15 @@ static void check_vectors(int argc, char **argv)
     if (has_help(argc, argv) != (rc == EF_CLI_EXIT_OK)) FAIL("vectors: --help and exit %d disagree", rc);
     if (rc != -1 && rc != EF_CLI_EXIT_OK && rc != EF_CLI_EXIT_USAGE) FAIL("vectors: exit code %d", rc);
     if (rc != -1) return;
+    static const char *const v_valued[] = { "-o", "--output", "--samples", "--rule", "--size", "--formats",
+                                            "--interfaces", "--filter", "--subpixel", NULL };
+    static const char *const v_flags[] = { "--force", "--dump", "--rtl-headers", NULL };
+    if (!ref_full_names(argc, argv, v_valued, v_flags, true)) FAIL("vectors: accepted a word that is no option");
     if (a.rtl_headers) {    /* --rtl-headers -o DIR [--force], nothing else */
         if (a.input || !a.dir || !a.dir[0] || vec_option(argc, argv, "--samples") || vec_option(argc, argv, "--rule") ||
             vec_option(argc, argv, "--size") || vec_option(argc, argv, "--formats") ||
-            vec_option(argc, argv, "--interfaces") || a.dump)
+            vec_option(argc, argv, "--interfaces") || vec_option(argc, argv, "--filter") ||
+            vec_option(argc, argv, "--subpixel") || a.dump)
             FAIL("vectors: --rtl-headers accepted with an input or another option");
         if (a.rtl_headers != b.rtl_headers || a.dir != b.dir || a.force != b.force) FAIL("vectors: two parses differ");
         return;
