@@ -19,10 +19,16 @@ RTL="$R/ef_raster.v $R/ef_dec.v $R/ef_setup.v $R/ef_div.v $R/ef_etm.v $R/ef_aet.
 jobs=${EF_RTL_JOBS:-2}
 work=$(mktemp -d "${TMPDIR:-/tmp}/edgeflag-rtlregress.XXXXXX") || exit 1
 [ -n "${EF_RTL_KEEP:-}" ] || trap 'rm -rf "$work"' EXIT
+# Two builds per sample count: 2048 x 2048 for most cases, and the full 16384 x 16384 canvas for
+# the random cases' long thin canvases (up to 16384 wide or tall, at most 916,731 pixels; the frame
+# memory model holds 2^21): the H_MAX-bit row bitmap makes the big build slower, so only those use it.
 for ns in 8 16 32; do
     verilator --binary --timing -O2 -Wno-fatal -Wno-WIDTH --Mdir "$work/vl_$ns" --top-module tb_raster \
         -GNS=$ns -GW_MAX=2048 -GH_MAX=2048 -GE_MAX=8192 -GFB_BITS=20 -GCMD_MAX=1048576 \
         "$root/tests/rtl/tb_raster.v" $RTL >"$work/build_$ns.log" 2>&1 || { tail "$work/build_$ns.log"; exit 1; }
+    verilator --binary --timing -O2 -Wno-fatal -Wno-WIDTH --Mdir "$work/vlw_$ns" --top-module tb_raster \
+        -GNS=$ns -GW_MAX=16384 -GH_MAX=16384 -GE_MAX=8192 -GFB_BITS=21 -GCMD_MAX=1048576 \
+        "$root/tests/rtl/tb_raster.v" $RTL >"$work/buildw_$ns.log" 2>&1 || { tail "$work/buildw_$ns.log"; exit 1; }
 done
 "$EF" gen -o "$work/gen" >/dev/null || exit 1
 one() {   # one NAME INPUT NS RULE SIZE
@@ -30,8 +36,14 @@ one() {   # one NAME INPUT NS RULE SIZE
     mkdir -p "$a"
     [ "$4" != scene ] && args+=(--rule "$4"); [ "$5" != - ] && args+=(--size "$5")
     "$EF" vectors "$2" -o "$d" --samples "$3" "${args[@]}" --formats hex >/dev/null 2>&1 || { echo "FAIL $1: vectors"; return; }
+    local vl=vl_$3 wh
+    wh=$(grep -m1 '^scene ' "$2" 2>/dev/null)
+    if [ -n "$wh" ] && { [ "$(echo "$wh" | cut -d' ' -f2)" -gt 2048 ] || [ "$(echo "$wh" | cut -d' ' -f3)" -gt 2048 ] ||
+            [ $(( $(echo "$wh" | cut -d' ' -f2) * $(echo "$wh" | cut -d' ' -f3) )) -gt 786432 ]; }; then
+        vl=vlw_$3
+    fi
     t0=$(date +%s.%N)
-    out=$("$work/vl_$3/Vtb_raster" +cmd="$d/cmd.stim.hex" +out="$a/" 2>&1)
+    out=$("$work/$vl/Vtb_raster" +cmd="$d/cmd.stim.hex" +out="$a/" 2>&1)
     t1=$(date +%s.%N)
     echo "$out" | grep -q '^tb_raster: PASS' || { echo "FAIL $1: $(echo "$out" | head -n 1)"; rm -rf "$d"; return; }
     "$EF" check "$d" "$a" --cycles --errors 1 >/dev/null 2>&1 || { echo "FAIL $1: edgeflag check --cycles"; return; }
