@@ -4,7 +4,9 @@
  * Blocks, in pipeline order, one file each:
  *   edge_setup.c   polygon edges -> DDA records (docs/spec.md section 5)
  *   edge_table.c   one slot per pixel row, unsorted lists; the active edge table
- *   plotter.c      exact DDA + n-rooks offset into the scanline buffer (6.1-6.4)
+ *   plotter.c      exact DDA + n-rooks offset into the scanline buffer (6.1-6.4);
+ *                  its speed devices, behind EF_PLOT_FAST (plotter.h), in
+ *                  plotter_fast.h, plotter_sse2.h, plotter_crowd.h
  *   fill_evenodd.c XOR accumulation with mask tracking (7.2)
  *   fill_nonzero.c packed 7-bit winding accumulation with mask tracking (7.2)
  *   rasterize.c    the scanline loop that runs the blocks in order

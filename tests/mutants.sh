@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Proves the oracle test can fail: builds the model with each injected bug
 # (EF_MUTATION: 1 = one wrong n-rooks offset, 2 = off-by-one x rounding, both
-# in plotter.c; 3 = every sample shifted by half a sub-pixel, ctx.c) and
+# in the plotter, model/plotter.h; 3 = every sample shifted by half a sub-pixel, ctx.c) and
 # demands that tests/oracle_check reports mismatches.  Mutant 3 must also fail
 # tests/area_check, the exact-area comparison that guards the spec itself.
 set -u
