@@ -77,9 +77,13 @@ static double now_s(void)
     return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
 }
 
-static int hx_of(int err)
+int ef_host_exit_code(int err)
 {
     switch (err) {
+    case EF_HOST_EINVAL:
+        return EF_HX_USAGE;
+    case EF_HOST_EUNSUPPORTED:
+        return EF_HX_NOBOARD;
     case EF_HOST_ENODEV:
     case EF_HOST_ETIMEDOUT:
         return EF_HX_LOST;
@@ -149,7 +153,7 @@ static int link_fail(hl *h, const char *what, int err)
     const char *d = h->ops->detail ? h->ops->detail(h->l) : NULL;
     fprintf(stderr, "edgeflag-host: %s failed: %s%s%s\n", what, ef_host_strerror(err), d && *d ? ": " : "",
             d ? d : "");
-    return hx_of(err);
+    return ef_host_exit_code(err);
 }
 
 static int lost(hl *h, int err)
@@ -326,7 +330,7 @@ static int take(hl *h, const ef_frame *f, int *progress)
             if (!h->resend_asked) {
                 const int r = send_ackr(h, 1);
                 if (r >= 1000)
-                    return hx_of(-(r - 1000)) == EF_HX_LOST ? lost(h, -(r - 1000)) : EF_HX_BOARD;
+                    return ef_host_exit_code(-(r - 1000)) == EF_HX_LOST ? lost(h, -(r - 1000)) : EF_HX_BOARD;
                 if (r)
                     return r;
             }
@@ -640,7 +644,7 @@ static int run(hl *h)
     while (!h->done) {
         while (h->next <= h->last_seq && h->next - h->base < h->window) {
             if ((r = put_frame(h, h->next)) < 0)
-                return hx_of(r) == EF_HX_LOST ? lost(h, r) : link_fail(h, "sending", r);
+                return ef_host_exit_code(r) == EF_HX_LOST ? lost(h, r) : link_fail(h, "sending", r);
             h->next++;
         }
         const int can_send = h->next <= h->last_seq && h->next - h->base < h->window;
@@ -649,7 +653,7 @@ static int run(hl *h)
             h->rlen = 0;                       /* cannot happen with frames <= FRAME_MAX; be safe */
         r = h->ops->read(h->l, h->rbuf + h->rlen, h->rcap - h->rlen, &got, can_send ? 0 : 10);
         if (r < 0 && r != EF_HOST_ETIMEDOUT)
-            return hx_of(r) == EF_HX_LOST ? lost(h, r) : link_fail(h, "receiving", r);
+            return ef_host_exit_code(r) == EF_HX_LOST ? lost(h, r) : link_fail(h, "receiving", r);
         h->rlen += got;
         int progress = 0;
         if ((code = take_bytes(h, &progress)) != 0)

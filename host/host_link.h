@@ -28,6 +28,10 @@ enum {
     EF_HX_INTERNAL = 70
 };
 
+/* The exit code for a transport's EF_HOST_E* error (the one mapping, for
+ * opening a link and for a run). */
+int ef_host_exit_code(int err);
+
 /* The board's identify answer, decoded. */
 typedef struct ef_host_ident {
     unsigned protocol, window;

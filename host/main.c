@@ -92,15 +92,6 @@ static const ef_transport_ops *find_transport(const char *name)
     return NULL;
 }
 
-static int parse_uint(const char *s, unsigned long long max, unsigned long long *v)
-{
-    char *end;
-    if (!s || !*s || *s == '-' || *s == '+')
-        return -1;
-    *v = strtoull(s, &end, 10);
-    return *end || *v > max ? -1 : 0;
-}
-
 static int parse(int argc, char **argv, args *a)
 {
     enum { O_TRANSPORT = 256, O_DEVICE, O_VIDPID, O_TSIZE, O_INFLIGHT, O_CHIP, O_LINES, O_TIMEOUT, O_SIMSTATE,
@@ -122,7 +113,7 @@ static int parse(int argc, char **argv, args *a)
         { "json", no_argument, 0, O_JSON },                 { "help", no_argument, 0, O_HELP },
         { 0, 0, 0, 0 }
     };
-    unsigned long long v;
+    int32_t v;   /* ef_cli_parse_int: digits only, within the bounds (cli/args.c) */
     opterr = 0;
     optind = 1;
     int c;
@@ -143,19 +134,19 @@ static int parse(int argc, char **argv, args *a)
             break;
         }
         case O_TSIZE:
-            if (parse_uint(optarg, 1u << 24, &v) || v < 512 || v % 512)
+            if (!ef_cli_parse_int(optarg, 512, 1 << 24, &v) || v % 512)
                 return usage_error("--transfer-size must be a multiple of 512 up to 16 MiB, not '%s'", optarg);
             a->link.transfer_size = (unsigned)v;
             break;
         case O_INFLIGHT:
-            if (parse_uint(optarg, 256, &v) || v < 1)
+            if (!ef_cli_parse_int(optarg, 1, 256, &v))
                 return usage_error("--in-flight must be 1..256, not '%s'", optarg);
             a->link.in_flight = (unsigned)v;
             break;
         case O_CHIP: a->link.chip = optarg; break;
         case O_LINES: a->link.lines = optarg; break;
         case O_TIMEOUT:
-            if (parse_uint(optarg, 3600000, &v) || v < 1)
+            if (!ef_cli_parse_int(optarg, 1, 3600000, &v))
                 return usage_error("--timeout must be 1..3600000 ms, not '%s'", optarg);
             a->link.timeout_ms = (int)v;
             break;
@@ -173,7 +164,7 @@ static int parse(int argc, char **argv, args *a)
         case O_RESULTS: a->results = optarg; break;
         case O_RESUME: a->resume = 1; break;
         case O_FRAMECMDS:
-            if (parse_uint(optarg, EF_BOARD_PAYLOAD_MAX / EF_BOARD_CMD_BYTES, &v) || v < 1)
+            if (!ef_cli_parse_int(optarg, 1, EF_BOARD_PAYLOAD_MAX / EF_BOARD_CMD_BYTES, &v))
                 return usage_error("--frame-cmds must be 1..5041, not '%s'", optarg);
             a->frame_cmds = (unsigned)v;
             break;
@@ -183,9 +174,9 @@ static int parse(int argc, char **argv, args *a)
         case O_ERRORS: a->errors = optarg; break;
         case O_TRANS: a->transactions = 1; break;
         case O_MIB:
-            if (parse_uint(optarg, 65536, &v) || v < 1)
+            if (!ef_cli_parse_int(optarg, 1, 65536, &v))
                 return usage_error("--mib must be 1..65536, not '%s'", optarg);
-            a->bench_bytes = v << 20;
+            a->bench_bytes = (uint64_t)v << 20;
             break;
         case O_QUIET: a->quiet = 1; break;
         case O_JSON: a->json = 1; break;
@@ -249,14 +240,7 @@ static int open_link(const args *a, const ef_transport_ops **ops, ef_link **l)
     const int r = (*ops)->open(l, &a->link, err, sizeof err);
     if (r < 0) {
         fprintf(stderr, "edgeflag-host: %s: %s%s%s\n", (*ops)->name, ef_host_strerror(r), err[0] ? ": " : "", err);
-        switch (r) {
-        case EF_HOST_EINVAL: return EF_HX_USAGE;
-        case EF_HOST_EACCESS: return EF_HX_ACCESS;
-        case EF_HOST_ENOTFOUND: case EF_HOST_EAMBIGUOUS: case EF_HOST_EUNSUPPORTED: return EF_HX_NOBOARD;
-        case EF_HOST_ENODEV: return EF_HX_LOST;
-        case EF_HOST_ENOMEM: return EF_HX_INTERNAL;
-        default: return EF_HX_BOARD;
-        }
+        return ef_host_exit_code(r);
     }
     return 0;
 }
@@ -438,7 +422,7 @@ static int cmd_bench(args *a)
     ops->close(l);
     if (e < 0) {
         fprintf(stderr, "edgeflag-host: bench over %s: %s\n", ops->name, ef_host_strerror(e));
-        return e == EF_HOST_ENODEV || e == EF_HOST_ETIMEDOUT ? EF_HX_LOST : EF_HX_BOARD;
+        return ef_host_exit_code(e);
     }
     if (a->json)
         printf("{\"transport\": \"%s\"", ops->name);
