@@ -10,6 +10,7 @@
 #define F(n, w) { n, w, 0 }
 #define S(n, w) { n, w, 1 }
 
+/* clang-format off: a table laid out by hand */
 static const ef_iface_desc ifaces[EF_IF_COUNT] = {
     { "cmd", "host", "DEC", 100, 5, { F("op", 4), S("a", 24), S("b", 24), S("c", 24), S("d", 24) } },
     { "seg", "DEC", "SETUP", 97, 5, { F("eos", 1), S("xa", 24), S("ya", 24), S("xb", 24), S("yb", 24) } },
@@ -21,6 +22,7 @@ static const ef_iface_desc ifaces[EF_IF_COUNT] = {
     { "span", "FILL", "COV", 75, 4, { F("y", 14), F("x", 14), F("len", 15), F("mask", 32) } },
     { "pix", "COV", "memory", 68, 4, { F("y", 14), F("x", 14), F("alpha", 8), F("rgba", 32) } },
 };
+/* clang-format on */
 
 static const char *const op_names[] = { NULL, "FRAME", "SHAPE", "EDGE", "SHAPE_END", "FRAME_END" };
 

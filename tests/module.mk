@@ -40,6 +40,13 @@ test-build: lib cli $(UNIT_BIN) $(ORACLE_CHECK) $(ORACLE_SELFTEST) $(TOOL_BIN) $
 	bash tests/install_check.sh $(BUILD)
 	@bash tests/layers/run.sh $(BUILD)
 
+# The house style (.clang-format, docs/source.md "Formatting"): `make format` applies it.
+.PHONY: test-format format
+test-format:
+	@bash tools/format.sh --check
+format:
+	@bash tools/format.sh
+
 test-unit: $(UNIT_BIN)
 	@set -e; for t in $(UNIT_BIN); do echo "== $$t"; EF_SVG=$(EF_SVG) $$t; done
 

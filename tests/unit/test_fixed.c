@@ -30,6 +30,7 @@
 #else
 /* The subset of cmocka used below, so the tests also run where the library
  * is not installed for the target (-m32). */
+/* clang-format off: the shim keeps cmocka's one-line macros */
 struct CMUnitTest { const char *name; void (*test_func)(void **state); };
 #define cmocka_unit_test(f) { #f, f }
 static const char *shim_test_name;
@@ -42,6 +43,7 @@ static const char *shim_test_name;
         if (a_ != b_) fail_msg("%s:%d: %llu != %llu", __FILE__, __LINE__, a_, b_); } while (0)
 #define assert_string_equal(a, b) do { if (strcmp((a), (b)) != 0) \
         fail_msg("%s:%d: \"%s\" != \"%s\"", __FILE__, __LINE__, (a), (b)); } while (0)
+/* clang-format on */
 static int shim_run(const struct CMUnitTest *t, size_t n)
 {
     for (size_t i = 0; i < n; i++) {
@@ -84,6 +86,7 @@ static int64_t rnd_i64(void)
 }
 static uint64_t rnd_u64(void) { return rnd64() >> (rnd64() % 64); }
 
+/* clang-format off: a table laid out by hand */
 static const int64_t CORNERS[] = {
     0, 1, -1, 2, -2, 3, -3, 7, -7, 0x7FFFFFFF, -0x7FFFFFFF, (int64_t)0x80000000u, -(int64_t)0x80000000u,
     (int64_t)0xFFFFFFFFu, -(int64_t)0xFFFFFFFFu, INT64_C(0x100000000), -INT64_C(0x100000000),
@@ -91,6 +94,7 @@ static const int64_t CORNERS[] = {
     INT64_MIN, INT64_MIN + 1, INT64_C(0x4000000000000000), -INT64_C(0x4000000000000000),
     INT64_C(0x0000FFFFFFFFFFFF), INT64_C(0x123456789ABCDEF0), -INT64_C(0x0FEDCBA987654321),
 };
+/* clang-format on */
 #define NCORNERS (sizeof CORNERS / sizeof CORNERS[0])
 
 /* ------------------------------------------------------------------------

@@ -267,6 +267,7 @@ static void fields(void **state)
  * short enough to be field names).  `edge` was one, hence `seg` and `eid`. */
 static void names_not_keywords(void **state)
 {
+    /* clang-format off: a table laid out by hand */
     static const char *const kw[] = {
         "always", "and", "assign", "automatic", "begin", "buf", "bufif0", "bufif1", "case", "casex", "casez",
         "cell", "cmos", "config", "deassign", "default", "defparam", "design", "disable", "edge", "else", "end",
@@ -289,6 +290,7 @@ static void names_not_keywords(void **state)
         "struct", "super", "this", "throughout", "type", "typedef", "union", "unique", "var", "virtual",
         "void", "wait_order", "weak", "with", "within",
     };
+    /* clang-format on */
     (void)state;
     for (int i = 0; i < EF_IF_COUNT; i++) {
         const ef_iface_desc *d = ef_iface_get(i);
