@@ -48,10 +48,12 @@
             break;                                                                \
         DDA_STEP();                                                               \
     }
+/* clang-format off: eight samples a row, as the macro unrolls them */
 #define ROW_SAMPLES8(B, PLOT)                                                     \
     ROW_SAMPLE(B + 0, PLOT) ROW_SAMPLE(B + 1, PLOT) ROW_SAMPLE(B + 2, PLOT)      \
     ROW_SAMPLE(B + 3, PLOT) ROW_SAMPLE(B + 4, PLOT) ROW_SAMPLE(B + 5, PLOT)      \
     ROW_SAMPLE(B + 6, PLOT) ROW_SAMPLE(B + 7, PLOT)
+/* clang-format on */
 #define ROW_FROM0(PLOT)                                                           \
     do {                                                                          \
         ROW_SAMPLES8(0, PLOT) ROW_SAMPLES8(8, PLOT)                               \
