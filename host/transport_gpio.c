@@ -30,7 +30,7 @@ enum {
     SIG_Q0 = 12, SIG_READY = 20, SIG_AVAIL, SIG_DONE, SIG_ERR,
     SIG_COUNT, SIG_OUTPUTS = 12, SIG_INPUTS = 12
 };
-/* clang-format off: a table laid out by hand */
+/* clang-format off */
 static const char *const sig_name[SIG_COUNT] = {
     "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7", "clk", "valid", "take", "ctl",
     "q0", "q1", "q2", "q3", "q4", "q5", "q6", "q7", "ready", "avail", "done", "err"

@@ -48,7 +48,8 @@
             break;                                                                \
         DDA_STEP();                                                               \
     }
-/* clang-format off: eight samples a row, as the macro unrolls them */
+/* Eight samples a row, as the macro unrolls them. */
+/* clang-format off */
 #define ROW_SAMPLES8(B, PLOT)                                                     \
     ROW_SAMPLE(B + 0, PLOT) ROW_SAMPLE(B + 1, PLOT) ROW_SAMPLE(B + 2, PLOT)      \
     ROW_SAMPLE(B + 3, PLOT) ROW_SAMPLE(B + 4, PLOT) ROW_SAMPLE(B + 5, PLOT)      \

@@ -10,7 +10,7 @@
 #define F(n, w) { n, w, 0 }
 #define S(n, w) { n, w, 1 }
 
-/* clang-format off: a table laid out by hand */
+/* clang-format off */
 static const ef_iface_desc ifaces[EF_IF_COUNT] = {
     { "cmd", "host", "DEC", 100, 5, { F("op", 4), S("a", 24), S("b", 24), S("c", 24), S("d", 24) } },
     { "seg", "DEC", "SETUP", 97, 5, { F("eos", 1), S("xa", 24), S("ya", 24), S("xb", 24), S("yb", 24) } },

@@ -303,7 +303,7 @@ static ef_status length_attr(svg_ctx *c, uint32_t node, const char *attr, axis a
 
 static bool prop_known(const char *n, size_t len)
 {
-    /* clang-format off: a table laid out by hand */
+    /* clang-format off */
     static const char *const names[] = { "fill", "fill-opacity", "fill-rule", "opacity", "stroke", "color",
                                          "visibility", "display", "clip-path", "mask", "filter", "stop-color",
                                          "stop-opacity" };
@@ -882,7 +882,7 @@ static ef_status walk_children(svg_ctx *c, uint32_t node, const svg_frame *f, un
 
 static bool never_rendered(const char *t)
 {
-    /* clang-format off: a table laid out by hand */
+    /* clang-format off */
     static const char *const names[] = { "defs", "symbol", "linearGradient", "radialGradient", "stop", "pattern",
                                          "marker", "metadata", "title", "desc", "style", "script", "font",
                                          "font-face", "glyph", "missing-glyph", "view", "cursor", "animate",

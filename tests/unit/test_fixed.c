@@ -30,7 +30,8 @@
 #else
 /* The subset of cmocka used below, so the tests also run where the library
  * is not installed for the target (-m32). */
-/* clang-format off: the shim keeps cmocka's one-line macros */
+/* The shim keeps cmocka's one-line macros. */
+/* clang-format off */
 struct CMUnitTest { const char *name; void (*test_func)(void **state); };
 #define cmocka_unit_test(f) { #f, f }
 static const char *shim_test_name;
@@ -86,7 +87,7 @@ static int64_t rnd_i64(void)
 }
 static uint64_t rnd_u64(void) { return rnd64() >> (rnd64() % 64); }
 
-/* clang-format off: a table laid out by hand */
+/* clang-format off */
 static const int64_t CORNERS[] = {
     0, 1, -1, 2, -2, 3, -3, 7, -7, 0x7FFFFFFF, -0x7FFFFFFF, (int64_t)0x80000000u, -(int64_t)0x80000000u,
     (int64_t)0xFFFFFFFFu, -(int64_t)0xFFFFFFFFu, INT64_C(0x100000000), -INT64_C(0x100000000),

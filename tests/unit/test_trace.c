@@ -267,7 +267,7 @@ static void fields(void **state)
  * short enough to be field names).  `edge` was one, hence `seg` and `eid`. */
 static void names_not_keywords(void **state)
 {
-    /* clang-format off: a table laid out by hand */
+    /* clang-format off */
     static const char *const kw[] = {
         "always", "and", "assign", "automatic", "begin", "buf", "bufif0", "bufif1", "case", "casex", "casez",
         "cell", "cmos", "config", "deassign", "default", "defparam", "design", "disable", "edge", "else", "end",
