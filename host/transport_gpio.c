@@ -25,12 +25,12 @@
 
 /* The bus's signals (docs/board-gpio.md section 2).  Outputs first, in the
  * order of the output request (bit i of ef_gpiol_set), then inputs. */
+/* clang-format off */
 enum {
     SIG_D0 = 0, SIG_CLK = 8, SIG_VALID, SIG_TAKE, SIG_CTL,
     SIG_Q0 = 12, SIG_READY = 20, SIG_AVAIL, SIG_DONE, SIG_ERR,
     SIG_COUNT, SIG_OUTPUTS = 12, SIG_INPUTS = 12
 };
-/* clang-format off */
 static const char *const sig_name[SIG_COUNT] = {
     "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7", "clk", "valid", "take", "ctl",
     "q0", "q1", "q2", "q3", "q4", "q5", "q6", "q7", "ready", "avail", "done", "err"

@@ -439,12 +439,14 @@ static void test_checked_mul(void **state)
 static void test_div_u128(void **state)
 {
     (void)state;
+    /* clang-format off */
     static const uint64_t D[] = {
         1, 2, 3, 10, 0xFFFFFFFFu, UINT64_C(0x100000000), UINT64_C(0x100000001), UINT64_C(0x1FFFFFFFF),
         UINT64_C(0x8000000000000000), UINT64_C(0x8000000000000001), UINT64_C(0xFFFFFFFFFFFFFFFF),
         UINT64_C(0xFFFFFFFF00000000), UINT64_C(0x80000000FFFFFFFF), UINT64_C(0x7FFFFFFFFFFFFFFF),
         UINT64_C(0x00000001FFFFFFFF), UINT64_C(0x8000000080000000), UINT64_C(0xFFFFFFFE00000001),
     };
+    /* clang-format on */
     for (int i = 0; i < 60000; i++) {
         uint64_t d = i < 20000 ? D[(size_t)i % (sizeof D / sizeof D[0])] : rnd_u64();
         if (d == 0) d = 1;
@@ -1227,9 +1229,11 @@ static void test_divmod_floor_i32(void **state)
 static void test_wrap_i64(void **state)
 {
     (void)state;
+    /* clang-format off */
     static const uint64_t us[] = { 0, 1, (uint64_t)INT64_MAX, (uint64_t)INT64_MAX + 1u, UINT64_MAX, UINT64_MAX - 1u,
                                    UINT64_C(0x8000000000000001), UINT64_C(0x0123456789ABCDEF),
                                    UINT64_C(0xFEDCBA9876543210) };
+    /* clang-format on */
     for (size_t i = 0; i < sizeof us / sizeof us[0]; i++) {
         int64_t v = ef_wrap_i64(us[i]);
         assert_true((uint64_t)v == us[i]);   /* the conversion back is defined: modulo 2^64 */
