@@ -58,6 +58,10 @@ void bscene_set_rule(bscene *s, int rule);
 void bscene_free(bscene *s);
 /* Recomputes the derived fields (max_shape_*, has_evenodd) after building. */
 void bscene_finish(bscene *s);
+/* Puts an opaque white rectangle, larger than the canvas in every frame, under
+ * the scene as its first shape and appends "_white" to its name.  -1: out of
+ * memory (the scene is unchanged). */
+int bscene_add_background(bscene *s);
 /* peerbench SPEC section 3: fit into W x H, rotate k*0.1 degree about the
  * canvas centre, move (0.05k, 0.03k) px, snap to 1/256 px.  out has
  * s->npoints entries. */

@@ -10,9 +10,13 @@
  *   efbench profile CASE [--size WxH] [--renderer ef8] [--frames N]   (for callgrind)
  *   efbench render CASE [--size WxH] [--renderer R] [--frame K] -o OUT.png
  *
- * CASE is PATH[@evenodd|@nonzero]: an SVG or peerbench .txt/.scene file (or
- * the word `text` for the DejaVu paragraph), optionally with every shape's
- * fill rule overridden so that all renderers fill with the same rule.
+ * CASE is PATH[@evenodd|@nonzero][+white]: an SVG or peerbench .txt/.scene
+ * file (or the word `text` for the DejaVu paragraph), optionally with every
+ * shape's fill rule overridden so that all renderers fill with the same rule,
+ * and optionally drawn over an opaque white background (the scene's name gets
+ * "_white"): how LCD text is drawn, and where the RGB channel offsets show as
+ * colour fringes (on a transparent canvas black text's premultiplied colour is
+ * zero and only alpha, which comes from G, is stored).
  *
  * Protocol (run): every scene is fitted to each size and rendered for
  * --frames frames while it rotates 0.1 degree and moves (0.05, 0.03) px per
@@ -116,7 +120,12 @@ static void load_case(bcase *c, const char *spec)
 {
     char path[1024], err[600];
     snprintf(path, sizeof path, "%s", spec);
-    int rule = -1;
+    int rule = -1, white = 0;
+    size_t len = strlen(path);
+    if (len > 6 && !strcmp(path + len - 6, "+white")) {
+        white = 1;
+        path[len - 6] = '\0';
+    }
     char *at = strrchr(path, '@');
     if (at) {
         if (!strcmp(at + 1, "evenodd"))
@@ -132,7 +141,9 @@ static void load_case(bcase *c, const char *spec)
                                    : bscene_load(&c->sc, path, FIT_W, FIT_H, err, sizeof err);
     if (rc)
         die(err, NULL);
-    bscene_set_rule(&c->sc, rule);
+    if (white && bscene_add_background(&c->sc))
+        die("out of memory", NULL);
+    bscene_set_rule(&c->sc, rule);   /* the background too: a rectangle fills alike under both rules */
     int eo = 0, nz = 0;
     for (uint32_t i = 0; i < c->sc.nshapes; i++)
         *(c->sc.shapes[i].rule == B_EVENODD ? &eo : &nz) += 1;

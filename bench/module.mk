@@ -52,7 +52,7 @@ BENCH_PAPER := star siemens_star circles random checkers square_basic square_man
 BENCH_CASES = $(foreach s,$(BENCH_REAL),$(SVGDIR)/$(s).svg@nonzero $(SVGDIR)/$(s).svg@evenodd) \
               text@nonzero text@evenodd \
               $(foreach s,$(BENCH_PAPER),$(BENCH_SCENES)/paper_$(s)_nonzero.txt $(BENCH_SCENES)/paper_$(s)_evenodd.txt)
-BENCH_QUALITY_CASES = $(BENCH_SCENES)/star64.txt $(SVGDIR)/lion.svg $(SVGDIR)/tiger.svg text@nonzero
+BENCH_QUALITY_CASES = $(BENCH_SCENES)/star64.txt $(SVGDIR)/lion.svg $(SVGDIR)/tiger.svg text@nonzero text@nonzero+white
 
 .PHONY: bench bench-run bench-quick bench-quick-run bench-build deps-bench
 deps-bench:

@@ -112,6 +112,48 @@ int bscene_load(bscene *s, const char *path, int fit_w, int fit_h, char *err, si
 
 void bscene_finish(bscene *s) { finish(s); }
 
+int bscene_add_background(bscene *s)
+{
+    bshape *shapes = malloc(((size_t)s->nshapes + 1) * sizeof *shapes);
+    uint32_t *start = malloc(((size_t)s->ncontours + 2) * sizeof *start);
+    bpoint *pts = malloc(((size_t)s->npoints + 4) * sizeof *pts);
+    if (!shapes || !start || !pts) {
+        free(shapes);
+        free(start);
+        free(pts);
+        return -1;
+    }
+    /* Three times the scene's canvas each way: the frame transform turns it by
+     * at most 20 degrees (200 frames) and moves it by 10 px, so the canvas
+     * stays covered in every frame. */
+    const double w = s->w, h = s->h;
+    const bpoint quad[4] = { { -w, -h }, { 2 * w, -h }, { 2 * w, 2 * h }, { -w, 2 * h } };
+    shapes[0] = (bshape){ .rule = B_NONZERO, .r = 255, .g = 255, .b = 255, .a = 255, .first = 0, .ncontours = 1 };
+    for (uint32_t i = 0; i < s->nshapes; i++) {
+        shapes[i + 1] = s->shapes[i];
+        shapes[i + 1].first++;
+    }
+    start[0] = 0;
+    for (uint32_t c = 0; c <= s->ncontours; c++)
+        start[c + 1] = s->start[c] + 4;
+    memcpy(pts, quad, sizeof quad);
+    if (s->npoints)
+        memcpy(pts + 4, s->pts, (size_t)s->npoints * sizeof *pts);
+    free(s->shapes);
+    free(s->start);
+    free(s->pts);
+    s->shapes = shapes;
+    s->start = start;
+    s->pts = pts;
+    s->nshapes++;
+    s->ncontours++;
+    s->npoints += 4;
+    size_t n = strlen(s->name);
+    snprintf(s->name + n, sizeof s->name - n, "_white");
+    finish(s);
+    return 0;
+}
+
 static inline double snap256(double v) { return round(v * 256.0) / 256.0; }
 
 void bscene_frame(const bscene *s, int W, int H, int k, bpoint *out)
