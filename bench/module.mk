@@ -91,10 +91,11 @@ bench-quick-run: $(EFBENCH) $(BENCH_SCENES)/.stamp
 	@mkdir -p $(BENCH_QUICK_OUT)
 	$(EFBENCH) run --sizes 320x240 --frames 3 --repeat 1 --chunk 1 $(BENCH_QUICK_CASES) > $(BENCH_QUICK_OUT)/bench.csv
 	$(EFBENCH) quality --size 160x120 --frame-list 0 --pictures $(BENCH_QUICK_OUT) $(BENCH_SCENES)/star64.txt \
-	    > $(BENCH_QUICK_OUT)/quality.csv
+	    text@evenodd+white > $(BENCH_QUICK_OUT)/quality.csv
 	bash bench/machine.sh $(EFBENCH) > $(BENCH_QUICK_OUT)/machine.txt
 	$(EFBENCH) report --quality $(BENCH_QUICK_OUT)/quality.csv --machine $(BENCH_QUICK_OUT)/machine.txt \
 	    --outdir $(BENCH_QUICK_OUT) --results-md $(BENCH_QUICK_OUT)/RESULTS.md $(BENCH_QUICK_OUT)/bench.csv
 	@for f in $(BENCH_QUICK_OUT)/fig6_*.gp; do gnuplot $$f || exit 1; done
 	@test -s $(BENCH_QUICK_OUT)/fig6_320x240.png && test -s $(BENCH_QUICK_OUT)/fig7_star64.png
+	@grep -q '^text_dejavu_white,evenodd,' $(BENCH_QUICK_OUT)/quality.csv && test -s $(BENCH_QUICK_OUT)/fig7_text_dejavu_white.png
 	@echo "bench-quick: ok ($$(grep -c , $(BENCH_QUICK_OUT)/bench.csv) rows; timings not checked)"
