@@ -21,4 +21,9 @@ plot 'bench/results/fig6_640x480.dat' using 1:3:xtic(2) with points pt 4 ps 1.4 
      'bench/results/fig6_640x480.dat' using 1:6:xtic(2) with points pt 7 ps 1.4 title 'freetype', \
      'bench/results/fig6_640x480.dat' using 1:7:xtic(2) with points pt 8 ps 1.4 title 'stb', \
      'bench/results/fig6_640x480.dat' using 1:9:xtic(2) with points pt 9 ps 1.4 title 'ef16', \
-     'bench/results/fig6_640x480.dat' using 1:10:xtic(2) with points pt 10 ps 1.4 title 'ef32'
+     'bench/results/fig6_640x480.dat' using 1:10:xtic(2) with points pt 10 ps 1.4 title 'ef32', \
+     'bench/results/fig6_640x480.dat' using 1:11:xtic(2) with points pt 11 ps 1.4 title 'ef8t', \
+     'bench/results/fig6_640x480.dat' using 1:12:xtic(2) with points pt 12 ps 1.4 title 'ef16t', \
+     'bench/results/fig6_640x480.dat' using 1:13:xtic(2) with points pt 13 ps 1.4 title 'ef32t', \
+     'bench/results/fig6_640x480.dat' using 1:14:xtic(2) with points pt 14 ps 1.4 title 'ef16rgb', \
+     'bench/results/fig6_640x480.dat' using 1:15:xtic(2) with points pt 15 ps 1.4 title 'ef16trgb'
