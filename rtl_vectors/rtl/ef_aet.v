@@ -159,15 +159,35 @@ module ef_aet #(
     wire [18:0] base = {5'd0, row_now} << LOG2NS;
     wire [18:0] rend = base + NSM1;
 
-    function [13:0] first_occ;     // least set bit
-        input [H_MAX-1:0] v;
-        integer i;
+    // The least set bit of occ as a tree of depth HA = log2(H_MAX) instead
+    // of a priority chain as long as H_MAX (the critical path of the block
+    // in docs/synthesis.md): pass l (1..HA) halves the nodes, each the OR of
+    // its two children and the index of the least set bit below it (the
+    // left, lower child's when it has one; bit l-1 set when it is the
+    // right's).  In place: node j reads nodes 2j and 2j+1, never a node
+    // already rewritten in the same pass.  0 when occ is empty, as before.
+    // (A function with loops, not generate: Verilator unrolls generate loops
+    // and H_MAX reaches 16384.)
+    localparam P = 1 << HA;
+    function [HA-1:0] first_occ;
+        input [H_MAX-1:0] occ_v;
+        reg [P-1:0]    nv;         // node has a set bit
+        reg [P*HA-1:0] ni;         // node's least set bit (HA bits per node)
+        integer lv, j;
         begin
-            first_occ = 14'd0;
-            for (i = H_MAX - 1; i >= 0; i = i - 1)
-                if (v[i]) first_occ = i[13:0];
+            nv = {P{1'b0}};
+            nv[H_MAX-1:0] = occ_v;
+            ni = {(P*HA){1'b0}};
+            for (lv = 1; lv <= HA; lv = lv + 1)
+                for (j = 0; j < (P >> lv); j = j + 1) begin
+                    ni[j*HA +: HA] = nv[2*j] ? ni[(2*j)*HA +: HA]
+                                             : (ni[(2*j+1)*HA +: HA] | ({{(HA-1){1'b0}}, 1'b1} << (lv - 1)));
+                    nv[j] = nv[2*j] | nv[2*j+1];
+                end
+            first_occ = nv[0] ? ni[HA-1:0] : {HA{1'b0}};
         end
     endfunction
+    wire [HA-1:0] ffs_ix = first_occ(occ);
 
     // ------------------------------------------------------------ et_rd
     wire in_rd = (ph == PH_RD) || (row_start && nx_occ);
@@ -251,7 +271,14 @@ module ef_aet #(
     // ------------------------------------------------------------ next row
     wire [13:0] row1 = row + 14'd1;
     wire        occ1 = occ[row1[HA-1:0]];
-    wire [13:0] ffs = first_occ(occ);          // changes only with occ
+    wire [13:0] ffs;                           // changes only with occ
+    generate
+        if (HA < 14) begin : ffs_ext
+            assign ffs = {{(14-HA){1'b0}}, ffs_ix};
+        end else begin : ffs_full
+            assign ffs = ffs_ix[13:0];
+        end
+    endgenerate
     wire [13:0] nx_calc = (aet_cnt != 0) ? row1 : ffs;
     wire        nx_occ_calc = (aet_cnt != 0) ? occ1 : 1'b1;
     wire        shape_end = (aet_cnt == 0) && (occ == {H_MAX{1'b0}});

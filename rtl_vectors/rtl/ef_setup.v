@@ -12,8 +12,9 @@
 //   P2: the dividends A = X0*dY + (Y_r0 - Y0)*dX - 1 (|A| < 2^49) and
 //      h*dX (a shift, |h*dX| < 2^29);
 //   30 non-restoring stages and the floor correction (ef_div, two lanes
-//      side by side: x, e = floor divmod(A, dY) and qs, rs = floor
-//      divmod(h*dX, dY) in the same cycles).
+//      over one divisor pipeline: x, e = floor divmod(A, dY) and qs, rs =
+//      floor divmod(h*dX, dY) in the same cycles; the record's other fields
+//      ride in the divider's block-RAM side-band ring).
 // A dropped edge travels down the pipeline as a bubble (no et_wr); the
 // end-of-shape token (seg eos) leaves as the eos et_wr, every other field 0.
 //
@@ -128,7 +129,7 @@ module ef_setup #(
     reg signed [49:0] p2_a;
     reg signed [29:0] p2_b;
     reg [23:0] p2_dy;
-    reg [78:0] p2_sb;     // eos keep dir slot r0 r1 dy
+    reg [54:0] p2_sb;     // eos keep dir slot r0 r1 (dY travels as the divisor)
 
     always @(posedge clk) begin
         if (rst)
@@ -138,38 +139,36 @@ module ef_setup #(
             p2_a  <= a_w[49:0];
             p2_b  <= hdx;
             p2_dy <= p1_dy;
-            p2_sb <= {p1_eos, p1_keep, p1_dir, slot_w[13:0], p1_r0, p1_r1, p1_dy};
+            p2_sb <= {p1_eos, p1_keep, p1_dir, slot_w[13:0], p1_r0, p1_r1};
         end
     end
 
-    // ------------------------------------------------------- dividers
+    // ------------------------------------------------------- divider
+    // Both divisions of an edge by dY in one two-lane divider (one divisor
+    // pipeline); the side band in its block-RAM ring.
     wire signed [30:0] qa, qb;
-    wire [23:0] ra, rb;
-    wire [78:0] sb;
-    wire        unused_vb;
+    wire [23:0] ra, rb, dy_o;
+    wire [54:0] sb;
     wire [5:0]  unused_qa = qa[30:25];
     wire        unused_qb = qb[30];
-    wire [0:0]  unused_sbb;
 
-    ef_div #(.NW(50), .DW(24), .QB(30), .SBW(79)) u_div_a (
-        .clk(clk), .rst(rst), .en(en), .in_valid(p2_v), .in_n(p2_a), .in_d(p2_dy), .in_sb(p2_sb),
-        .out_valid(div_out_valid), .out_q(qa), .out_r(ra), .out_sb(sb)
-    );
-    ef_div #(.NW(30), .DW(24), .QB(30), .SBW(1)) u_div_b (
-        .clk(clk), .rst(rst), .en(en), .in_valid(p2_v), .in_n(p2_b), .in_d(p2_dy), .in_sb(1'b0),
-        .out_valid(unused_vb), .out_q(qb), .out_r(rb), .out_sb(unused_sbb)
+    ef_div #(.NWA(50), .NWB(30), .DW(24), .QB(30), .SBW(55), .SB_RAM(1)) u_div (
+        .clk(clk), .rst(rst), .en(en), .in_valid(p2_v), .in_na(p2_a), .in_nb(p2_b), .in_d(p2_dy),
+        .in_sb(p2_sb),
+        .out_valid(div_out_valid), .out_qa(qa), .out_ra(ra), .out_qb(qb), .out_rb(rb), .out_d(dy_o),
+        .out_sb(sb)
     );
 
     // ------------------------------------------------------- et_wr
-    wire o_eos = sb[78];
-    wire o_keep = sb[77];
+    wire o_eos = sb[54];
+    wire o_keep = sb[53];
     assign et_wr_valid = div_out_valid && (o_eos || o_keep);
     assign et_wr_eos   = o_eos;
-    assign et_wr_dir   = !o_eos && sb[76];
-    assign et_wr_slot  = o_eos ? 14'd0 : sb[75:62];
-    assign et_wr_r0    = o_eos ? 19'd0 : sb[61:43];
-    assign et_wr_r1    = o_eos ? 19'd0 : sb[42:24];
-    assign et_wr_dy    = o_eos ? 24'd0 : sb[23:0];
+    assign et_wr_dir   = !o_eos && sb[52];
+    assign et_wr_slot  = o_eos ? 14'd0 : sb[51:38];
+    assign et_wr_r0    = o_eos ? 19'd0 : sb[37:19];
+    assign et_wr_r1    = o_eos ? 19'd0 : sb[18:0];
+    assign et_wr_dy    = o_eos ? 24'd0 : dy_o;
     assign et_wr_x     = o_eos ? 25'd0 : qa[24:0];
     assign et_wr_e     = o_eos ? 24'd0 : ra;
     assign et_wr_qs    = o_eos ? 30'd0 : qb[29:0];

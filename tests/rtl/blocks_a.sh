@@ -4,7 +4,7 @@
 # checked cycle for cycle with `edgeflag check --cycles` on its own output:
 #
 #   DEC   (ef_dec.v)              cmd.stim.hex     -> seg    (tests/rtl/tb_dec.v)
-#   SETUP (ef_setup.v + ef_div.v) seg.expected.hex -> et_wr  (tests/rtl/tb_setup.v)
+#   SETUP (ef_setup.v + ef_div.v + ef_slb_ram.v) seg.expected.hex -> et_wr  (tests/rtl/tb_setup.v)
 #   ETM   (ef_etm.v)              et_wr.expected.hex -> et_rd (tests/rtl/tb_etm.v)
 #
 # on two shared SVGs at 40x30 (8/16/32 samples x both rules) and eleven
@@ -21,7 +21,7 @@
 
 RTLA=$root/rtl_vectors/rtl
 A_DEC="$RTLA/ef_dec.v"
-A_SETUP="$RTLA/ef_setup.v $RTLA/ef_div.v"
+A_SETUP="$RTLA/ef_setup.v $RTLA/ef_div.v $RTLA/ef_slb_ram.v"
 A_ETM="$RTLA/ef_etm.v $RTLA/ef_slb_ram.v"
 inc=$work/inc
 if ! "$EF" vectors --rtl-headers -o "$inc" >"$work/logs/rtl_headers.log" 2>&1 ||
