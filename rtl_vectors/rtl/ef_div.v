@@ -25,7 +25,7 @@
 // DW + 1 + QB bits per lane instead of a full-width remainder plus a digit
 // word, and its adder is DW + 1 bits, not DW + QB + 2.
 //
-// The caller guarantees |n| < d * 2^QB (SETUP: |A / dY| <= 2^23 + 1 and
+// The caller guarantees |n| < d * 2^QB (SETUP: |M / dY| <= |dX| < 2^24 and
 // |h*dX / dY| < 2^29 with QB = 30); the quotient then fits QB + 1 bits
 // signed.  d = 0 gives garbage (SETUP never uses the result then: a
 // horizontal edge has no record).
