@@ -31,12 +31,12 @@
 // horizontal edge has no record).
 //
 // The side band (SBW bits) travels with the operands, so a caller keeps its
-// other fields beside the division without counting cycles.  With SB_RAM = 1
-// it travels in a block-RAM delay line (ef_slb_ram: a ring of SBD entries,
-// SBD the power of two >= QB + 1, written at wp and read at wp - QB, both
-// only when `en`, the read one cycle ahead for the RAM's registered output)
-// instead of QB + 1 register stages; SB_RAM = 0 keeps the register stages.
-// `en` low freezes every stage (the pipeline's back-pressure).
+// other fields beside the division without counting cycles.  It travels in a
+// block-RAM delay line (ef_slb_ram: a ring of SBD entries, SBD the power of
+// two >= QB + 1, written at wp and read at wp - QB, both only when `en`, the
+// read one cycle ahead for the RAM's registered output) instead of QB + 1
+// register stages.  `en` low freezes every stage (the pipeline's
+// back-pressure).
 //
 // Synthesizable Verilog-2005.
 module ef_div #(
@@ -44,8 +44,7 @@ module ef_div #(
     parameter NWB    = 30,   // lane b dividend bits (signed)
     parameter DW     = 24,   // divisor bits (unsigned, d > 0)
     parameter QB     = 30,   // quotient stages
-    parameter SBW    = 1,    // side-band bits
-    parameter SB_RAM = 1     // 1: side band in a block-RAM ring
+    parameter SBW    = 1     // side-band bits
 ) (
     input  wire                  clk,
     input  wire                  rst,
@@ -173,37 +172,26 @@ module ef_div #(
     assign out_d     = cd;
 
     // ------------------------------------------------------- side band
-    generate
-        if (SB_RAM != 0) begin : sbram
-            localparam SA  = QB + 1 <= 2 ? 1 : QB + 1 <= 4 ? 2 : QB + 1 <= 8 ? 3 :
-                             QB + 1 <= 16 ? 4 : QB + 1 <= 32 ? 5 : QB + 1 <= 64 ? 6 : 7;
-            localparam SBD = 1 << SA;
-            // An entry written at enabled edge n must be in the RAM's output
-            // register after enabled edge n + QB (the correction register's
-            // cycle): read at edge m the entry written at m - QB.
-            reg  [SA-1:0] wp;
-            localparam [SA-1:0] QOFF = QB;
+    localparam SA  = QB + 1 <= 2 ? 1 : QB + 1 <= 4 ? 2 : QB + 1 <= 8 ? 3 :
+                     QB + 1 <= 16 ? 4 : QB + 1 <= 32 ? 5 : QB + 1 <= 64 ? 6 : 7;
+    localparam SBD = 1 << SA;
+    localparam [SA-1:0] QOFF = QB;
+    // An entry written at enabled edge n must be in the RAM's output register
+    // after enabled edge n + QB (the correction register's cycle): read at
+    // edge m the entry written at m - QB.
+    reg  [SA-1:0] wp;
 `ifdef EF_FAULT_SB_RING
-            wire [SA-1:0] rp = wp - QOFF + 1'b1;   // fault build: the ring's offset one short
+    wire [SA-1:0] rp = wp - QOFF + 1'b1;   // fault build: the ring's offset one short
 `else
-            wire [SA-1:0] rp = wp - QOFF;
+    wire [SA-1:0] rp = wp - QOFF;
 `endif
-            always @(posedge clk) begin
-                if (rst)
-                    wp <= {SA{1'b0}};
-                else if (en)
-                    wp <= wp + 1'b1;
-            end
-            ef_slb_ram #(.AW(SA), .DW(SBW), .DEPTH(SBD)) u_sb (
-                .clk(clk), .we(en), .wa(wp), .wd(in_sb), .re(en), .ra(rp), .rd(out_sb)
-            );
-        end else begin : sbreg
-            reg [SBW*(QB+1)-1:0] sr;    // QB + 1 stages, the newest low
-            always @(posedge clk) begin
-                if (en)
-                    sr <= {sr[SBW*QB-1:0], in_sb};
-            end
-            assign out_sb = sr[SBW*(QB+1)-1:SBW*QB];
-        end
-    endgenerate
+    always @(posedge clk) begin
+        if (rst)
+            wp <= {SA{1'b0}};
+        else if (en)
+            wp <= wp + 1'b1;
+    end
+    ef_slb_ram #(.AW(SA), .DW(SBW), .DEPTH(SBD)) u_sb (
+        .clk(clk), .we(en), .wa(wp), .wd(in_sb), .re(en), .ra(rp), .rd(out_sb)
+    );
 endmodule

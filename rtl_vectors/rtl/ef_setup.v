@@ -159,7 +159,7 @@ module ef_setup #(
     wire [5:0]  unused_qa = qa[30:25];
     wire        unused_qb = qb[30];
 
-    ef_div #(.NWA(50), .NWB(30), .DW(24), .QB(30), .SBW(79), .SB_RAM(1)) u_div (
+    ef_div #(.NWA(50), .NWB(30), .DW(24), .QB(30), .SBW(79)) u_div (
         .clk(clk), .rst(rst), .en(en), .in_valid(p2_v), .in_na(p2_a), .in_nb(p2_b), .in_d(p2_dy),
         .in_sb(p2_sb),
         .out_valid(div_out_valid), .out_qa(qa), .out_ra(ra), .out_qb(qb), .out_rb(rb), .out_d(dy_o),
