@@ -3,7 +3,8 @@
 # rtl-synth, not in make test; docs/synthesis.md has the results).
 #
 #   1. every block alone (ef_dec, ef_setup with ef_div, ef_etm, ef_aet with
-#      ef_plot, ef_slb_fill, ef_cov; and SETUP's ef_div alone) and the whole
+#      ef_plot, ef_slb_fill, ef_cov; SETUP's ef_div alone, and SETUP with a
+#      register stage in the divider's place: SETUP does not fit) and the whole
 #      ef_raster at each NS:
 #      Yosys synth_ice40 (with ABC) for W_MAX 320, H_MAX 240, E_MAX 255;
 #      prints SB_LUT4, flip-flops, SB_RAM40_4K and SB_CARRY; fails on a
@@ -22,8 +23,10 @@
 # blocks run at the first), EF_SYNTH_E (255), EF_SYNTH_W (320), EF_SYNTH_H
 # (240), EF_SYNTH_DEVICE (hx8k), EF_SYNTH_PKG (ct256), EF_SYNTH_LCS (7680,
 # the device's logic cells), EF_SYNTH_BRAMS (32), EF_SYNTH_ONLY (a subset of
-# "dec setup div etm aet slb cov raster"; div is SETUP's divider alone, as
-# SETUP instantiates it), EF_SYNTH_OUT (build/synth).
+# "dec setup div setupregs etm aet slb cov raster"; div is SETUP's divider
+# alone, as SETUP instantiates it; setupregs is SETUP with
+# tests/rtl/synth/ef_div_regs.v, a register stage, in the divider's place, to
+# place and time SETUP's own logic), EF_SYNTH_OUT (build/synth).
 # Each configuration's Yosys script, log, stat and nextpnr log stay in
 # EF_SYNTH_OUT; the last line of each result is the exact command.
 set -u
@@ -34,7 +37,7 @@ dev=${EF_SYNTH_DEVICE:-hx8k} pkg=${EF_SYNTH_PKG:-ct256}
 E=${EF_SYNTH_E:-255} W=${EF_SYNTH_W:-320} H=${EF_SYNTH_H:-240}
 lcs=${EF_SYNTH_LCS:-7680} brams=${EF_SYNTH_BRAMS:-32}
 nss=${EF_SYNTH_NS:-8 16}
-only=${EF_SYNTH_ONLY:-dec setup div etm aet slb cov raster}
+only=${EF_SYNTH_ONLY:-dec setup div setupregs etm aet slb cov raster}
 out=${EF_SYNTH_OUT:-$root/build/synth}
 mkdir -p "$out"
 for t in yosys nextpnr-ice40 python3; do
@@ -111,6 +114,7 @@ for b in $only; do
     dec)   synth dec_w${W}_h$H ef_dec "W_MAX=$W H_MAX=$H" "$R/ef_dec.v" ;;
     setup) synth setup_ns$ns0 ef_setup "NS=$ns0" $A_SETUP ;;
     div)   synth div_sb79 ef_div "NWA=50 NWB=30 DW=24 QB=30 SBW=79" "$R/ef_div.v" "$R/ef_slb_ram.v" ;;
+    setupregs) synth setup_divregs_ns$ns0 ef_setup "NS=$ns0" "$R/ef_setup.v" "$root/tests/rtl/synth/ef_div_regs.v" ;;
     etm)   synth etm_ns${ns0}_h${H}_e$E ef_etm "NS=$ns0 H_MAX=$H E_MAX=$E" "$R/ef_etm.v" "$R/ef_slb_ram.v" ;;
     aet)   synth aet_ns${ns0}_h${H}_e$E ef_aet "NS=$ns0 H_MAX=$H E_MAX=$E" "$R/ef_aet.v" "$R/ef_plot.v" "$R/ef_slb_ram.v" ;;
     slb)   synth slb_ns${ns0}_w$W ef_slb_fill "NS=$ns0 W_MAX=$W" "$R/ef_slb_fill.v" "$R/ef_slb_ram.v" ;;
