@@ -16,6 +16,8 @@ if [ "${1:-}" = test ] || [ "${1:-}" = portability ]; then
     # the vectors' real readers: Icarus and Verilator ($readmemh testbenches), GTKWave's
     # vcd2fst/fst2vcd (VCD round trip), xmllint (JUnit XML well-formedness)
     pkgs+=(iverilog verilator gtkwave libxml2-utils)
+    # make rtl-synth (docs/synthesis.md): Yosys synth_ice40, nextpnr-ice40 and its chip database
+    pkgs+=(yosys nextpnr-ice40 fpga-icestorm)
     # the regression flow's shards run under GNU parallel in make test (docs/regress.md)
     pkgs+=(parallel)
     # edgeflag-host's USB transport and its emulated board (test-host-usb, docs/board-usb.md)

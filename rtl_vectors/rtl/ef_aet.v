@@ -159,15 +159,62 @@ module ef_aet #(
     wire [18:0] base = {5'd0, row_now} << LOG2NS;
     wire [18:0] rend = base + NSM1;
 
-    function [13:0] first_occ;     // least set bit
-        input [H_MAX-1:0] v;
-        integer i;
+    // The least set bit of occ in log depth instead of a priority chain as
+    // long as H_MAX (the critical path of the block in docs/synthesis.md),
+    // over groups of 64 rows (the two-level bitmap of docs/microarch.md 3.5):
+    // a per-group "any" (an OR of 64 bits), the least group with a set bit
+    // and the least set bit of that group's word, each by a binary tree
+    // (pass l halves the nodes, each the OR of its two children and the
+    // index of the least set bit below it: the lower child's when it has
+    // one, else the upper's with bit l-1 set; in place, node j reads nodes 2j
+    // and 2j+1, never one already rewritten in the same pass).  0 when occ is
+    // empty, as before.  Written with loops in a function, not generate (a
+    // generate loop is unrolled by Verilator, and H_MAX reaches 16384), over
+    // groups so that a simulator takes about NG + 64 steps per evaluation,
+    // not H_MAX.
+    localparam GA  = 6;                              // 64 rows per group
+    localparam NG  = (H_MAX + 63) / 64;
+    localparam NGA = (NG > 1) ? $clog2(NG) : 1;
+    localparam PG  = 1 << NGA;                       // groups, a power of two
+    localparam [NGA-1:0] G_ONE = 1;
+    localparam [GA-1:0]  B_ONE = 1;
+    /* verilator lint_off UNUSEDSIGNAL */
+    function [HA-1:0] first_occ;
+        input [H_MAX-1:0] occ_v;
+        reg [PG*64-1:0]   w;
+        reg [PG-1:0]      gv;      // group node has a set bit
+        reg [PG*NGA-1:0]  gi;      // its least group with one
+        reg [63:0]        bv;      // bit node of the chosen word has a set bit
+        reg [64*GA-1:0]   bi;      // its least set bit
+        reg [NGA+GA-1:0]  full;
+        integer g, lv, j;
         begin
-            first_occ = 14'd0;
-            for (i = H_MAX - 1; i >= 0; i = i - 1)
-                if (v[i]) first_occ = i[13:0];
+            w = {(PG*64){1'b0}};
+            w[H_MAX-1:0] = occ_v;
+            for (g = 0; g < PG; g = g + 1)
+                gv[g] = |w[g*64 +: 64];
+            gi = {(PG*NGA){1'b0}};
+            for (lv = 1; lv <= NGA; lv = lv + 1)
+                for (j = 0; j < (PG >> lv); j = j + 1) begin
+                    gi[j*NGA +: NGA] = gv[2*j] ? gi[(2*j)*NGA +: NGA]
+                                               : (gi[(2*j+1)*NGA +: NGA] | (G_ONE << (lv - 1)));
+                    gv[j] = gv[2*j] | gv[2*j+1];
+                end
+            bv = w[gi[NGA-1:0]*64 +: 64];
+            bi = {(64*GA){1'b0}};
+            for (lv = 1; lv <= GA; lv = lv + 1)
+                for (j = 0; j < (64 >> lv); j = j + 1) begin
+                    bi[j*GA +: GA] = bv[2*j] ? bi[(2*j)*GA +: GA]
+                                             : (bi[(2*j+1)*GA +: GA] | (B_ONE << (lv - 1)));
+                    bv[j] = bv[2*j] | bv[2*j+1];
+                end
+            // the index is below H_MAX <= 2^HA: the bits above HA are 0
+            full = {gi[NGA-1:0], bi[GA-1:0]};
+            first_occ = gv[0] ? full[HA-1:0] : {HA{1'b0}};
         end
     endfunction
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire [HA-1:0] ffs_ix = first_occ(occ);
 
     // ------------------------------------------------------------ et_rd
     wire in_rd = (ph == PH_RD) || (row_start && nx_occ);
@@ -251,7 +298,14 @@ module ef_aet #(
     // ------------------------------------------------------------ next row
     wire [13:0] row1 = row + 14'd1;
     wire        occ1 = occ[row1[HA-1:0]];
-    wire [13:0] ffs = first_occ(occ);          // changes only with occ
+    wire [13:0] ffs;                           // changes only with occ
+    generate
+        if (HA < 14) begin : ffs_ext
+            assign ffs = {{(14-HA){1'b0}}, ffs_ix};
+        end else begin : ffs_full
+            assign ffs = ffs_ix[13:0];
+        end
+    endgenerate
     wire [13:0] nx_calc = (aet_cnt != 0) ? row1 : ffs;
     wire        nx_occ_calc = (aet_cnt != 0) ? occ1 : 1'b1;
     wire        shape_end = (aet_cnt == 0) && (occ == {H_MAX{1'b0}});

@@ -9,11 +9,13 @@
 //      r1 = ceil((Y1 - c) / h) - 1 as arithmetic shifts (h = 2^(8 - LOG2NS)),
 //      the top and bottom clip, and the drop decision (horizontal, or
 //      r0 > r1 after clipping);
-//   P2: the dividends A = X0*dY + (Y_r0 - Y0)*dX - 1 (|A| < 2^49) and
-//      h*dX (a shift, |h*dX| < 2^29);
+//   P2: the dividends M = (Y_r0 - Y0)*dX - 1 (|M| < 2^48; the spec's
+//      A = X0*dY + M, and X0 is added to M's quotient after the divider)
+//      and h*dX (a shift, |h*dX| < 2^29);
 //   30 non-restoring stages and the floor correction (ef_div, two lanes
-//      side by side: x, e = floor divmod(A, dY) and qs, rs = floor
-//      divmod(h*dX, dY) in the same cycles).
+//      over one divisor pipeline: x, e = floor divmod(A, dY) and qs, rs =
+//      floor divmod(h*dX, dY) in the same cycles; the record's other fields
+//      ride in the divider's block-RAM side-band ring).
 // A dropped edge travels down the pipeline as a bubble (no et_wr); the
 // end-of-shape token (seg eos) leaves as the eos et_wr, every other field 0.
 //
@@ -112,13 +114,19 @@ module ef_setup #(
     end
 
     // ------------------------------------------------------------- P2
-    // t = Y_r0 - Y0 = h*r0 + c - Y0 (|t| < 2^24 + 2^23: the top clip may move
-    // r0 far below Y0), A = X0*dY + t*dX - 1.
+    // t = Y_r0 - Y0 = h*r0 + c - Y0.  The spec's dividend is
+    // A = X0*dY + t*dX - 1; X0*dY is a multiple of dY, so floor(A / dY) =
+    // X0 + floor(M / dY) and A mod dY = M mod dY with M = t*dX - 1: the
+    // divider takes M and X0 is added to its quotient at the end (one
+    // multiplier instead of two).  For an edge that is kept, sample row r0
+    // lies in [Y0, Y1): 0 <= t < dY < 2^24, so t*dX takes t's low 24 bits
+    // unsigned and |M| < 2^48; a dropped edge's t may be anything (the top
+    // clip moves r0 far below Y0), but its division is never used.
     wire signed [27:0] t_w  = $signed({9'd0, p1_r0} << SH) + C - {{4{p1_y0[23]}}, p1_y0};
-    wire signed [51:0] m_a  = $signed({{28{p1_x0[23]}}, p1_x0}) * $signed({28'd0, p1_dy});
-    wire signed [51:0] m_b  = $signed({{24{t_w[27]}}, t_w}) * $signed({{26{p1_dx[25]}}, p1_dx});
-    wire signed [51:0] a_w  = m_a + m_b - 52'sd1;
-    wire [1:0]  unused_a = a_w[51:50];
+    wire [3:0]  unused_t = t_w[27:24];
+    wire signed [49:0] m_w  = $signed({1'b0, t_w[23:0]}) * $signed(p1_dx[24:0]);
+    wire signed [49:0] a_w  = m_w - 50'sd1;
+    wire        unused_dx = p1_dx[25];
     wire signed [29:0] hdx  = $signed({{5{p1_dx[24]}}, p1_dx[24:0]} << SH);   // |h*dX| < 2^29
 
     wire [18:0] slot_w = p1_r0 >> LOG2NS;    // the pixel row of r0
@@ -128,49 +136,49 @@ module ef_setup #(
     reg signed [49:0] p2_a;
     reg signed [29:0] p2_b;
     reg [23:0] p2_dy;
-    reg [78:0] p2_sb;     // eos keep dir slot r0 r1 dy
+    reg [78:0] p2_sb;     // eos keep dir slot r0 r1 X0 (dY travels as the divisor)
 
     always @(posedge clk) begin
         if (rst)
             p2_v <= 1'b0;
         else if (en) begin
             p2_v  <= p1_v;
-            p2_a  <= a_w[49:0];
+            p2_a  <= a_w;
             p2_b  <= hdx;
             p2_dy <= p1_dy;
-            p2_sb <= {p1_eos, p1_keep, p1_dir, slot_w[13:0], p1_r0, p1_r1, p1_dy};
+            p2_sb <= {p1_eos, p1_keep, p1_dir, slot_w[13:0], p1_r0, p1_r1, p1_x0};
         end
     end
 
-    // ------------------------------------------------------- dividers
+    // ------------------------------------------------------- divider
+    // Both divisions of an edge by dY in one two-lane divider (one divisor
+    // pipeline); the side band in its block-RAM ring.
     wire signed [30:0] qa, qb;
-    wire [23:0] ra, rb;
+    wire [23:0] ra, rb, dy_o;
     wire [78:0] sb;
-    wire        unused_vb;
     wire [5:0]  unused_qa = qa[30:25];
     wire        unused_qb = qb[30];
-    wire [0:0]  unused_sbb;
 
-    ef_div #(.NW(50), .DW(24), .QB(30), .SBW(79)) u_div_a (
-        .clk(clk), .rst(rst), .en(en), .in_valid(p2_v), .in_n(p2_a), .in_d(p2_dy), .in_sb(p2_sb),
-        .out_valid(div_out_valid), .out_q(qa), .out_r(ra), .out_sb(sb)
-    );
-    ef_div #(.NW(30), .DW(24), .QB(30), .SBW(1)) u_div_b (
-        .clk(clk), .rst(rst), .en(en), .in_valid(p2_v), .in_n(p2_b), .in_d(p2_dy), .in_sb(1'b0),
-        .out_valid(unused_vb), .out_q(qb), .out_r(rb), .out_sb(unused_sbb)
+    ef_div #(.NWA(50), .NWB(30), .DW(24), .QB(30), .SBW(79)) u_div (
+        .clk(clk), .rst(rst), .en(en), .in_valid(p2_v), .in_na(p2_a), .in_nb(p2_b), .in_d(p2_dy),
+        .in_sb(p2_sb),
+        .out_valid(div_out_valid), .out_qa(qa), .out_ra(ra), .out_qb(qb), .out_rb(rb), .out_d(dy_o),
+        .out_sb(sb)
     );
 
     // ------------------------------------------------------- et_wr
     wire o_eos = sb[78];
     wire o_keep = sb[77];
+    // x = X0 + floor(M / dY), exact modulo 2^25 where x fits (|x| <= 2^23 + 1)
+    wire [24:0] x_w = {sb[23], sb[23:0]} + qa[24:0];
     assign et_wr_valid = div_out_valid && (o_eos || o_keep);
     assign et_wr_eos   = o_eos;
     assign et_wr_dir   = !o_eos && sb[76];
     assign et_wr_slot  = o_eos ? 14'd0 : sb[75:62];
     assign et_wr_r0    = o_eos ? 19'd0 : sb[61:43];
     assign et_wr_r1    = o_eos ? 19'd0 : sb[42:24];
-    assign et_wr_dy    = o_eos ? 24'd0 : sb[23:0];
-    assign et_wr_x     = o_eos ? 25'd0 : qa[24:0];
+    assign et_wr_dy    = o_eos ? 24'd0 : dy_o;
+    assign et_wr_x     = o_eos ? 25'd0 : x_w;
     assign et_wr_e     = o_eos ? 24'd0 : ra;
     assign et_wr_qs    = o_eos ? 30'd0 : qb[29:0];
     assign et_wr_rs    = o_eos ? 24'd0 : rb;

@@ -102,7 +102,7 @@ build_vl() {
         -GNS="$ns" -GW_MAX=$WM -GH_MAX=$HM -GE_MAX=$EM -GFB_BITS=16 "$TB/tb_raster.v" $RTL >"$o/build.log" 2>&1 &&
         echo "RESULT PASS build verilator NS=$ns" || { tail -20 "$o/build.log"; echo "RESULT FAIL build verilator NS=$ns"; }
 }
-faults="EF_FAULT_ROOKS EF_FAULT_PAD EF_FAULT_TOPCLIP EF_FAULT_LASTEDGE EF_FAULT_DIV_FLOOR EF_FAULT_FWD EF_FAULT_SPAN"
+faults="EF_FAULT_ROOKS EF_FAULT_PAD EF_FAULT_TOPCLIP EF_FAULT_LASTEDGE EF_FAULT_DIV_FLOOR EF_FAULT_SB_RING EF_FAULT_FWD EF_FAULT_SPAN"
 for ns in 8 16 32; do submit "build_vl_$ns" build_vl $ns; done
 for ns in 8 16 32; do submit "build_iv_$ns" build_iv $ns; done
 for f in $faults; do submit "build_iv_$f" build_iv 8 "$f"; done
@@ -272,6 +272,7 @@ submit fault_pad       fault EF_FAULT_PAD       f_tiger_nz span mask,x,len,extra
 submit fault_topclip   fault EF_FAULT_TOPCLIP   f_outside-crossing et_wr r0,x,e,slot
 submit fault_lastedge  fault EF_FAULT_LASTEDGE  f_tiger plot -
 submit fault_divfloor  fault EF_FAULT_DIV_FLOOR f_tiger et_wr x,e,qs,rs
+submit fault_sbring    fault EF_FAULT_SB_RING   f_tiger et_wr x,e,qs,rs,dy
 submit fault_fwd       fault EF_FAULT_FWD       f_tiger span -
 submit fault_span      fault EF_FAULT_SPAN      f_tiger span len
 collect
