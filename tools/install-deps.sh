@@ -6,6 +6,7 @@
 #                                  aarch64/s390x cross C libraries and qemu-user (best effort)
 #   tools/install-deps.sh portability   the same (what `make portability` needs)
 #   tools/install-deps.sh bench    + the peers and plotting for `make bench` (bench/README.md)
+#   tools/install-deps.sh synth    + Yosys, nextpnr-ice40 and icestorm for `make rtl-synth` (docs/synthesis.md)
 #   tools/install-deps.sh farm     + GNU parallel, Slurm and munge for `make farm-test` (docs/regress.md)
 set -euo pipefail
 
@@ -16,8 +17,6 @@ if [ "${1:-}" = test ] || [ "${1:-}" = portability ]; then
     # the vectors' real readers: Icarus and Verilator ($readmemh testbenches), GTKWave's
     # vcd2fst/fst2vcd (VCD round trip), xmllint (JUnit XML well-formedness)
     pkgs+=(iverilog verilator gtkwave libxml2-utils)
-    # make rtl-synth (docs/synthesis.md): Yosys synth_ice40, nextpnr-ice40 and its chip database
-    pkgs+=(yosys nextpnr-ice40 fpga-icestorm)
     # the regression flow's shards run under GNU parallel in make test (docs/regress.md)
     pkgs+=(parallel)
     # edgeflag-host's USB transport and its emulated board (test-host-usb, docs/board-usb.md)
@@ -38,6 +37,10 @@ if [ "${1:-}" = test ] || [ "${1:-}" = portability ]; then
 fi
 if [ "${1:-}" = farm ]; then
     pkgs+=(parallel libxml2-utils slurm-wlm munge)
+fi
+if [ "${1:-}" = synth ]; then
+    # make rtl-synth (docs/synthesis.md): Yosys synth_ice40, nextpnr-ice40 and its chip database
+    pkgs+=(yosys nextpnr-ice40 fpga-icestorm iverilog)
 fi
 if [ "${1:-}" = bench ]; then
     pkgs+=(g++ libagg-dev libcairo2-dev libfreetype-dev libstb-dev fonts-dejavu-core gnuplot-nox python3)

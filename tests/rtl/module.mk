@@ -17,4 +17,5 @@ rtl-test: cli
 rtl-regress: cli
 	@bash tests/rtl/rtl-regress.sh $(BUILD)
 rtl-synth:
+	@bash tools/install-deps.sh synth
 	@bash tests/rtl/rtl-synth.sh
