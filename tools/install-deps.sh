@@ -40,7 +40,7 @@ if [ "${1:-}" = farm ]; then
 fi
 if [ "${1:-}" = synth ]; then
     # make rtl-synth (docs/synthesis.md): Yosys synth_ice40, nextpnr-ice40 and its chip database
-    pkgs+=(yosys nextpnr-ice40 fpga-icestorm iverilog)
+    pkgs+=(yosys nextpnr-ice40 fpga-icestorm)
 fi
 if [ "${1:-}" = bench ]; then
     pkgs+=(g++ libagg-dev libcairo2-dev libfreetype-dev libstb-dev fonts-dejavu-core gnuplot-nox python3)
