@@ -8,17 +8,24 @@
  * never leaves a truncated image where a previous good one was, nor a stray
  * temporary.
  *
- * One atomic file at a time per process: the signal handler can only use
- * async-signal-safe state, so the temporary's path lives in a static buffer.
+ * At most EF_CLI_ATOMIC_MAX atomic files at a time per process: the signal
+ * handler can only use async-signal-safe state, so each temporary's path
+ * lives in a static buffer of its own.  Open, commit and abort them from one
+ * thread (the one that may take SIGINT/SIGTERM/SIGHUP); other threads may
+ * write into af->fp, with those signals blocked (`vectors` writes two files
+ * at a time this way).
  */
 #ifndef EF_CLI_ATOMIC_FILE_H
 #define EF_CLI_ATOMIC_FILE_H
 
 #include <stdio.h>
 
+#define EF_CLI_ATOMIC_MAX 16
+
 typedef struct ef_cli_atomic {
     FILE *fp;             /* write here between open and commit/abort */
     const char *path;     /* the destination */
+    int slot;             /* the handler's slot of its temporary; -1 none */
 } ef_cli_atomic;
 
 /* Creates the temporary next to `path`.  0 on success; -1 with errno set
