@@ -143,6 +143,7 @@ typedef struct ef_vec_list {
 
 typedef struct ef_vec_collect {
     ef_vec_list list[EF_IF_COUNT];
+    uint64_t allowed[EF_IF_COUNT][EF_TXN_WORDS];   /* payload bits within each interface's width */
     uint32_t mask;         /* interfaces accepted */
     ef_status error;       /* first failure: EF_ERR_NOMEM, or EF_ERR_ARG for a broken trace */
     char why[160];         /* what was broken, for EF_ERR_ARG */
