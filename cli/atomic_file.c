@@ -5,7 +5,6 @@
 #include "atomic_file.h"
 
 #include <errno.h>
-#include <limits.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -137,13 +136,14 @@ static int make_template(const char *path, char *out, size_t size)
         errno = EISDIR; /* "dir/" names no file */
         return -1;
     }
-    if (dirlen + 1 + baselen + 7 + 1 > size || dirlen > INT_MAX) {
+    if (dirlen + 1 + baselen + 7 + 1 > size) {
         errno = ENAMETOOLONG;
         return -1;
     }
-    /* snprintf, not three memcpy: GCC's bounds warning cannot follow the
-     * check above into a slot of a 2-D array at every -O level. */
-    snprintf(out, size, "%.*s.%s.XXXXXX", (int)dirlen, path, base);
+    memcpy(out, path, dirlen);
+    out[dirlen] = '.';
+    memcpy(out + dirlen + 1, base, baselen);
+    memcpy(out + dirlen + 1 + baselen, ".XXXXXX", 8);
     return 0;
 }
 
@@ -151,26 +151,27 @@ int ef_cli_atomic_open(ef_cli_atomic *af, const char *path)
 {
     sigset_t old;
     int fd, saved, slot = 0;
-    char *tp;
+    char tmpl[sizeof tmp_path[0]], *tp;
     mode_t mask;
 
     af->fp = NULL;
     af->path = path;
     af->slot = -1;
+    af->synced = 0;
     while (slot < EF_CLI_ATOMIC_MAX && tmp_used[slot])
         slot++;
     if (slot == EF_CLI_ATOMIC_MAX) {
         errno = EBUSY; /* the handler knows EF_CLI_ATOMIC_MAX paths */
         return -1;
     }
+    /* Built in a buffer of its own, then copied whole into the slot (GCC's
+     * bounds warnings do not follow make_template's check into a row of the
+     * 2-D array at every -O level and target). */
+    if (make_template(path, tmpl, sizeof tmpl) != 0)
+        return -1;
     tp = tmp_path[slot];
     block_signals(&old);
-    if (make_template(path, tp, sizeof tmp_path[0]) != 0) {
-        saved = errno;
-        restore_signals(&old);
-        errno = saved;
-        return -1;
-    }
+    memcpy(tp, tmpl, sizeof tmpl);
     install_handlers();
     fd = mkstemp(tp);
     if (fd < 0) {
@@ -202,6 +203,26 @@ int ef_cli_atomic_open(ef_cli_atomic *af, const char *path)
     return 0;
 }
 
+int ef_cli_atomic_sync(ef_cli_atomic *af)
+{
+    if (!af->fp) {
+        errno = EBADF;
+        return -1;
+    }
+    if (fflush(af->fp) != 0)
+        return -1;
+    if (ferror(af->fp)) {
+        errno = EIO;
+        return -1;
+    }
+    /* Durable before visible: after a crash the destination holds either
+     * the old file or the whole new one, never a hole. */
+    if (fsync(fileno(af->fp)) != 0)
+        return -1;
+    af->synced = 1;
+    return 0;
+}
+
 int ef_cli_atomic_commit(ef_cli_atomic *af)
 {
     sigset_t old;
@@ -211,13 +232,7 @@ int ef_cli_atomic_commit(ef_cli_atomic *af)
         errno = EBADF;
         return -1;
     }
-    if (fflush(af->fp) != 0)
-        err = errno;
-    if (!err && ferror(af->fp))
-        err = EIO;
-    /* Durable before visible: after a crash the destination holds either
-     * the old file or the whole new one, never a hole. */
-    if (!err && fsync(fileno(af->fp)) != 0)
+    if (!af->synced && ef_cli_atomic_sync(af) != 0)
         err = errno;
     if (fclose(af->fp) != 0 && !err)
         err = errno;

@@ -26,14 +26,22 @@ typedef struct ef_cli_atomic {
     FILE *fp;             /* write here between open and commit/abort */
     const char *path;     /* the destination */
     int slot;             /* the handler's slot of its temporary; -1 none */
+    int synced;           /* ef_cli_atomic_sync done: commit need not flush again */
 } ef_cli_atomic;
 
 /* Creates the temporary next to `path`.  0 on success; -1 with errno set
  * (nothing is left on disk). */
 int ef_cli_atomic_open(ef_cli_atomic *af, const char *path);
 
-/* Flushes, fsyncs, closes and renames onto the destination.  0 on success;
- * -1 with errno set, and the temporary removed.  Either way af->fp is gone. */
+/* Flushes and fsyncs the temporary (no rename): the slow part of a commit,
+ * which, unlike open, commit and abort, any thread may do (vectors' writing
+ * threads do it for their files, so that their fsyncs overlap).  0, or -1
+ * with errno set; the temporary stays for commit or abort. */
+int ef_cli_atomic_sync(ef_cli_atomic *af);
+
+/* Flushes and fsyncs (unless ef_cli_atomic_sync did), closes and renames onto
+ * the destination.  0 on success; -1 with errno set, and the temporary
+ * removed.  Either way af->fp is gone. */
 int ef_cli_atomic_commit(ef_cli_atomic *af);
 
 /* Closes and removes the temporary.  Safe after a failed open. */

@@ -229,7 +229,7 @@ static void write_one(ef_vec_out *o, const ef_cli_vec_job *job, file_job *j)
         ef_vec_out_write(o, frame, len);
         free(frame);
     }
-    if (ef_vec_out_finish(o, digest) != 0) {
+    if (ef_vec_out_finish(o, digest) != 0 || ef_cli_atomic_sync(&j->af) != 0) {
         j->err = errno;
         j->rc = EF_CLI_EXIT_OUTPUT;
     } else if (nomem) {
