@@ -94,34 +94,39 @@ static void heads_init(heads *h, const ef_vec_collect *c)
     }
 }
 
-/* The interface of every record in stream order (cycle, ties: the lower
- * interface first) into ord: the seven list heads compared once here, so
- * the two passes below only follow ord. */
-static void merge_order(const ef_vec_collect *c, uint32_t mask, uint8_t *ord)
-{
+/* The merge of the interfaces' lists into stream order (cycle, ties: the
+ * lower interface first), taken a piece at a time so that the records it
+ * compares are still in the cache when the first pass builds them. */
+typedef struct merge {
     const uint64_t *head[EF_IF_COUNT];
     size_t left[EF_IF_COUNT];
     unsigned stride[EF_IF_COUNT];
+} merge;
 
+static void merge_init(merge *m, const ef_vec_collect *c, uint32_t mask)
+{
     for (int i = 0; i < EF_IF_COUNT; i++) {
         const ef_vec_list *l = &c->list[i];
-        head[i] = l->rec;
-        left[i] = (mask >> i & 1u) ? l->count : 0;
-        stride[i] = 1u + l->nw;
+        m->head[i] = l->rec;
+        m->left[i] = (mask >> i & 1u) ? l->count : 0;
+        m->stride[i] = 1u + l->nw;
     }
-    for (;;) {
+}
+
+/* The interfaces of the next n records into ord (there are at least n). */
+static void merge_next(merge *m, uint8_t *ord, size_t n)
+{
+    for (size_t k = 0; k < n; k++) {
         int best = -1;
         uint64_t cyc = 0;
         for (int i = 0; i < EF_IF_COUNT; i++)
-            if (left[i] && (best < 0 || head[i][0] < cyc)) {
+            if (m->left[i] && (best < 0 || m->head[i][0] < cyc)) {
                 best = i;
-                cyc = head[i][0];
+                cyc = m->head[i][0];
             }
-        if (best < 0)
-            return;
-        *ord++ = (uint8_t)best;
-        head[best] += stride[best];
-        left[best]--;
+        ord[k] = (uint8_t)best;
+        m->head[best] += m->stride[best];
+        m->left[best]--;
     }
 }
 
@@ -153,9 +158,10 @@ static size_t build(heads *h, const uint8_t *ord, size_t n, uint8_t *dst)
 
 /* The header's CRC covers the records and the header comes first, and the
  * stream is hashed as it goes: so the records are built twice, a piece at
- * a time, once for their CRC and once into the sink, instead of once into a
- * block of the whole stream's size (15 MB for the tiger at 640x480, every
- * page of it a fault and read back from memory by the CRC and the hash). */
+ * a time, once for their CRC (right after the merge has put the piece in
+ * order) and once into the sink, instead of once into a block of the whole
+ * stream's size (15 MB for the tiger at 640x480, every page of it a fault
+ * and read back from memory by the CRC and the hash). */
 int ef_vec_bin_write(ef_vec_out *o, const ef_vec_info *info, const ef_vec_collect *c)
 {
     uint8_t h[EF_VEC_BIN_HEADER];
@@ -163,6 +169,7 @@ int ef_vec_bin_write(ef_vec_out *o, const ef_vec_info *info, const ef_vec_collec
     size_t n = 0;
     uint32_t crc = 0;
     uint8_t *ord;
+    merge mg;
     heads hd;
 
     for (int i = 0; i < EF_IF_COUNT; i++)
@@ -170,10 +177,11 @@ int ef_vec_bin_write(ef_vec_out *o, const ef_vec_info *info, const ef_vec_collec
             n += ef_vec_collect_count(c, i);
     if ((ord = malloc(n ? n : 1)) == NULL)
         return -1;
-    merge_order(c, info->mask, ord);
+    merge_init(&mg, c, info->mask);
     heads_init(&hd, c);
     for (size_t k = 0; k < n; k += PIECE) {
         const size_t m = n - k < PIECE ? n - k : PIECE;
+        merge_next(&mg, ord + k, m);
         crc = ef_vec_crc32(crc, piece, build(&hd, ord + k, m, piece));
     }
     ef_vec_bin_header(h, info, c, crc);
