@@ -6,16 +6,22 @@
 
 #include <errno.h>
 #include <signal.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <fcntl.h>
 #include <unistd.h>
 
-/* State shared with the signal handler: only a static buffer and a
- * sig_atomic_t flag, which is all an async-signal-safe handler may touch. */
-static char tmp_path[4352];
-static volatile sig_atomic_t tmp_active;
+/* State shared with the signal handler: only static buffers and
+ * sig_atomic_t flags, which is all an async-signal-safe handler may touch.
+ * One slot per temporary open at once (vectors writes its files two at a
+ * time, each into its own temporary); every slot is changed only by the
+ * thread that opens and commits (atomic_file.h), with the signals blocked. */
+static char tmp_path[EF_CLI_ATOMIC_MAX][4352];
+static volatile sig_atomic_t tmp_active[EF_CLI_ATOMIC_MAX];
+static unsigned char tmp_used[EF_CLI_ATOMIC_MAX];   /* from open to commit or abort */
+static int tmp_count;     /* slots in use; the handlers are installed while > 0 */
 
 static struct sigaction old_int, old_term, old_hup, old_xfsz;
 static int handlers_installed;
@@ -24,8 +30,9 @@ static void on_signal(int sig)
 {
     struct sigaction dfl;
 
-    if (tmp_active)
-        unlink(tmp_path); /* async-signal-safe */
+    for (int k = 0; k < EF_CLI_ATOMIC_MAX; k++)
+        if (tmp_active[k])
+            unlink(tmp_path[k]); /* async-signal-safe */
     /* Die of the same signal with the default action, so the parent sees
      * the usual "killed by SIGINT" status (a shell prints nothing, make
      * stops).  The signal stays blocked until we return, then fires. */
@@ -97,19 +104,22 @@ static void uninstall_handlers(void)
     handlers_installed = 0;
 }
 
-/* Unlinks the temporary if there is one; errno is preserved for callers
- * that are about to report the original failure. */
-static void remove_temp(void)
+/* Unlinks slot's temporary if it is still there and frees the slot (the
+ * handlers go with the last one); errno is preserved for callers that are
+ * about to report the original failure. */
+static void remove_temp(int slot)
 {
     sigset_t old;
     int saved = errno;
 
     block_signals(&old);
-    if (tmp_active) {
-        unlink(tmp_path);
-        tmp_active = 0;
+    if (tmp_active[slot]) {
+        unlink(tmp_path[slot]);
+        tmp_active[slot] = 0;
     }
-    uninstall_handlers();
+    tmp_used[slot] = 0;
+    if (--tmp_count == 0)
+        uninstall_handlers();
     restore_signals(&old);
     errno = saved;
 }
@@ -140,32 +150,42 @@ static int make_template(const char *path, char *out, size_t size)
 int ef_cli_atomic_open(ef_cli_atomic *af, const char *path)
 {
     sigset_t old;
-    int fd, saved;
+    int fd, saved, slot = 0;
+    char tmpl[sizeof tmp_path[0]], *tp;
     mode_t mask;
 
     af->fp = NULL;
     af->path = path;
-    if (tmp_active) {
-        errno = EBUSY; /* one at a time: the handler knows one path */
+    af->slot = -1;
+    af->synced = 0;
+    while (slot < EF_CLI_ATOMIC_MAX && tmp_used[slot])
+        slot++;
+    if (slot == EF_CLI_ATOMIC_MAX) {
+        errno = EBUSY; /* the handler knows EF_CLI_ATOMIC_MAX paths */
         return -1;
     }
+    /* Built in a buffer of its own, then copied whole into the slot (GCC's
+     * bounds warnings do not follow make_template's check into a row of the
+     * 2-D array at every -O level and target). */
+    if (make_template(path, tmpl, sizeof tmpl) != 0)
+        return -1;
+    tp = tmp_path[slot];
     block_signals(&old);
-    if (make_template(path, tmp_path, sizeof tmp_path) != 0) {
-        saved = errno;
-        restore_signals(&old);
-        errno = saved;
-        return -1;
-    }
+    memcpy(tp, tmpl, sizeof tmpl);
     install_handlers();
-    fd = mkstemp(tmp_path);
+    fd = mkstemp(tp);
     if (fd < 0) {
         saved = errno;
-        uninstall_handlers();
+        if (tmp_count == 0)
+            uninstall_handlers();
         restore_signals(&old);
         errno = saved;
         return -1;
     }
-    tmp_active = 1;
+    af->slot = slot;
+    tmp_used[slot] = 1;
+    tmp_count++;
+    tmp_active[slot] = 1;
     restore_signals(&old);
 
     /* mkstemp creates 0600; a finished image gets the permissions any new
@@ -175,10 +195,31 @@ int ef_cli_atomic_open(ef_cli_atomic *af, const char *path)
     if (fchmod(fd, (mode_t)(0666 & ~mask)) != 0 || (af->fp = fdopen(fd, "wb")) == NULL) {
         saved = errno;
         close(fd);
-        remove_temp();
+        remove_temp(af->slot);
+        af->slot = -1;
         errno = saved;
         return -1;
     }
+    return 0;
+}
+
+int ef_cli_atomic_sync(ef_cli_atomic *af)
+{
+    if (!af->fp) {
+        errno = EBADF;
+        return -1;
+    }
+    if (fflush(af->fp) != 0)
+        return -1;
+    if (ferror(af->fp)) {
+        errno = EIO;
+        return -1;
+    }
+    /* Durable before visible: after a crash the destination holds either
+     * the old file or the whole new one, never a hole. */
+    if (fsync(fileno(af->fp)) != 0)
+        return -1;
+    af->synced = 1;
     return 0;
 }
 
@@ -187,39 +228,33 @@ int ef_cli_atomic_commit(ef_cli_atomic *af)
     sigset_t old;
     int err = 0;
 
-    if (!af->fp) {
+    if (!af->fp || af->slot < 0) {
         errno = EBADF;
         return -1;
     }
-    if (fflush(af->fp) != 0)
-        err = errno;
-    if (!err && ferror(af->fp))
-        err = EIO;
-    /* Durable before visible: after a crash the destination holds either
-     * the old file or the whole new one, never a hole. */
-    if (!err && fsync(fileno(af->fp)) != 0)
+    if (!af->synced && ef_cli_atomic_sync(af) != 0)
         err = errno;
     if (fclose(af->fp) != 0 && !err)
         err = errno;
     af->fp = NULL;
     if (!err) {
         block_signals(&old);
-        if (rename(tmp_path, af->path) != 0)
+        if (rename(tmp_path[af->slot], af->path) != 0)
             err = errno;
         else
-            tmp_active = 0;
+            tmp_active[af->slot] = 0;
         restore_signals(&old);
     }
+    remove_temp(af->slot); /* after a rename: only frees the slot (and the handlers) */
+    af->slot = -1;
     if (err) {
-        remove_temp();
         errno = err;
         return -1;
     }
-    remove_temp(); /* only uninstalls the handlers now */
 
     /* Make the rename itself durable; best effort, the data already is. */
     {
-        char dir[sizeof tmp_path];
+        char dir[sizeof tmp_path[0]];
         const char *slash = strrchr(af->path, '/');
         size_t len = slash ? (size_t)(slash - af->path) : 0;
         int dfd;
@@ -247,7 +282,9 @@ void ef_cli_atomic_abort(ef_cli_atomic *af)
         fclose(af->fp);
         af->fp = NULL;
     }
-    remove_temp();
+    if (af->slot >= 0)
+        remove_temp(af->slot);
+    af->slot = -1;
 }
 
 /* mkdir -p (atomic_file.h). */

@@ -8,25 +8,40 @@
  * never leaves a truncated image where a previous good one was, nor a stray
  * temporary.
  *
- * One atomic file at a time per process: the signal handler can only use
- * async-signal-safe state, so the temporary's path lives in a static buffer.
+ * At most EF_CLI_ATOMIC_MAX atomic files at a time per process: the signal
+ * handler can only use async-signal-safe state, so each temporary's path
+ * lives in a static buffer of its own.  Open, commit and abort them from one
+ * thread (the one that may take SIGINT/SIGTERM/SIGHUP); other threads may
+ * write into af->fp, with those signals blocked (`vectors` writes two files
+ * at a time this way).
  */
 #ifndef EF_CLI_ATOMIC_FILE_H
 #define EF_CLI_ATOMIC_FILE_H
 
 #include <stdio.h>
 
+#define EF_CLI_ATOMIC_MAX 16
+
 typedef struct ef_cli_atomic {
     FILE *fp;             /* write here between open and commit/abort */
     const char *path;     /* the destination */
+    int slot;             /* the handler's slot of its temporary; -1 none */
+    int synced;           /* ef_cli_atomic_sync done: commit need not flush again */
 } ef_cli_atomic;
 
 /* Creates the temporary next to `path`.  0 on success; -1 with errno set
  * (nothing is left on disk). */
 int ef_cli_atomic_open(ef_cli_atomic *af, const char *path);
 
-/* Flushes, fsyncs, closes and renames onto the destination.  0 on success;
- * -1 with errno set, and the temporary removed.  Either way af->fp is gone. */
+/* Flushes and fsyncs the temporary (no rename): the slow part of a commit,
+ * which, unlike open, commit and abort, any thread may do (vectors' writing
+ * threads do it for their files, so that their fsyncs overlap).  0, or -1
+ * with errno set; the temporary stays for commit or abort. */
+int ef_cli_atomic_sync(ef_cli_atomic *af);
+
+/* Flushes and fsyncs (unless ef_cli_atomic_sync did), closes and renames onto
+ * the destination.  0 on success; -1 with errno set, and the temporary
+ * removed.  Either way af->fp is gone. */
 int ef_cli_atomic_commit(ef_cli_atomic *af);
 
 /* Closes and removes the temporary.  Safe after a failed open. */

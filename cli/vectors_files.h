@@ -1,7 +1,8 @@
 /*
  * vectors_files.h - the file side of `edgeflag vectors` (vectors_files.c):
  * which files a run writes, the refusal of existing ones, and writing them
- * one at a time through the atomic writer, manifest.json last.
+ * two at a time through the atomic writer (each into its own temporary,
+ * renamed into place when all are written), manifest.json last.
  */
 #ifndef EF_CLI_VECTORS_FILES_H
 #define EF_CLI_VECTORS_FILES_H

@@ -51,17 +51,10 @@ void ef_vec_sha256_hex(const uint8_t digest[32], char out[65]);
 /* A buffered byte sink that counts, hashes (SHA-256) and optionally CRCs
  * what passes through, so the manifest's sizes and hashes describe exactly
  * the bytes written.  With fp NULL nothing is written (a counting pass).
- *
- * With EF_VEC_OUT_THREAD the hashing and writing of each full buffer happen
- * in a second thread while the writer fills the other buffer (the SHA-256
- * is a quarter of `edgeflag vectors`' work, the file system's copy another
- * tenth); the bytes, their order, the hash and the CRC are the same.  If
- * the thread cannot be started the sink works without it.  Every
- * ef_vec_out_init must be followed by ef_vec_out_finish, which ends the
- * thread. */
-enum { EF_VEC_OUT_SHA = 1, EF_VEC_OUT_CRC = 2, EF_VEC_OUT_THREAD = 4 };
+ * Every ef_vec_out_init must be followed by ef_vec_out_finish.  One sink is
+ * used by one thread at a time. */
+enum { EF_VEC_OUT_SHA = 1, EF_VEC_OUT_CRC = 2 };
 #define EF_VEC_OUT_BUF (1u << 16)
-struct ef_vec_out_worker;
 typedef struct ef_vec_out {
     FILE *fp;
     unsigned flags;
@@ -70,9 +63,7 @@ typedef struct ef_vec_out {
     uint64_t bytes;        /* written (or counted) so far */
     int err;               /* errno of the first failed write; later writes are dropped */
     size_t used;
-    unsigned char *buf;    /* the buffer being filled: one of mem */
-    struct ef_vec_out_worker *worker;   /* NULL: hashing and writing in this thread */
-    unsigned char mem[2][EF_VEC_OUT_BUF];
+    unsigned char buf[EF_VEC_OUT_BUF];
 } ef_vec_out;
 void ef_vec_out_init(ef_vec_out *o, FILE *fp, unsigned flags);
 /* Writes n bytes; a large block (a whole buffer or more) goes to the hash
@@ -143,6 +134,7 @@ typedef struct ef_vec_list {
 
 typedef struct ef_vec_collect {
     ef_vec_list list[EF_IF_COUNT];
+    uint64_t allowed[EF_IF_COUNT][EF_TXN_WORDS];   /* payload bits within each interface's width */
     uint32_t mask;         /* interfaces accepted */
     ef_status error;       /* first failure: EF_ERR_NOMEM, or EF_ERR_ARG for a broken trace */
     char why[160];         /* what was broken, for EF_ERR_ARG */

@@ -79,65 +79,118 @@ void ef_vec_bin_header_counts(uint8_t h[EF_VEC_BIN_HEADER], const ef_vec_info *i
     put32(h + 100, ef_vec_crc32(0, h, 100));
 }
 
-/* The records of every interface in mask, merged into cycle order (ties:
- * the lower interface first), into r; returns the bytes written.  The
- * heads of the seven lists are compared directly instead of going through
- * ef_vec_merge one ef_txn at a time. */
-static size_t records(const ef_vec_collect *c, uint32_t mask, uint8_t *r)
-{
-    const uint64_t *head[EF_IF_COUNT];
-    size_t left[EF_IF_COUNT];
-    unsigned stride[EF_IF_COUNT], len[EF_IF_COUNT];
-    uint8_t *const r0 = r;
+/* Where the next record of each interface comes from. */
+typedef struct heads {
+    const uint64_t *at[EF_IF_COUNT];
+    unsigned nw[EF_IF_COUNT], len[EF_IF_COUNT];
+} heads;
 
+static void heads_init(heads *h, const ef_vec_collect *c)
+{
     for (int i = 0; i < EF_IF_COUNT; i++) {
-        const ef_vec_list *l = &c->list[i];
-        head[i] = l->rec;
-        left[i] = (mask >> i & 1u) ? l->count : 0;
-        stride[i] = 1u + l->nw;
-        len[i] = (ef_iface_get(i)->width + 7u) / 8u;
-    }
-    for (;;) {
-        int best = -1;
-        uint64_t cyc = 0;
-        for (int i = 0; i < EF_IF_COUNT; i++)
-            if (left[i] && (best < 0 || head[i][0] < cyc)) {
-                best = i;
-                cyc = head[i][0];
-            }
-        if (best < 0)
-            return (size_t)(r - r0);
-        const uint64_t *w = head[best] + 1;
-        uint8_t pay[8 * EF_TXN_WORDS];
-        r[0] = (uint8_t)best;
-        r[1] = (uint8_t)len[best];
-        put64(r + 2, cyc);
-        /* Whole words little-endian (a plain store on such hosts), then
-         * the record's ceil(P/8) bytes of them. */
-        for (unsigned k = 0; k < stride[best] - 1u; k++)
-            put64(pay + 8 * k, w[k]);
-        memcpy(r + 10, pay, len[best]);
-        r += 10u + len[best];
-        head[best] += stride[best];
-        left[best]--;
+        h->at[i] = c->list[i].rec;
+        h->nw[i] = c->list[i].nw;
+        h->len[i] = (ef_iface_get(i)->width + 7u) / 8u;
     }
 }
 
+/* The merge of the interfaces' lists into stream order (cycle, ties: the
+ * lower interface first), taken a piece at a time so that the records it
+ * compares are still in the cache when the first pass builds them. */
+typedef struct merge {
+    const uint64_t *head[EF_IF_COUNT];
+    size_t left[EF_IF_COUNT];
+    unsigned stride[EF_IF_COUNT];
+} merge;
+
+static void merge_init(merge *m, const ef_vec_collect *c, uint32_t mask)
+{
+    for (int i = 0; i < EF_IF_COUNT; i++) {
+        const ef_vec_list *l = &c->list[i];
+        m->head[i] = l->rec;
+        m->left[i] = (mask >> i & 1u) ? l->count : 0;
+        m->stride[i] = 1u + l->nw;
+    }
+}
+
+/* The interfaces of the next n records into ord (there are at least n). */
+static void merge_next(merge *m, uint8_t *ord, size_t n)
+{
+    for (size_t k = 0; k < n; k++) {
+        int best = -1;
+        uint64_t cyc = 0;
+        for (int i = 0; i < EF_IF_COUNT; i++)
+            if (m->left[i] && (best < 0 || m->head[i][0] < cyc)) {
+                best = i;
+                cyc = m->head[i][0];
+            }
+        ord[k] = (uint8_t)best;
+        m->head[best] += m->stride[best];
+        m->left[best]--;
+    }
+}
+
+/* Records ord[0..n) into dst, which has room for 10 + 8 * EF_TXN_WORDS
+ * bytes past the last record's start (the payload is stored as whole words;
+ * the bytes past ceil(P/8) are overwritten by the next record).  Returns the
+ * bytes of the n records. */
+static size_t build(heads *h, const uint8_t *ord, size_t n, uint8_t *dst)
+{
+    uint8_t *r = dst;
+    for (size_t k = 0; k < n; k++) {
+        const unsigned i = ord[k];
+        const uint64_t *w = h->at[i];
+        r[0] = (uint8_t)i;
+        r[1] = (uint8_t)h->len[i];
+        put64(r + 2, w[0]);
+        for (unsigned j = 0; j < h->nw[i]; j++)    /* little-endian words (a plain store on such hosts) */
+            put64(r + 10 + 8 * j, w[1 + j]);
+        r += 10u + h->len[i];
+        h->at[i] = w + 1 + h->nw[i];
+    }
+    return (size_t)(r - dst);
+}
+
+/* The records go out in pieces of at most this many, so that every piece
+ * fits the sink's room (EF_VEC_OUT_ROOM) and stays in the cache for the
+ * CRC or the hash that follows. */
+#define PIECE ((EF_VEC_OUT_ROOM - (10u + 8u * EF_TXN_WORDS)) / (10u + 8u * EF_TXN_WORDS))
+
+/* The header's CRC covers the records and the header comes first, and the
+ * stream is hashed as it goes: so the records are built twice, a piece at
+ * a time, once for their CRC (right after the merge has put the piece in
+ * order) and once into the sink, instead of once into a block of the whole
+ * stream's size (15 MB for the tiger at 640x480, every page of it a fault
+ * and read back from memory by the CRC and the hash). */
 int ef_vec_bin_write(ef_vec_out *o, const ef_vec_info *info, const ef_vec_collect *c)
 {
     uint8_t h[EF_VEC_BIN_HEADER];
-    size_t size = 0;
-    uint8_t *all;
+    uint8_t piece[EF_VEC_OUT_ROOM];
+    size_t n = 0;
+    uint32_t crc = 0;
+    uint8_t *ord;
+    merge mg;
+    heads hd;
 
     for (int i = 0; i < EF_IF_COUNT; i++)
         if (info->mask >> i & 1u)
-            size += ef_vec_collect_count(c, i) * (10u + (ef_iface_get(i)->width + 7u) / 8u);
-    if ((all = malloc(size ? size : 1)) == NULL)
+            n += ef_vec_collect_count(c, i);
+    if ((ord = malloc(n ? n : 1)) == NULL)
         return -1;
-    size = records(c, info->mask, all);
-    ef_vec_bin_header(h, info, c, ef_vec_crc32(0, all, size));
+    merge_init(&mg, c, info->mask);
+    heads_init(&hd, c);
+    for (size_t k = 0; k < n; k += PIECE) {
+        const size_t m = n - k < PIECE ? n - k : PIECE;
+        merge_next(&mg, ord + k, m);
+        crc = ef_vec_crc32(crc, piece, build(&hd, ord + k, m, piece));
+    }
+    ef_vec_bin_header(h, info, c, crc);
     ef_vec_out_write(o, h, sizeof h);
-    ef_vec_out_write(o, all, size);
-    free(all);
+    heads_init(&hd, c);
+    for (size_t k = 0; k < n; k += PIECE) {
+        const size_t m = n - k < PIECE ? n - k : PIECE;
+        ef_vec_out_advance(o, build(&hd, ord + k, m, ef_vec_out_room(o, EF_VEC_OUT_ROOM)));
+    }
+    free(ord);
     return 0;
 }

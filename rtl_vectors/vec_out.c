@@ -3,28 +3,15 @@
  * and hashed as it goes, so the manifest's byte counts and SHA-256 are those
  * of the bytes actually handed to the file, and a write error is remembered
  * once and reported at the end instead of being checked after every line.
- * Optionally (EF_VEC_OUT_THREAD) a second thread hashes and writes one
- * buffer while the writer fills the other.
+ * It runs in the caller's thread: `vectors` writes two files at once, each
+ * formatted, hashed and written by one thread (cli/vectors_files.c), which
+ * measured faster than handing every buffer to a hashing thread.
  */
 #include "ef_vec.h"
 
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
-#include <threads.h>
-
-/* The second thread of EF_VEC_OUT_THREAD: one job at a time (a full buffer,
- * or a large block of the caller's), hashed and written in order.  The
- * filling thread waits for the job to be done before it hands over the next
- * one, so with two buffers it never refills the one being written. */
-struct ef_vec_out_worker {
-    mtx_t mtx;
-    cnd_t cnd;
-    thrd_t thr;
-    const unsigned char *job;   /* NULL: idle */
-    size_t len;
-    int quit;
-};
 
 /* Hashes and writes n bytes at p. */
 static void emit(ef_vec_out *o, const unsigned char *p, size_t n)
@@ -37,91 +24,6 @@ static void emit(ef_vec_out *o, const unsigned char *p, size_t n)
         o->crc = ef_vec_crc32(o->crc, p, n);
     if (o->fp && !o->err && fwrite(p, 1, n, o->fp) != n)
         o->err = errno ? errno : EIO;
-}
-
-/* The worker's loop.  o->sha, o->crc and o->err belong to it while a job
- * is out; the mutex hands them back (C11: unlock/lock order the accesses). */
-static int work(void *arg)
-{
-    ef_vec_out *o = arg;
-    struct ef_vec_out_worker *w = o->worker;
-    mtx_lock(&w->mtx);
-    for (;;) {
-        while (!w->job && !w->quit)
-            cnd_wait(&w->cnd, &w->mtx);
-        if (!w->job)
-            break;
-        const unsigned char *p = w->job;
-        size_t n = w->len;
-        mtx_unlock(&w->mtx);
-        emit(o, p, n);
-        mtx_lock(&w->mtx);
-        w->job = NULL;
-        cnd_broadcast(&w->cnd);
-    }
-    mtx_unlock(&w->mtx);
-    return 0;
-}
-
-/* Waits until the worker is idle (its last job done). */
-static void wait_idle(struct ef_vec_out_worker *w)
-{
-    mtx_lock(&w->mtx);
-    while (w->job)
-        cnd_wait(&w->cnd, &w->mtx);
-    mtx_unlock(&w->mtx);
-}
-
-static void submit(struct ef_vec_out_worker *w, const unsigned char *p, size_t n)
-{
-    mtx_lock(&w->mtx);
-    while (w->job)
-        cnd_wait(&w->cnd, &w->mtx);
-    w->job = p;
-    w->len = n;
-    cnd_broadcast(&w->cnd);
-    mtx_unlock(&w->mtx);
-}
-
-static void start_worker(ef_vec_out *o)
-{
-    struct ef_vec_out_worker *w = calloc(1, sizeof *w);
-    if (!w)
-        return;
-    if (mtx_init(&w->mtx, mtx_plain) != thrd_success) {
-        free(w);
-        return;
-    }
-    if (cnd_init(&w->cnd) != thrd_success) {
-        mtx_destroy(&w->mtx);
-        free(w);
-        return;
-    }
-    o->worker = w;
-    if (thrd_create(&w->thr, work, o) != thrd_success) {
-        o->worker = NULL;
-        cnd_destroy(&w->cnd);
-        mtx_destroy(&w->mtx);
-        free(w);
-    }
-}
-
-static void stop_worker(ef_vec_out *o)
-{
-    struct ef_vec_out_worker *w = o->worker;
-    if (!w)
-        return;
-    mtx_lock(&w->mtx);
-    while (w->job)
-        cnd_wait(&w->cnd, &w->mtx);
-    w->quit = 1;
-    cnd_broadcast(&w->cnd);
-    mtx_unlock(&w->mtx);
-    thrd_join(w->thr, NULL);
-    cnd_destroy(&w->cnd);
-    mtx_destroy(&w->mtx);
-    free(w);
-    o->worker = NULL;
 }
 
 void ef_vec_out_init(ef_vec_out *o, FILE *fp, unsigned flags)
@@ -137,22 +39,13 @@ void ef_vec_out_init(ef_vec_out *o, FILE *fp, unsigned flags)
     o->bytes = 0;
     o->err = 0;
     o->used = 0;
-    o->buf = o->mem[0];
-    o->worker = NULL;
-    if (flags & EF_VEC_OUT_THREAD)
-        start_worker(o);
 }
 
 void ef_vec_out_drain(ef_vec_out *o)
 {
     if (!o->used)
         return;
-    if (o->worker) {
-        submit(o->worker, o->buf, o->used);
-        o->buf = o->buf == o->mem[0] ? o->mem[1] : o->mem[0];
-    } else {
-        emit(o, o->buf, o->used);
-    }
+    emit(o, o->buf, o->used);
     o->used = 0;
 }
 
@@ -162,12 +55,7 @@ void ef_vec_out_write(ef_vec_out *o, const void *data, size_t n)
     if (n >= EF_VEC_OUT_BUF) {
         ef_vec_out_drain(o);
         o->bytes += n;
-        if (o->worker) {            /* the caller's memory: done before we return */
-            submit(o->worker, p, n);
-            wait_idle(o->worker);
-        } else {
-            emit(o, p, n);
-        }
+        emit(o, p, n);
         return;
     }
     if (EF_VEC_OUT_BUF - o->used < n)
@@ -205,7 +93,6 @@ void ef_vec_out_u64(ef_vec_out *o, uint64_t v)
 int ef_vec_out_finish(ef_vec_out *o, uint8_t digest[32])
 {
     ef_vec_out_drain(o);
-    stop_worker(o);
 #ifndef EF_NO_MANIFEST
     if (digest)
         ef_vec_sha256_final(&o->sha, digest);
