@@ -19,14 +19,16 @@
 extern "C" {
 #endif
 
-enum { B_NONZERO = 0, B_EVENODD = 1 };   /* the same values as ef_rule */
+enum { B_NONZERO = 0, B_EVENODD = 1 }; /* the same values as ef_rule */
 
-typedef struct bpoint { double x, y; } bpoint;
+typedef struct bpoint {
+    double x, y;
+} bpoint;
 
 typedef struct bshape {
-    int rule;                 /* B_NONZERO or B_EVENODD */
-    uint8_t r, g, b, a;       /* straight colour, a = opacity */
-    uint32_t first;           /* first contour (index into bscene.start) */
+    int rule;           /* B_NONZERO or B_EVENODD */
+    uint8_t r, g, b, a; /* straight colour, a = opacity */
+    uint32_t first;     /* first contour (index into bscene.start) */
     uint32_t ncontours;
 } bshape;
 
@@ -35,10 +37,10 @@ typedef struct bshape {
  * changes only the points, so a frame is this topology plus a point array. */
 typedef struct bscene {
     char name[64];
-    double w, h;              /* the scene's own canvas (the transform fits it) */
+    double w, h; /* the scene's own canvas (the transform fits it) */
     bshape *shapes;
     uint32_t nshapes;
-    uint32_t *start;          /* ncontours + 1 entries */
+    uint32_t *start; /* ncontours + 1 entries */
     uint32_t ncontours;
     bpoint *pts;
     uint32_t npoints;
@@ -72,9 +74,9 @@ typedef struct brenderer {
     const char *name;
     /* NULL if the renderer can draw s, else why not. */
     const char *(*unsupported)(const bscene *s);
-    void *(*create)(int w, int h);                 /* untimed */
-    void (*clear)(void *st);                       /* untimed: transparent */
-    void (*render)(void *st, const bscene *s, const bpoint *pts);   /* timed */
+    void *(*create)(int w, int h);                                /* untimed */
+    void (*clear)(void *st);                                      /* untimed: transparent */
+    void (*render)(void *st, const bscene *s, const bpoint *pts); /* timed */
     /* The result as premultiplied RGBA8, w*h*4 bytes, rows top down. */
     void (*read)(void *st, uint8_t *rgba);
     void (*destroy)(void *st);
@@ -91,8 +93,8 @@ const brenderer *bench_truth_of(const brenderer *r);
 /* r_edgeflag.c: hashes of edgeflag's image (ef_fill) and span stream
  * (ef_rasterize) for one frame, and its diagnostics (edges in, dropped,
  * winding overflows); returns 0, 1 if the two paths' diagnostics differ. */
-int bench_ef_hash(int samples, int w, int h, const bscene *s, const bpoint *pts, uint64_t *img_hash,
-                  uint64_t *spans, uint64_t diag[3]);
+int bench_ef_hash(int samples, int w, int h, const bscene *s, const bpoint *pts, uint64_t *img_hash, uint64_t *spans,
+                  uint64_t diag[3]);
 
 /* ---- shared helpers ---- */
 /* An RGBA8 premultiplied canvas used by several renderers. */

@@ -44,10 +44,10 @@
 #define MAX_SIZES 8
 #define MAX_REPEAT 101
 
-static const brenderer *const kAll[] = { &br_agg, &br_cairo, &br_cairo_noaa, &br_freetype, &br_stb,
-                                         &br_ef8, &br_ef16, &br_ef32, &br_truth,
-                                         &br_ef8t, &br_ef16t, &br_ef32t, &br_ef16rgb, &br_ef16trgb,
-                                         &br_truth_tent, &br_truth_rgb, &br_truth_trgb };
+static const brenderer *const kAll[] = { &br_agg,       &br_cairo,     &br_cairo_noaa, &br_freetype, &br_stb,
+                                         &br_ef8,       &br_ef16,      &br_ef32,       &br_truth,    &br_ef8t,
+                                         &br_ef16t,     &br_ef32t,     &br_ef16rgb,    &br_ef16trgb, &br_truth_tent,
+                                         &br_truth_rgb, &br_truth_trgb };
 static const char *const kDefaultRenderers = "agg,cairo,cairo-noaa,freetype,stb,ef8,ef16,ef32";
 static const char *const kFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 #define FIT_W 1280
@@ -111,9 +111,9 @@ static int parse_size(const char *s, int *w, int *h)
 
 typedef struct bcase {
     bscene sc;
-    char scene[64];     /* display name without the rule suffix */
-    char rule[16];      /* evenodd, nonzero or mixed */
-    char set[8];        /* real or paper */
+    char scene[64]; /* display name without the rule suffix */
+    char rule[16];  /* evenodd, nonzero or mixed */
+    char set[8];    /* real or paper */
 } bcase;
 
 static void load_case(bcase *c, const char *spec)
@@ -143,7 +143,7 @@ static void load_case(bcase *c, const char *spec)
         die(err, NULL);
     if (white && bscene_add_background(&c->sc))
         die("out of memory", NULL);
-    bscene_set_rule(&c->sc, rule);   /* the background too: a rectangle fills alike under both rules */
+    bscene_set_rule(&c->sc, rule); /* the background too: a rectangle fills alike under both rules */
     int eo = 0, nz = 0;
     for (uint32_t i = 0; i < c->sc.nshapes; i++)
         *(c->sc.shapes[i].rule == B_EVENODD ? &eo : &nz) += 1;
@@ -151,7 +151,7 @@ static void load_case(bcase *c, const char *spec)
     snprintf(c->scene, sizeof c->scene, "%s", c->sc.name);
     size_t n = strlen(c->scene), k = strlen(c->rule);
     if (n > k + 1 && c->scene[n - k - 1] == '_' && !strcmp(c->scene + n - k, c->rule))
-        c->scene[n - k - 1] = '\0';          /* paper_star_evenodd -> paper_star */
+        c->scene[n - k - 1] = '\0'; /* paper_star_evenodd -> paper_star */
     snprintf(c->set, sizeof c->set, "%s", !strncmp(c->scene, "paper_", 6) ? "paper" : "real");
 }
 
@@ -228,7 +228,7 @@ static int cmd_run(int argc, char **argv)
                 if (!st[r])
                     die("cannot create renderer", R[r]->name);
                 R[r]->clear(st[r]);
-                R[r]->render(st[r], sc, fr);      /* untimed warm-up: buffers grow here */
+                R[r]->render(st[r], sc, fr); /* untimed warm-up: buffers grow here */
             }
             fprintf(stderr, "efbench: %dx%d %s %s (%u shapes, %u points) ...\n", W, H, c.scene, c.rule, sc->nshapes,
                     sc->npoints);
@@ -253,8 +253,7 @@ static int cmd_run(int argc, char **argv)
                 }
             }
             for (int r = 0; r < nr; r++) {
-                printf("%s,%s,%s,%d,%d,%u,%u,%s,", c.set, c.scene, c.rule, W, H, sc->nshapes, sc->npoints,
-                       R[r]->name);
+                printf("%s,%s,%s,%d,%d,%u,%u,%s,", c.set, c.scene, c.rule, W, H, sc->nshapes, sc->npoints, R[r]->name);
                 if (!st[r]) {
                     printf("0,0,,,,,,\"unsupported: %s\"\n", why[r]);
                     continue;
@@ -401,7 +400,8 @@ static void sheet_end(sheet *s, const char *path)
 static int cmd_quality(int argc, char **argv)
 {
     int W = 640, H = 480;
-    const char *rlist = "ef8,ef16,ef32,agg,cairo,cairo-noaa,freetype,stb,ef8t,ef16t,ef32t,ef16rgb,ef16trgb", *flist = "0,50,100,150", *pics = NULL;
+    const char *rlist = "ef8,ef16,ef32,agg,cairo,cairo-noaa,freetype,stb,ef8t,ef16t,ef32t,ef16rgb,ef16trgb",
+               *flist = "0,50,100,150", *pics = NULL;
     const char *cases[256];
     int ncases = 0;
     for (int i = 0; i < argc; i++) {
@@ -488,7 +488,7 @@ static int cmd_quality(int argc, char **argv)
                 printf("%s,%s,%d,%d,%s,%s,,,,,,,,\"unsupported: %s\"\n", c.scene, c.rule, W, H, fls, R[r]->name, why);
                 continue;
             }
-            int tki = 0;                               /* the truth this renderer is measured against */
+            int tki = 0; /* the truth this renderer is measured against */
             while (tki < ntk - 1 && tk[tki] != bench_truth_of(R[r]))
                 tki++;
             void *st = R[r]->create(W, H);
@@ -641,7 +641,7 @@ static int cmd_hash(int argc, char **argv)
     return bad;
 }
 
-int bench_report(int argc, char **argv);   /* report.c */
+int bench_report(int argc, char **argv); /* report.c */
 
 int main(int argc, char **argv)
 {

@@ -20,7 +20,8 @@
 
 #include "bench.h"
 
-namespace {
+namespace
+{
 
 struct AggState {
     int w = 0, h = 0;
@@ -93,11 +94,10 @@ void agg_destroy(void *p)
     delete st;
 }
 
-const char *agg_unsupported(const bscene *)
-{
-    return nullptr;
-}
+const char *agg_unsupported(const bscene *) { return nullptr; }
 
-}  // namespace
+}   // namespace
 
-extern "C" const brenderer br_agg = { "agg", agg_unsupported, agg_create, agg_clear, agg_render, agg_read, agg_destroy };
+extern "C" const brenderer br_agg = {
+    "agg", agg_unsupported, agg_create, agg_clear, agg_render, agg_read, agg_destroy
+};

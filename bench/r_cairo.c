@@ -79,7 +79,7 @@ static void cr_read(void *p, uint8_t *rgba)
     for (int y = 0; y < st->h; y++)
         for (int x = 0; x < st->w; x++) {
             uint32_t v;
-            memcpy(&v, d + (size_t)y * (size_t)stride + (size_t)x * 4, 4);   /* native-endian ARGB */
+            memcpy(&v, d + (size_t)y * (size_t)stride + (size_t)x * 4, 4); /* native-endian ARGB */
             uint8_t *o = rgba + ((size_t)y * (size_t)st->w + (size_t)x) * 4;
             o[0] = (uint8_t)(v >> 16);
             o[1] = (uint8_t)(v >> 8);
@@ -105,5 +105,6 @@ static const char *cr_unsupported(const bscene *s)
 }
 
 const brenderer br_cairo = { "cairo", cr_unsupported, cr_create, cr_clear, cr_render, cr_read, cr_destroy };
-const brenderer br_cairo_noaa = { "cairo-noaa", cr_unsupported, cr_create_noaa, cr_clear, cr_render, cr_read,
-                                  cr_destroy };
+const brenderer br_cairo_noaa = {
+    "cairo-noaa", cr_unsupported, cr_create_noaa, cr_clear, cr_render, cr_read, cr_destroy
+};

@@ -21,7 +21,7 @@
 typedef struct ef_state {
     ef_ctx *ctx;
     ef_image img;
-    ef_point *buf;            /* the frame's vertices in Q16.8 */
+    ef_point *buf; /* the frame's vertices in Q16.8 */
     uint32_t cap;
     int samples;
 } ef_state;
@@ -143,8 +143,8 @@ static void span_hash(void *user, int32_t y, int32_t x, int32_t len, uint32_t ma
     *h = fnv(*h, v, sizeof v);
 }
 
-int bench_ef_hash(int samples, int w, int h, const bscene *s, const bpoint *pts, uint64_t *img_hash,
-                  uint64_t *spans, uint64_t diag[3])
+int bench_ef_hash(int samples, int w, int h, const bscene *s, const bpoint *pts, uint64_t *img_hash, uint64_t *spans,
+                  uint64_t diag[3])
 {
     ef_state *st = ef_create_n(w, h, samples);
     ef_ctx *ctx2;

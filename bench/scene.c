@@ -15,7 +15,7 @@
 #include "bench.h"
 #include "ef_scene.h"
 
-#define B_PI 3.14159265358979323846   /* M_PI, which strict C11 does not declare */
+#define B_PI 3.14159265358979323846 /* M_PI, which strict C11 does not declare */
 
 static void base_name(char *dst, size_t n, const char *path)
 {
@@ -102,7 +102,7 @@ int bscene_load(bscene *s, const char *path, int fit_w, int fit_h, char *err, si
     if (es.ncontours)
         memcpy(s->start, es.start, ((size_t)es.ncontours + 1) * sizeof *s->start);
     for (uint32_t i = 0; i < es.npoints; i++) {
-        s->pts[i].x = es.points[i].x / 256.0;   /* exact: |v| < 2^23 */
+        s->pts[i].x = es.points[i].x / 256.0; /* exact: |v| < 2^23 */
         s->pts[i].y = es.points[i].y / 256.0;
     }
     ef_scene_free(&es);
@@ -159,7 +159,7 @@ static inline double snap256(double v) { return round(v * 256.0) / 256.0; }
 void bscene_frame(const bscene *s, int W, int H, int k, bpoint *out)
 {
     const double sc = fmin(W / s->w, H / s->h);
-    const double th = k * 0.1 * B_PI / 180.0;   /* SPEC: pi = M_PI */
+    const double th = k * 0.1 * B_PI / 180.0; /* SPEC: pi = M_PI */
     const double c = cos(th), sn = sin(th);
     const double cx0 = s->w / 2, cy0 = s->h / 2;
     const double cx1 = W / 2.0 + k * 0.05, cy1 = H / 2.0 + k * 0.03;

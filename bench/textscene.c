@@ -40,9 +40,9 @@ static const char *const kText =
 typedef struct builder {
     bscene *s;
     uint32_t cap_pts, cap_start, cap_shapes;
-    double ox, oy, scale;     /* pen position (px) and font units -> px */
-    double lx, ly;            /* last point, px */
-    uint32_t contour_first;   /* index of the current contour's first point */
+    double ox, oy, scale;   /* pen position (px) and font units -> px */
+    double lx, ly;          /* last point, px */
+    uint32_t contour_first; /* index of the current contour's first point */
     int in_contour;
     int oom;
 } builder;
@@ -206,7 +206,7 @@ int bscene_text(bscene *s, const char *font_path, char *err, size_t errlen)
             break;
         }
         bshape *sh = &s->shapes[s->nshapes++];
-        sh->rule = B_NONZERO;   /* TrueType outlines are non-zero */
+        sh->rule = B_NONZERO; /* TrueType outlines are non-zero */
         sh->r = sh->g = sh->b = 0;
         sh->a = 255;
         sh->first = s->ncontours;

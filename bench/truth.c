@@ -20,11 +20,11 @@
 
 #include "bench.h"
 
-#define TSS 64   /* samples per pixel side */
+#define TSS 64 /* samples per pixel side */
 
 typedef struct tedge {
-    int64_t x0, y0, dx, dy;   /* upper end point, dy > 0, Q16.8 */
-    int32_t r0, r1;           /* first and last sample row (global, inclusive) */
+    int64_t x0, y0, dx, dy; /* upper end point, dy > 0, Q16.8 */
+    int32_t r0, r1;         /* first and last sample row (global, inclusive) */
     int dir;
 } tedge;
 
@@ -37,13 +37,13 @@ typedef struct truth_state {
     bcanvas cv;
     tedge *e;
     size_t cap_e;
-    int32_t *act;             /* active edge indices */
+    int32_t *act; /* active edge indices */
     xing *xs;
-    uint16_t *count;          /* covered samples per pixel of the row */
+    uint16_t *count; /* covered samples per pixel of the row */
     uint8_t *cov;
 } truth_state;
 
-static int64_t floordiv(int64_t a, int64_t d)   /* d > 0 */
+static int64_t floordiv(int64_t a, int64_t d) /* d > 0 */
 {
     int64_t q = a / d;
     return (a % d != 0 && a < 0) ? q - 1 : q;
@@ -74,7 +74,7 @@ static void truth_clear(void *p)
     memset(st->cv.px, 0, st->cv.stride * (size_t)st->cv.h);
 }
 
-static void add_run(uint16_t *count, int64_t ga, int64_t gb)   /* samples [ga, gb) */
+static void add_run(uint16_t *count, int64_t ga, int64_t gb) /* samples [ga, gb) */
 {
     int64_t pa = ga / TSS, pb = (gb - 1) / TSS;
     if (pa == pb) {
@@ -150,7 +150,7 @@ static void truth_shape(truth_state *st, const bscene *s, const bpoint *pts, con
             if (next == ne)
                 break;
             if (st->e[next].r0 / TSS > j)
-                j = st->e[next].r0 / TSS;          /* skip rows without edges */
+                j = st->e[next].r0 / TSS; /* skip rows without edges */
         }
         memset(st->count, 0, (size_t)W * sizeof *st->count);
         int64_t lo = GW, hi = 0;
@@ -162,7 +162,7 @@ static void truth_shape(truth_state *st, const bscene *s, const bpoint *pts, con
             for (size_t k = 0; k < nact; k++) {
                 const tedge *E = &st->e[st->act[k]];
                 if (E->r1 < r)
-                    continue;                       /* finished */
+                    continue; /* finished */
                 st->act[w++] = st->act[k];
                 int64_t n = E->x0 * E->dy + (Y - E->y0) * E->dx;
                 xing x = { ceildiv(n - 2 * E->dy, 4 * E->dy), E->dir };
@@ -237,5 +237,5 @@ static const char *truth_unsupported(const bscene *s)
     return NULL;
 }
 
-const brenderer br_truth = { "truth", truth_unsupported, truth_create, truth_clear, truth_render, truth_read,
-                             truth_destroy };
+const brenderer br_truth = { "truth",      truth_unsupported, truth_create, truth_clear,
+                             truth_render, truth_read,        truth_destroy };

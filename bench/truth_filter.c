@@ -21,7 +21,7 @@
 #include "bench.h"
 
 #define TSS 64
-#define PAD 64            /* samples past each canvas side (half a pixel is 32; margin) */
+#define PAD 64 /* samples past each canvas side (half a pixel is 32; margin) */
 
 typedef struct fedge {
     int64_t x0, y0, dx, dy;
@@ -32,9 +32,9 @@ typedef struct fedge {
 typedef struct ft_state {
     bcanvas cv;
     int tent, nch;
-    int32_t delta[3];     /* R, G, B */
-    double full[3];       /* weight of a full support, per channel */
-    double *acc;          /* W * H * 3 */
+    int32_t delta[3]; /* R, G, B */
+    double full[3];   /* weight of a full support, per channel */
+    double *acc;      /* W * H * 3 */
     fedge *e;
     size_t cap;
     int64_t *xs;
@@ -63,8 +63,8 @@ static double xweight(const ft_state *st, int64_t ga, int64_t gb, int64_t i, int
         return h >= l ? (double)(h - l + 1) : 0;
     }
     const int64_t Xc = 256 * i + 128 + delta;
-    const int64_t l1 = fdiv(Xc - 258, 4) + 1, h1 = fdiv(Xc - 2, 4);      /* Xc - 256 < X <= Xc */
-    const int64_t l2 = h1 + 1, h2 = cdiv(Xc + 254, 4) - 1;              /* Xc < X < Xc + 256 */
+    const int64_t l1 = fdiv(Xc - 258, 4) + 1, h1 = fdiv(Xc - 2, 4); /* Xc - 256 < X <= Xc */
+    const int64_t l2 = h1 + 1, h2 = cdiv(Xc + 254, 4) - 1;          /* Xc < X < Xc + 256 */
     double s = 0;
     /* left: (256 - Xc + 4g + 2)/256; right: (256 + Xc - 4g - 2)/256 */
     s += lin_sum(ga > l1 ? ga : l1, gb < h1 ? gb : h1, (256.0 - (double)Xc + 2) / 256, 4.0 / 256);
@@ -83,7 +83,7 @@ static void *ft_create(int w, int h, int tent, int rgb)
     st->nch = rgb ? 3 : 1;
     for (int c = 0; c < 3; c++)
         st->delta[c] = rgb ? (c - 1) * 85 : 0;
-    for (int c = 0; c < 3; c++)    /* a run over everything, for pixel column 8 (any works) */
+    for (int c = 0; c < 3; c++) /* a run over everything, for pixel column 8 (any works) */
         st->full[c] = xweight(st, -1000000, 1000000, 8, st->delta[c]) * (double)TSS;
     st->acc = calloc((size_t)w * (size_t)h * 3, sizeof *st->acc);
     if (!st->acc) {
@@ -164,7 +164,7 @@ static void ft_shape(ft_state *st, const bscene *s, const bpoint *pts, const bsh
     for (int64_t r = ylo; r <= yhi; r++) {
         const int64_t Y = 4 * r + 2;
         size_t nx = 0;
-        for (size_t k = 0; k < ne; k++) {           /* every edge crossing the row, sorted */
+        for (size_t k = 0; k < ne; k++) { /* every edge crossing the row, sorted */
             const fedge *E = &st->e[k];
             if (r < E->r0 || r > E->r1)
                 continue;
@@ -276,9 +276,13 @@ static const char *ft_unsupported(const bscene *s)
     return NULL;
 }
 
-const brenderer br_truth_tent = { "truth-tent", ft_unsupported, ft_create_tent, ft_clear, ft_render, ft_read, ft_destroy };
+const brenderer br_truth_tent = {
+    "truth-tent", ft_unsupported, ft_create_tent, ft_clear, ft_render, ft_read, ft_destroy
+};
 const brenderer br_truth_rgb = { "truth-rgb", ft_unsupported, ft_create_rgb, ft_clear, ft_render, ft_read, ft_destroy };
-const brenderer br_truth_trgb = { "truth-trgb", ft_unsupported, ft_create_trgb, ft_clear, ft_render, ft_read, ft_destroy };
+const brenderer br_truth_trgb = {
+    "truth-trgb", ft_unsupported, ft_create_trgb, ft_clear, ft_render, ft_read, ft_destroy
+};
 
 const brenderer *bench_truth_of(const brenderer *r)
 {

@@ -115,11 +115,11 @@ int ef_cli_getopt(const ef_cli_command *c, int argc, char **argv, void *a)
 
     while (opts[nopts].name)
         nopts++;
-    if (nopts > EF_CLI_MAX_OPTIONS) {   /* a table too long for seen[]: a bug, caught by any test */
+    if (nopts > EF_CLI_MAX_OPTIONS) { /* a table too long for seen[]: a bug, caught by any test */
         ef_cli_error("%s: %d options, more than EF_CLI_MAX_OPTIONS", c->name, nopts);
         return EF_CLI_EXIT_INTERNAL;
     }
-    for (int k = 0; k < nopts; k++)   /* the short spellings, each "C:" (all take a value) */
+    for (int k = 0; k < nopts; k++) /* the short spellings, each "C:" (all take a value) */
         if (opts[k].val < 256 && strlen(shorts) + 3 <= sizeof shorts) {
             size_t n = strlen(shorts);
             shorts[n] = (char)opts[k].val;
@@ -128,7 +128,7 @@ int ef_cli_getopt(const ef_cli_command *c, int argc, char **argv, void *a)
         }
 
     opterr = 0;
-    optind = 0;   /* glibc: a full restart (the fuzz target parses many lines) */
+    optind = 0; /* glibc: a full restart (the fuzz target parses many lines) */
     for (;;) {
         int at = optind ? optind : 1, k = -1, r;
         const char *v = NULL;
@@ -162,14 +162,13 @@ int ef_cli_getopt(const ef_cli_command *c, int argc, char **argv, void *a)
             if (ch == ':' && (e >= 0 || (arg[0] == '-' && arg[1] != '-' && arg[2] == '\0')))
                 return ef_cli_usage_error(c->name, "option '%s' needs a value", arg);
             if (ch == '?' && e >= 0 && opts[e].has_arg == no_argument && strchr(arg, '='))
-                return ef_cli_usage_error(c->name, "option '%.*s' takes no value", (int)(strchr(arg, '=') - arg),
-                                          arg);
+                return ef_cli_usage_error(c->name, "option '%.*s' takes no value", (int)(strchr(arg, '=') - arg), arg);
             return ef_cli_usage_error(c->name, "unknown option '%s'", arg);
         }
-        if (k >= 0) {   /* a long option: only under its full name */
+        if (k >= 0) { /* a long option: only under its full name */
             if (exact_long(opts, arg) != k)
                 return ef_cli_usage_error(c->name, "unknown option '%s'", arg);
-        } else {        /* a short one: "-C VALUE" or "-C=VALUE", nothing else */
+        } else { /* a short one: "-C VALUE" or "-C=VALUE", nothing else */
             for (k = 0; k < nopts && opts[k].val != ch; k++)
                 ;
             if (k == nopts)
@@ -237,8 +236,7 @@ int ef_cli_parse_samples(const char *cmd, const char *v, int32_t *samples)
 int ef_cli_scene_value(const char *cmd, int val, const char *v, ef_cli_scene *s)
 {
     switch (val) {
-    case EF_OPT_SAMPLES:
-        return ef_cli_parse_samples(cmd, v, s->samples) ? 1 : -1;
+    case EF_OPT_SAMPLES: return ef_cli_parse_samples(cmd, v, s->samples) ? 1 : -1;
     case EF_OPT_RULE:
         if (strcmp(v, "evenodd") == 0)
             *s->rule = EF_RULE_EVENODD;
@@ -252,10 +250,8 @@ int ef_cli_scene_value(const char *cmd, int val, const char *v, ef_cli_scene *s)
             return ef_cli_usage_error(cmd, "--size must be WxH with 1 <= W, H <= %d, not '%s'", EF_MAX_CANVAS, v), -1;
         return 1;
     case EF_OPT_FILTER:
-    case EF_OPT_SUBPIXEL:
-        return ef_cli_filter_value(cmd, val, v, s->filter, s->subpixel);
-    default:
-        return 0;
+    case EF_OPT_SUBPIXEL: return ef_cli_filter_value(cmd, val, v, s->filter, s->subpixel);
+    default: return 0;
     }
 }
 
@@ -297,8 +293,7 @@ static int parse_list(const char *cmd, const char *opt, const char *v, const cha
     return 1;
 }
 
-int ef_cli_parse_list(const char *cmd, const char *opt, const char *v, const char *const *names, int n,
-                      uint32_t *out)
+int ef_cli_parse_list(const char *cmd, const char *opt, const char *v, const char *const *names, int n, uint32_t *out)
 {
     return parse_list(cmd, opt, v, names, n, NULL, 0, out);
 }

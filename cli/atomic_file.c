@@ -20,8 +20,8 @@
  * thread that opens and commits (atomic_file.h), with the signals blocked. */
 static char tmp_path[EF_CLI_ATOMIC_MAX][4352];
 static volatile sig_atomic_t tmp_active[EF_CLI_ATOMIC_MAX];
-static unsigned char tmp_used[EF_CLI_ATOMIC_MAX];   /* from open to commit or abort */
-static int tmp_count;     /* slots in use; the handlers are installed while > 0 */
+static unsigned char tmp_used[EF_CLI_ATOMIC_MAX]; /* from open to commit or abort */
+static int tmp_count;                             /* slots in use; the handlers are installed while > 0 */
 
 static struct sigaction old_int, old_term, old_hup, old_xfsz;
 static int handlers_installed;
@@ -53,10 +53,7 @@ static void block_signals(sigset_t *old)
     sigprocmask(SIG_BLOCK, &set, old);
 }
 
-static void restore_signals(const sigset_t *old)
-{
-    sigprocmask(SIG_SETMASK, old, NULL);
-}
+static void restore_signals(const sigset_t *old) { sigprocmask(SIG_SETMASK, old, NULL); }
 
 /* A signal the user asked to ignore (nohup, `trap '' INT`) stays ignored. */
 static void install_one(int sig, struct sigaction *old)

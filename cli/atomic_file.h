@@ -23,10 +23,10 @@
 #define EF_CLI_ATOMIC_MAX 16
 
 typedef struct ef_cli_atomic {
-    FILE *fp;             /* write here between open and commit/abort */
-    const char *path;     /* the destination */
-    int slot;             /* the handler's slot of its temporary; -1 none */
-    int synced;           /* ef_cli_atomic_sync done: commit need not flush again */
+    FILE *fp;         /* write here between open and commit/abort */
+    const char *path; /* the destination */
+    int slot;         /* the handler's slot of its temporary; -1 none */
+    int synced;       /* ef_cli_atomic_sync done: commit need not flush again */
 } ef_cli_atomic;
 
 /* Creates the temporary next to `path`.  0 on success; -1 with errno set

@@ -17,10 +17,10 @@
  * renumber.  70 is EX_SOFTWARE from BSD sysexits.h. */
 enum {
     EF_CLI_EXIT_OK = 0,
-    EF_CLI_EXIT_USAGE = 2,     /* bad command line */
-    EF_CLI_EXIT_INPUT = 3,     /* input unreadable, malformed or over a limit */
-    EF_CLI_EXIT_OUTPUT = 4,    /* output could not be written */
-    EF_CLI_EXIT_INTERNAL = 70  /* a bug, or out of memory */
+    EF_CLI_EXIT_USAGE = 2,    /* bad command line */
+    EF_CLI_EXIT_INPUT = 3,    /* input unreadable, malformed or over a limit */
+    EF_CLI_EXIT_OUTPUT = 4,   /* output could not be written */
+    EF_CLI_EXIT_INTERNAL = 70 /* a bug, or out of memory */
 };
 
 /* The sample count of `render` and `vectors` without --samples (docs/cli.md):
@@ -42,30 +42,30 @@ int ef_cli_vectors(int argc, char **argv); /* cmd_vectors.c, docs/vectors.md */
  * usage error, which has then been reported). */
 typedef struct ef_cli_render_args {
     const char *input, *output;
-    int32_t samples;            /* 8, 16 or 32 (default EF_CLI_SAMPLES_DEFAULT) */
-    int rule;                   /* -1: each shape's own; else an ef_rule */
-    int32_t fit_w, fit_h;       /* 0, 0: the file's own size */
+    int32_t samples;      /* 8, 16 or 32 (default EF_CLI_SAMPLES_DEFAULT) */
+    int rule;             /* -1: each shape's own; else an ef_rule */
+    int32_t fit_w, fit_h; /* 0, 0: the file's own size */
     ef_cli_format fmt;
-    int filter, subpixel;       /* ef_filter, ef_subpixel: box, none (0, 0) by default */
+    int filter, subpixel; /* ef_filter, ef_subpixel: box, none (0, 0) by default */
 } ef_cli_render_args;
 int ef_cli_render_parse(int argc, char **argv, ef_cli_render_args *a);
 
 typedef struct ef_cli_patterns_args {
-    int32_t samples;            /* 0: all three */
+    int32_t samples; /* 0: all three */
     int emit_c;
 } ef_cli_patterns_args;
 int ef_cli_patterns_parse(int argc, char **argv, ef_cli_patterns_args *a);
 
 typedef struct ef_cli_check_args {
     const char *expected, *actual;
-    int32_t errors;             /* mismatches reported: 20 (default), 0 = all */
-    int cycles;                 /* 1: --cycles (default); 0: --transactions */
-    const char *junit;          /* --junit FILE, or NULL */
-    const char *diff_image;     /* --diff-image FILE, or NULL */
-    ef_cli_format diff_fmt;     /* its format (.png, or .pam without libpng) */
-    uint32_t only;              /* --interfaces: interfaces to compare (default all) */
-    uint32_t allow_missing;     /* --allow-missing: interfaces whose dump may be absent */
-    const char *name;           /* --name: the JUnit suite and class name, or NULL */
+    int32_t errors;         /* mismatches reported: 20 (default), 0 = all */
+    int cycles;             /* 1: --cycles (default); 0: --transactions */
+    const char *junit;      /* --junit FILE, or NULL */
+    const char *diff_image; /* --diff-image FILE, or NULL */
+    ef_cli_format diff_fmt; /* its format (.png, or .pam without libpng) */
+    uint32_t only;          /* --interfaces: interfaces to compare (default all) */
+    uint32_t allow_missing; /* --allow-missing: interfaces whose dump may be absent */
+    const char *name;       /* --name: the JUnit suite and class name, or NULL */
 } ef_cli_check_args;
 int ef_cli_check_parse(int argc, char **argv, ef_cli_check_args *a);
 
@@ -73,15 +73,15 @@ int ef_cli_check_parse(int argc, char **argv, ef_cli_check_args *a);
 enum { EF_CLI_VEC_ALL = EF_VEC_F_ALL };
 typedef struct ef_cli_vectors_args {
     const char *input, *dir;
-    int32_t samples;            /* 8, 16 or 32 (default EF_CLI_SAMPLES_DEFAULT) */
-    int rule;                   /* -1: each shape's own; else an ef_rule */
-    int32_t fit_w, fit_h;       /* 0, 0: the file's own size */
-    unsigned formats;           /* default EF_CLI_VEC_ALL */
-    uint32_t ifaces;            /* default every interface */
+    int32_t samples;      /* 8, 16 or 32 (default EF_CLI_SAMPLES_DEFAULT) */
+    int rule;             /* -1: each shape's own; else an ef_rule */
+    int32_t fit_w, fit_h; /* 0, 0: the file's own size */
+    unsigned formats;     /* default EF_CLI_VEC_ALL */
+    uint32_t ifaces;      /* default every interface */
     int force;
-    int dump;                   /* --dump: the model's output named as a DUT's dumps */
-    int filter, subpixel;       /* ef_filter, ef_subpixel: box, none (0, 0) by default */
-    int rtl_headers;            /* --rtl-headers: only ef_ifaces.vh and ef_ifaces_pkg.sv, no INPUT */
+    int dump;             /* --dump: the model's output named as a DUT's dumps */
+    int filter, subpixel; /* ef_filter, ef_subpixel: box, none (0, 0) by default */
+    int rtl_headers;      /* --rtl-headers: only ef_ifaces.vh and ef_ifaces_pkg.sv, no INPUT */
 } ef_cli_vectors_args;
 int ef_cli_vectors_parse(int argc, char **argv, ef_cli_vectors_args *a);
 
@@ -92,13 +92,30 @@ int ef_cli_vectors_parse(int argc, char **argv, ef_cli_vectors_args *a);
 enum {
     EF_OPT_OUTPUT = 'o',
     EF_OPT_N = 'n',
-    EF_OPT_SAMPLES = 256, EF_OPT_RULE, EF_OPT_SIZE, EF_OPT_FILTER, EF_OPT_SUBPIXEL,
-    EF_OPT_FORCE, EF_OPT_DUMP, EF_OPT_RTL_HEADERS, EF_OPT_FORMATS, EF_OPT_INTERFACES,
-    EF_OPT_SEED, EF_OPT_LEVEL, EF_OPT_SHARD, EF_OPT_LIST, EF_OPT_EMIT_C,
-    EF_OPT_ERRORS, EF_OPT_CYCLES, EF_OPT_TRANSACTIONS, EF_OPT_ALLOW_MISSING, EF_OPT_NAME,
-    EF_OPT_JUNIT, EF_OPT_DIFF_IMAGE
+    EF_OPT_SAMPLES = 256,
+    EF_OPT_RULE,
+    EF_OPT_SIZE,
+    EF_OPT_FILTER,
+    EF_OPT_SUBPIXEL,
+    EF_OPT_FORCE,
+    EF_OPT_DUMP,
+    EF_OPT_RTL_HEADERS,
+    EF_OPT_FORMATS,
+    EF_OPT_INTERFACES,
+    EF_OPT_SEED,
+    EF_OPT_LEVEL,
+    EF_OPT_SHARD,
+    EF_OPT_LIST,
+    EF_OPT_EMIT_C,
+    EF_OPT_ERRORS,
+    EF_OPT_CYCLES,
+    EF_OPT_TRANSACTIONS,
+    EF_OPT_ALLOW_MISSING,
+    EF_OPT_NAME,
+    EF_OPT_JUNIT,
+    EF_OPT_DIFF_IMAGE
 };
-enum { EF_CLI_MAX_OPTIONS = 24 };   /* entries of one command's table */
+enum { EF_CLI_MAX_OPTIONS = 24 }; /* entries of one command's table */
 
 /* One command's command line, read by ef_cli_getopt (args.c) with
  * getopt_long.  `options` is the command's getopt_long table (ended by a
@@ -119,16 +136,18 @@ typedef struct ef_cli_command {
     int dashdash;
     void (*usage)(FILE *f);
     int (*option)(void *a, int val, const char *value);
-    int (*operand)(void *a, const char *arg);   /* NULL: the command takes no operands */
-    const char *no_operand_hint;                 /* then: said after "unexpected argument 'ARG'" */
-    int (*finish)(void *a);              /* after the last word; NULL: nothing to check */
-    const char *(*twice)(int val);       /* NULL, or a message for val given twice (NULL: the usual) */
+    int (*operand)(void *a, const char *arg); /* NULL: the command takes no operands */
+    const char *no_operand_hint;              /* then: said after "unexpected argument 'ARG'" */
+    int (*finish)(void *a);                   /* after the last word; NULL: nothing to check */
+    const char *(*twice)(int val);            /* NULL, or a message for val given twice (NULL: the usual) */
 } ef_cli_command;
 /* The options `render` and `vectors` share, for their tables. */
-#define EF_CLI_SCENE_OPTIONS                                                                                    \
-    { "samples", required_argument, NULL, EF_OPT_SAMPLES }, { "rule", required_argument, NULL, EF_OPT_RULE },   \
-    { "size", required_argument, NULL, EF_OPT_SIZE }, { "filter", required_argument, NULL, EF_OPT_FILTER },     \
-    { "subpixel", required_argument, NULL, EF_OPT_SUBPIXEL }
+#define EF_CLI_SCENE_OPTIONS \
+    { "samples", required_argument, NULL, EF_OPT_SAMPLES }, { "rule", required_argument, NULL, EF_OPT_RULE }, \
+        { "size", required_argument, NULL, EF_OPT_SIZE }, { "filter", required_argument, NULL, EF_OPT_FILTER }, \
+    { \
+        "subpixel", required_argument, NULL, EF_OPT_SUBPIXEL \
+    }
 /* Returns -1 when the line parsed and the command should run, else the exit code. */
 int ef_cli_getopt(const ef_cli_command *c, int argc, char **argv, void *a);
 
@@ -163,8 +182,7 @@ int ef_cli_parse_size(const char *s, int32_t max, int32_t *w, int32_t *h);
 
 /* A comma-separated list of names[0..n-1], each at most once, as bits
  * (1 << k); 1, or 0 after a usage error naming opt and the valid names. */
-int ef_cli_parse_list(const char *cmd, const char *opt, const char *v, const char *const *names, int n,
-                      uint32_t *out);
+int ef_cli_parse_list(const char *cmd, const char *opt, const char *v, const char *const *names, int n, uint32_t *out);
 /* The same for a list of interface names (ef_trace.h), reading the old name
  * `edge` of `seg` too. */
 int ef_cli_parse_ifaces(const char *cmd, const char *opt, const char *v, uint32_t *out);

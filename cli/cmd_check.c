@@ -63,22 +63,20 @@ static void usage(FILE *f)
           f);
 }
 
-static const struct option OPTIONS[] = {
-    { "errors", required_argument, NULL, EF_OPT_ERRORS },
-    { "cycles", no_argument, NULL, EF_OPT_CYCLES },
-    { "transactions", no_argument, NULL, EF_OPT_TRANSACTIONS },
-    { "interfaces", required_argument, NULL, EF_OPT_INTERFACES },
-    { "allow-missing", required_argument, NULL, EF_OPT_ALLOW_MISSING },
-    { "name", required_argument, NULL, EF_OPT_NAME },
-    { "junit", required_argument, NULL, EF_OPT_JUNIT },
-    { "diff-image", required_argument, NULL, EF_OPT_DIFF_IMAGE },
-    { NULL, 0, NULL, 0 }
-};
+static const struct option OPTIONS[] = { { "errors", required_argument, NULL, EF_OPT_ERRORS },
+                                         { "cycles", no_argument, NULL, EF_OPT_CYCLES },
+                                         { "transactions", no_argument, NULL, EF_OPT_TRANSACTIONS },
+                                         { "interfaces", required_argument, NULL, EF_OPT_INTERFACES },
+                                         { "allow-missing", required_argument, NULL, EF_OPT_ALLOW_MISSING },
+                                         { "name", required_argument, NULL, EF_OPT_NAME },
+                                         { "junit", required_argument, NULL, EF_OPT_JUNIT },
+                                         { "diff-image", required_argument, NULL, EF_OPT_DIFF_IMAGE },
+                                         { NULL, 0, NULL, 0 } };
 
 /* The line as read: the request, and which of --cycles/--transactions came. */
 typedef struct check_line {
     ef_cli_check_args *a;
-    int timing;   /* 0, or the EF_OPT_ of the first of the two */
+    int timing; /* 0, or the EF_OPT_ of the first of the two */
 } check_line;
 
 static int on_option(void *p, int val, const char *v)
@@ -98,7 +96,7 @@ static int on_option(void *p, int val, const char *v)
             return ef_cli_usage_error(CMD, "--errors must be a number 0..%d (0 = all), not '%s'", INT32_MAX, v);
         return -1;
     case EF_OPT_INTERFACES:
-        if (!ef_cli_parse_ifaces(CMD, "--interfaces", v, &a->only))   /* `edge` read as `seg` */
+        if (!ef_cli_parse_ifaces(CMD, "--interfaces", v, &a->only)) /* `edge` read as `seg` */
             return EF_CLI_EXIT_USAGE;
         if (!(a->only >> EF_IF_PIX & 1u))
             return ef_cli_usage_error(CMD, "--interfaces must include pix (the DUT's output is always checked)");
@@ -119,13 +117,15 @@ static int on_option(void *p, int val, const char *v)
             return ef_cli_usage_error(CMD, "empty --junit file name");
         a->junit = v;
         return -1;
-    default:   /* EF_OPT_DIFF_IMAGE */
+    default: /* EF_OPT_DIFF_IMAGE */
         a->diff_fmt = ef_cli_format_from_path(v);
         if (a->diff_fmt != EF_CLI_FMT_PNG && a->diff_fmt != EF_CLI_FMT_PAM)
             return ef_cli_usage_error(CMD, "--diff-image must name a .png (or .pam) file, not '%s'", v);
         if (!ef_cli_format_available(a->diff_fmt))
-            return ef_cli_usage_error(CMD, "'%s': this edgeflag was built without PNG support (WITH_PNG=0); "
-                                      "use .pam", v);
+            return ef_cli_usage_error(CMD,
+                                      "'%s': this edgeflag was built without PNG support (WITH_PNG=0); "
+                                      "use .pam",
+                                      v);
         a->diff_image = v;
         return -1;
     }
@@ -139,8 +139,7 @@ static int on_operand(void *p, const char *arg)
     else if (!a->actual)
         a->actual = arg;
     else
-        return ef_cli_usage_error(CMD, "more than two files ('%s' after '%s' and '%s')", arg, a->expected,
-                                  a->actual);
+        return ef_cli_usage_error(CMD, "more than two files ('%s' after '%s' and '%s')", arg, a->expected, a->actual);
     return -1;
 }
 
@@ -184,8 +183,7 @@ static int write_junit(const ef_check_result *res, const char *path)
 }
 
 /* The diff image, atomically; 0, or -1 with a message in err and errno. */
-static int write_diff_image(const ef_check_result *res, const char *path, ef_cli_format fmt, char *err,
-                            size_t errsize)
+static int write_diff_image(const ef_check_result *res, const char *path, ef_cli_format fmt, char *err, size_t errsize)
 {
     ef_image img;
     ef_cli_atomic af;
@@ -238,7 +236,7 @@ int ef_cli_check(int argc, char **argv)
     o.keep_marks = a.diff_image != NULL;
     o.report = stdout;
     o.status = stderr;
-    rc = ef_check_run(&o, &res);   /* the exit codes are the command's (docs/cli.md) */
+    rc = ef_check_run(&o, &res); /* the exit codes are the command's (docs/cli.md) */
 
     int out_rc = 0;
     if (a.junit && rc != EF_CHECK_INTERNAL && write_junit(&res, a.junit) != 0) {

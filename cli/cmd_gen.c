@@ -107,18 +107,16 @@ static int parse_shard(const char *s, uint32_t *i, uint32_t *n)
     return 1;
 }
 
-static const struct option OPTIONS[] = {
-    { "", required_argument, NULL, EF_OPT_OUTPUT },   /* -o */
-    { "output", required_argument, NULL, EF_OPT_OUTPUT },
-    { "seed", required_argument, NULL, EF_OPT_SEED },
-    { "level", required_argument, NULL, EF_OPT_LEVEL },
-    { "", required_argument, NULL, EF_OPT_N },        /* -n */
-    { "shard", required_argument, NULL, EF_OPT_SHARD },
-    { "samples", required_argument, NULL, EF_OPT_SAMPLES },
-    { "force", no_argument, NULL, EF_OPT_FORCE },
-    { "list", no_argument, NULL, EF_OPT_LIST },
-    { NULL, 0, NULL, 0 }
-};
+static const struct option OPTIONS[] = { { "", required_argument, NULL, EF_OPT_OUTPUT }, /* -o */
+                                         { "output", required_argument, NULL, EF_OPT_OUTPUT },
+                                         { "seed", required_argument, NULL, EF_OPT_SEED },
+                                         { "level", required_argument, NULL, EF_OPT_LEVEL },
+                                         { "", required_argument, NULL, EF_OPT_N }, /* -n */
+                                         { "shard", required_argument, NULL, EF_OPT_SHARD },
+                                         { "samples", required_argument, NULL, EF_OPT_SAMPLES },
+                                         { "force", no_argument, NULL, EF_OPT_FORCE },
+                                         { "list", no_argument, NULL, EF_OPT_LIST },
+                                         { NULL, 0, NULL, 0 } };
 
 /* The line as read, before the level's configuration is built from it. */
 typedef struct gen_line {
@@ -133,12 +131,8 @@ static int on_option(void *p, int val, const char *v)
     gen_line *l = p;
     gen_args *a = l->a;
     switch (val) {
-    case EF_OPT_FORCE:
-        a->force = 1;
-        break;
-    case EF_OPT_LIST:
-        a->list = 1;
-        break;
+    case EF_OPT_FORCE: a->force = 1; break;
+    case EF_OPT_LIST: a->list = 1; break;
     case EF_OPT_OUTPUT:
         if (!*v)
             return ef_cli_usage_error(CMD, "empty output directory name");
@@ -146,8 +140,10 @@ static int on_option(void *p, int val, const char *v)
         break;
     case EF_OPT_SEED:
         if (!parse_u64(v, &l->seed))
-            return ef_cli_usage_error(CMD, "--seed must be a decimal number 0 .. 18446744073709551615, "
-                                      "not '%s'", v);
+            return ef_cli_usage_error(CMD,
+                                      "--seed must be a decimal number 0 .. 18446744073709551615, "
+                                      "not '%s'",
+                                      v);
         break;
     case EF_OPT_LEVEL:
         if (!ef_cli_parse_int(v, 1, 2, &l->level))
@@ -156,15 +152,14 @@ static int on_option(void *p, int val, const char *v)
     case EF_OPT_N:
         l->seen_n = 1;
         if (!ef_cli_parse_int(v, 0, (int32_t)EF_GEN_MAX_CASES, &l->k))
-            return ef_cli_usage_error(CMD, "-n must be a number of random cases up to %u, not '%s'",
-                                      EF_GEN_MAX_CASES, v);
+            return ef_cli_usage_error(CMD, "-n must be a number of random cases up to %u, not '%s'", EF_GEN_MAX_CASES,
+                                      v);
         break;
     case EF_OPT_SHARD:
         if (!parse_shard(v, &a->shard_i, &a->shard_n))
-            return ef_cli_usage_error(CMD, "--shard must be I/N with 1 <= I <= N <= %u, not '%s'",
-                                      EF_GEN_MAX_CASES, v);
+            return ef_cli_usage_error(CMD, "--shard must be I/N with 1 <= I <= N <= %u, not '%s'", EF_GEN_MAX_CASES, v);
         break;
-    default:   /* EF_OPT_SAMPLES */
+    default: /* EF_OPT_SAMPLES */
         if (!ef_cli_parse_samples(CMD, v, &l->samples))
             return EF_CLI_EXIT_USAGE;
         break;
@@ -188,7 +183,8 @@ static int finish(void *p)
     a->cfg.grid = l->samples;
     if (l->seen_n) {
         if ((uint32_t)l->k < a->cfg.nrandom)
-            return ef_cli_usage_error(CMD, "-n %" PRId32 " is below level %" PRId32 "'s %" PRIu32
+            return ef_cli_usage_error(CMD,
+                                      "-n %" PRId32 " is below level %" PRId32 "'s %" PRIu32
                                       " random cases: -n can raise the count, never lower it",
                                       l->k, l->level, a->cfg.nrandom);
         a->cfg.nrandom = (uint32_t)l->k;
@@ -199,12 +195,10 @@ static int finish(void *p)
     return -1;
 }
 
-static const char *twice(int val)
-{
-    return val == EF_OPT_OUTPUT ? "output directory given twice" : NULL;
-}
+static const char *twice(int val) { return val == EF_OPT_OUTPUT ? "output directory given twice" : NULL; }
 
-static const ef_cli_command COMMAND = { "gen", OPTIONS, 0, usage, on_option, NULL, " (the directory is given with -o)", finish, twice };
+static const ef_cli_command COMMAND = { "gen",  OPTIONS, 0, usage, on_option, NULL, " (the directory is given with -o)",
+                                        finish, twice };
 
 /* Returns -1 when the line parsed and the command should run, else the exit code. */
 static int parse(int argc, char **argv, gen_args *a)
@@ -345,8 +339,8 @@ int ef_cli_gen(int argc, char **argv)
         goto out;
     printf("edgeflag gen: wrote %" PRIu32 " of %" PRIu32 " cases (%" PRIu32 " directed, %" PRIu32
            " random; seed %" PRIu64 ", level %d, shard %" PRIu32 "/%" PRIu32 ") to %s, index %s\n",
-           written, total, ef_gen_directed_count(&a.cfg), a.cfg.nrandom, a.cfg.seed, a.cfg.level, a.shard_i,
-           a.shard_n, a.dir, path);
+           written, total, ef_gen_directed_count(&a.cfg), a.cfg.nrandom, a.cfg.seed, a.cfg.level, a.shard_i, a.shard_n,
+           a.dir, path);
     rc = fflush(stdout) == 0 ? EF_CLI_EXIT_OK : EF_CLI_EXIT_OUTPUT;
 out:
     ef_gen_text_free(&text);

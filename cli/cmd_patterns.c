@@ -36,8 +36,8 @@ static void usage(FILE *f)
  * positions, k = N-1-k_code (docs/spec.md section 4). */
 static const uint8_t orig8[8] = { 5, 0, 3, 6, 1, 4, 7, 2 };
 static const uint8_t orig16[16] = { 1, 8, 4, 15, 11, 2, 6, 14, 10, 3, 7, 12, 0, 9, 5, 13 };
-static const uint8_t orig32[32] = { 28, 13, 6, 23, 0, 17, 10, 27, 4, 21, 14, 31, 8, 25, 18, 3,
-                                    12, 29, 22, 7, 16, 1, 26, 11, 20, 5, 30, 15, 24, 9, 2, 19 };
+static const uint8_t orig32[32] = { 28, 13, 6,  23, 0,  17, 10, 27, 4,  21, 14, 31, 8,  25, 18, 3,
+                                    12, 29, 22, 7,  16, 1,  26, 11, 20, 5,  30, 15, 24, 9,  2,  19 };
 
 static void original_positions(int n, uint8_t *k)
 {
@@ -54,8 +54,7 @@ static void print_table(const uint8_t *k, int n)
 
 static void print_score(const ef_pattern_score *sc, int n)
 {
-    printf("discrepancy %u/%d, spread %u/%d px^2", (unsigned)sc->discrepancy, n * n,
-           (unsigned)sc->spread, n * n);
+    printf("discrepancy %u/%d, spread %u/%d px^2", (unsigned)sc->discrepancy, n * n, (unsigned)sc->spread, n * n);
 }
 
 static int show(int n)
@@ -90,18 +89,16 @@ static int show(int n)
     printf("score:    ");
     print_score(&osc, n);
     cmp = ef_pattern_compare(&sc, &osc);
-    printf(" -> search result %s\n",
-           cmp < 0 ? "is better" : cmp == 0 ? (memcmp(k, orig, (size_t)n) == 0 ? "is the same table"
-                                                                                 : "scores the same")
-                                            : "is WORSE");
+    printf(" -> search result %s\n", cmp < 0 ? "is better"
+                                     : cmp == 0
+                                         ? (memcmp(k, orig, (size_t)n) == 0 ? "is the same table" : "scores the same")
+                                         : "is WORSE");
     printf("model:    ef_pattern(%d) %s\n", n,
-           model && memcmp(model, k, (size_t)n) == 0 ? "is this table"
-                                                     : "DIFFERS: regenerate model/pattern_tables.c");
+           model && memcmp(model, k, (size_t)n) == 0 ? "is this table" : "DIFFERS: regenerate model/pattern_tables.c");
 
     printf("positions (pixel units; x = (2k+1)/%d, y = (2s+1)/%d):\n", 2 * n, 2 * n);
     for (int s = 0; s < n; s++)
-        printf("  s = %2d: k = %2d  x = %2d/%d  y = %2d/%d\n", s, k[s], 2 * k[s] + 1, 2 * n,
-               2 * s + 1, 2 * n);
+        printf("  s = %2d: k = %2d  x = %2d/%d  y = %2d/%d\n", s, k[s], 2 * k[s] + 1, 2 * n, 2 * s + 1, 2 * n);
 
     printf("picture (row s top to bottom, column k left to right):\n  +");
     for (int x = 0; x < n; x++)
@@ -160,8 +157,8 @@ static int emit_c(void)
           " * exact star discrepancy, then the lexicographically least table.\n",
           stdout);
     for (int i = 0; i < 3; i++)
-        printf(" *   N = %2d: discrepancy %u/%d, spread %u/%d px^2%s\n", ns[i],
-               (unsigned)sc[i].discrepancy, ns[i] * ns[i], (unsigned)sc[i].spread, ns[i] * ns[i],
+        printf(" *   N = %2d: discrepancy %u/%d, spread %u/%d px^2%s\n", ns[i], (unsigned)sc[i].discrepancy,
+               ns[i] * ns[i], (unsigned)sc[i].spread, ns[i] * ns[i],
                ns[i] == 8 ? " (exhaustive: the paper's table)" : " (best found)");
     fputs(" */\n"
           "#include \"edgeflag.h\"\n"
@@ -183,11 +180,9 @@ static int emit_c(void)
     return EF_CLI_EXIT_OK;
 }
 
-static const struct option OPTIONS[] = {
-    { "samples", required_argument, NULL, EF_OPT_SAMPLES },
-    { "emit-c", no_argument, NULL, EF_OPT_EMIT_C },
-    { NULL, 0, NULL, 0 }
-};
+static const struct option OPTIONS[] = { { "samples", required_argument, NULL, EF_OPT_SAMPLES },
+                                         { "emit-c", no_argument, NULL, EF_OPT_EMIT_C },
+                                         { NULL, 0, NULL, 0 } };
 
 static int on_option(void *p, int val, const char *v)
 {

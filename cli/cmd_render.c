@@ -52,12 +52,10 @@ static void usage(FILE *f)
 
 typedef ef_cli_render_args render_args;
 
-static const struct option OPTIONS[] = {
-    { "", required_argument, NULL, EF_OPT_OUTPUT },   /* -o */
-    { "output", required_argument, NULL, EF_OPT_OUTPUT },
-    EF_CLI_SCENE_OPTIONS,
-    { NULL, 0, NULL, 0 }
-};
+static const struct option OPTIONS[] = { { "", required_argument, NULL, EF_OPT_OUTPUT }, /* -o */
+                                         { "output", required_argument, NULL, EF_OPT_OUTPUT },
+                                         EF_CLI_SCENE_OPTIONS,
+                                         { NULL, 0, NULL, 0 } };
 
 static int on_option(void *p, int val, const char *v)
 {
@@ -89,24 +87,22 @@ static int finish(void *p)
     if (!a->output)
         return ef_cli_usage_error(CMD, "no output file (-o OUTPUT)");
     struct stat st;
-    if (stat(a->output, &st) == 0 && S_ISDIR(st.st_mode)) {   /* docs/cli.md: a directory is exit 4 */
+    if (stat(a->output, &st) == 0 && S_ISDIR(st.st_mode)) { /* docs/cli.md: a directory is exit 4 */
         ef_cli_error("cannot write '%s': %s", a->output, strerror(EISDIR));
         return EF_CLI_EXIT_OUTPUT;
     }
     a->fmt = ef_cli_format_from_path(a->output);
     if (a->fmt == EF_CLI_FMT_UNKNOWN)
-        return ef_cli_usage_error(CMD, "cannot tell the format of '%s': use .png, .pam or .pgm",
-                                  a->output);
+        return ef_cli_usage_error(CMD, "cannot tell the format of '%s': use .png, .pam or .pgm", a->output);
     if (!ef_cli_format_available(a->fmt))
-        return ef_cli_usage_error(CMD, "'%s': this edgeflag was built without PNG support "
-                                  "(WITH_PNG=0); use .pam or .pgm", a->output);
+        return ef_cli_usage_error(CMD,
+                                  "'%s': this edgeflag was built without PNG support "
+                                  "(WITH_PNG=0); use .pam or .pgm",
+                                  a->output);
     return -1;
 }
 
-static const char *twice(int val)
-{
-    return val == EF_OPT_OUTPUT ? "output given twice" : NULL;
-}
+static const char *twice(int val) { return val == EF_OPT_OUTPUT ? "output given twice" : NULL; }
 
 static const ef_cli_command COMMAND = { "render", OPTIONS, 1, usage, on_option, on_operand, NULL, finish, twice };
 
@@ -121,10 +117,7 @@ int ef_cli_render_parse(int argc, char **argv, render_args *a)
 
 /* Failures the input can cause map to 3; running out of memory is not the
  * input's fault as far as a script can tell, so it is grouped with 70. */
-static int exit_for(ef_status st)
-{
-    return st == EF_ERR_NOMEM ? EF_CLI_EXIT_INTERNAL : EF_CLI_EXIT_INPUT;
-}
+static int exit_for(ef_status st) { return st == EF_ERR_NOMEM ? EF_CLI_EXIT_INTERNAL : EF_CLI_EXIT_INPUT; }
 
 static void on_note(void *user, const char *file, uint32_t line, uint32_t col, const char *msg)
 {
@@ -222,8 +215,8 @@ int ef_cli_render(int argc, char **argv)
 
     st = ef_ctx_create(&ctx, scene.width, scene.height, (int)a.samples);
     if (st != EF_OK) {
-        ef_cli_error("%s: canvas %" PRId32 "x%" PRId32 " at %d samples: %s", a.input, scene.width,
-                     scene.height, (int)a.samples, ef_strerror(st));
+        ef_cli_error("%s: canvas %" PRId32 "x%" PRId32 " at %d samples: %s", a.input, scene.width, scene.height,
+                     (int)a.samples, ef_strerror(st));
         rc = exit_for(st);
         goto out;
     }
@@ -232,8 +225,7 @@ int ef_cli_render(int argc, char **argv)
     rc = 0;
     st = ef_image_alloc(&img, scene.width, scene.height);
     if (st != EF_OK) {
-        ef_cli_error("%s: image %" PRId32 "x%" PRId32 ": %s", a.input, scene.width, scene.height,
-                     ef_strerror(st));
+        ef_cli_error("%s: image %" PRId32 "x%" PRId32 ": %s", a.input, scene.width, scene.height, ef_strerror(st));
         rc = exit_for(st);
         goto out;
     }
@@ -242,7 +234,8 @@ int ef_cli_render(int argc, char **argv)
     st = ef_scene_render(ctx, &scene, a.rule, &img);
     if (st == EF_ERR_ARG && (a.filter || a.subpixel)) {
         ef_cli_error("%s: a vertex lies too close to the coordinate limit (+-32768 px) to be shifted for "
-                     "--filter/--subpixel (docs/spec.md 10.1)", a.input);
+                     "--filter/--subpixel (docs/spec.md 10.1)",
+                     a.input);
         rc = EF_CLI_EXIT_INPUT;
         goto out;
     }

@@ -72,25 +72,22 @@ static void usage(FILE *f)
           f);
 }
 
-
 /* Returns -1 when parsing succeeded, else the exit code to return. */
-static const struct option OPTIONS[] = {
-    { "", required_argument, NULL, EF_OPT_OUTPUT },   /* -o */
-    { "output", required_argument, NULL, EF_OPT_OUTPUT },
-    EF_CLI_SCENE_OPTIONS,
-    { "formats", required_argument, NULL, EF_OPT_FORMATS },
-    { "interfaces", required_argument, NULL, EF_OPT_INTERFACES },
-    { "force", no_argument, NULL, EF_OPT_FORCE },
-    { "dump", no_argument, NULL, EF_OPT_DUMP },
-    { "rtl-headers", no_argument, NULL, EF_OPT_RTL_HEADERS },
-    { NULL, 0, NULL, 0 }
-};
+static const struct option OPTIONS[] = { { "", required_argument, NULL, EF_OPT_OUTPUT }, /* -o */
+                                         { "output", required_argument, NULL, EF_OPT_OUTPUT },
+                                         EF_CLI_SCENE_OPTIONS,
+                                         { "formats", required_argument, NULL, EF_OPT_FORMATS },
+                                         { "interfaces", required_argument, NULL, EF_OPT_INTERFACES },
+                                         { "force", no_argument, NULL, EF_OPT_FORCE },
+                                         { "dump", no_argument, NULL, EF_OPT_DUMP },
+                                         { "rtl-headers", no_argument, NULL, EF_OPT_RTL_HEADERS },
+                                         { NULL, 0, NULL, 0 } };
 
 /* The line as read: the request, and whether an option --rtl-headers does
  * not go with was given. */
 typedef struct vectors_line {
     ef_cli_vectors_args *a;
-    int scene_options;   /* any option but -o, --force and --rtl-headers itself */
+    int scene_options; /* any option but -o, --force and --rtl-headers itself */
 } vectors_line;
 
 static int on_option(void *p, int val, const char *v)
@@ -102,12 +99,8 @@ static int on_option(void *p, int val, const char *v)
     int r;
 
     switch (val) {
-    case EF_OPT_FORCE:
-        a->force = 1;
-        return -1;
-    case EF_OPT_RTL_HEADERS:
-        a->rtl_headers = 1;
-        return -1;
+    case EF_OPT_FORCE: a->force = 1; return -1;
+    case EF_OPT_RTL_HEADERS: a->rtl_headers = 1; return -1;
     case EF_OPT_OUTPUT:
         if (!*v)
             return ef_cli_usage_error(CMD, "empty output directory name");
@@ -137,7 +130,7 @@ static int on_option(void *p, int val, const char *v)
     default:
         if ((r = ef_cli_scene_value(CMD, val, v, &s)) < 0)
             return EF_CLI_EXIT_USAGE;
-        l->scene_options = 1;   /* --filter and --subpixel too (docs/cli.md: only -o and --force) */
+        l->scene_options = 1; /* --filter and --subpixel too (docs/cli.md: only -o and --force) */
         return -1;
     }
 }
@@ -168,10 +161,7 @@ static int finish(void *p)
     return -1;
 }
 
-static const char *twice(int val)
-{
-    return val == EF_OPT_OUTPUT ? "output directory given twice" : NULL;
-}
+static const char *twice(int val) { return val == EF_OPT_OUTPUT ? "output directory given twice" : NULL; }
 
 static const ef_cli_command COMMAND = { "vectors", OPTIONS, 1, usage, on_option, on_operand, NULL, finish, twice };
 
@@ -229,10 +219,7 @@ static int write_rtl_headers(const ef_cli_vectors_args *a)
 
 /* Failures the input can cause map to 3; running out of memory is not the
  * input's fault as far as a script can tell, so it is grouped with 70. */
-static int exit_for(ef_status st)
-{
-    return st == EF_ERR_NOMEM ? EF_CLI_EXIT_INTERNAL : EF_CLI_EXIT_INPUT;
-}
+static int exit_for(ef_status st) { return st == EF_ERR_NOMEM ? EF_CLI_EXIT_INTERNAL : EF_CLI_EXIT_INPUT; }
 
 static void on_note(void *user, const char *file, uint32_t line, uint32_t col, const char *msg)
 {
@@ -271,7 +258,7 @@ static int trace_frame(const ef_cli_vectors_args *a, const ef_scene *scene, ef_c
     ef_diag diag;
     ef_status st;
 
-    memset(img->px, 0, img->stride * (size_t)img->height);   /* composited onto transparent black */
+    memset(img->px, 0, img->stride * (size_t)img->height); /* composited onto transparent black */
     st = ef_trace_enable(ctx, a->ifaces, ef_vec_collect_sink, c);
     if (st == EF_OK)
         st = ef_trace_frame_begin(ctx);

@@ -39,8 +39,8 @@ int ef_cli_apply_filter(ef_ctx *ctx, const char *input, int filter, int subpixel
     if (st == EF_OK)
         return -1;
     if (st == EF_ERR_ARG) {
-        ef_cli_error("%s: canvas %dx%d: --filter tent needs width and height of at most %d (docs/limits.md)",
-                     input, (int)ef_ctx_width(ctx), (int)ef_ctx_height(ctx), EF_MAX_CANVAS - 1);
+        ef_cli_error("%s: canvas %dx%d: --filter tent needs width and height of at most %d (docs/limits.md)", input,
+                     (int)ef_ctx_width(ctx), (int)ef_ctx_height(ctx), EF_MAX_CANVAS - 1);
         return EF_CLI_EXIT_INPUT;
     }
     ef_cli_error("%s: %s", input, ef_strerror(st));

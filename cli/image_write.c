@@ -68,8 +68,8 @@ static int write_pam(FILE *fp, const ef_image *img, char *err, size_t errsize)
     size_t rowbytes = (size_t)img->width * 4u;
 
     errno = 0;
-    if (fprintf(fp, "P7\nWIDTH %d\nHEIGHT %d\nDEPTH 4\nMAXVAL 255\nTUPLTYPE RGB_ALPHA\nENDHDR\n",
-                (int)img->width, (int)img->height) < 0)
+    if (fprintf(fp, "P7\nWIDTH %d\nHEIGHT %d\nDEPTH 4\nMAXVAL 255\nTUPLTYPE RGB_ALPHA\nENDHDR\n", (int)img->width,
+                (int)img->height) < 0)
         return io_error(err, errsize);
     for (int32_t y = 0; y < img->height; y++)
         if (fwrite(img->px + (size_t)y * img->stride, 1, rowbytes, fp) != rowbytes)
@@ -173,9 +173,8 @@ static int write_png(FILE *fp, const ef_image *img, char *err, size_t errsize)
         return -1;
     }
     png_init_io(png, fp);
-    png_set_IHDR(png, info, (png_uint_32)img->width, (png_uint_32)img->height, 8,
-                 PNG_COLOR_TYPE_RGB_ALPHA, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
-                 PNG_FILTER_TYPE_DEFAULT);
+    png_set_IHDR(png, info, (png_uint_32)img->width, (png_uint_32)img->height, 8, PNG_COLOR_TYPE_RGB_ALPHA,
+                 PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_write_info(png, info);
     for (int32_t y = 0; y < img->height; y++) {
         const uint8_t *src = img->px + (size_t)y * img->stride;

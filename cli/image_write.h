@@ -17,12 +17,7 @@
 
 #include <stdio.h>
 
-typedef enum ef_cli_format {
-    EF_CLI_FMT_UNKNOWN = 0,
-    EF_CLI_FMT_PNG,
-    EF_CLI_FMT_PAM,
-    EF_CLI_FMT_PGM
-} ef_cli_format;
+typedef enum ef_cli_format { EF_CLI_FMT_UNKNOWN = 0, EF_CLI_FMT_PNG, EF_CLI_FMT_PAM, EF_CLI_FMT_PGM } ef_cli_format;
 
 /* By the extension of path (case-insensitive): .png, .pam, .pgm. */
 ef_cli_format ef_cli_format_from_path(const char *path);

@@ -96,7 +96,7 @@ int ef_cli_vec_check_dir(const ef_cli_vec_job *job)
     size_t n;
 
     if (stat(job->dir, &st) != 0)
-        return -1;                       /* absent (or unreachable): creating it will tell */
+        return -1; /* absent (or unreachable): creating it will tell */
     if (!S_ISDIR(st.st_mode)) {
         ef_cli_error("cannot create directory '%s': %s", job->dir, strerror(ENOTDIR));
         return EF_CLI_EXIT_OUTPUT;
@@ -163,9 +163,9 @@ typedef struct file_job {
     ef_vec_file *f;
     char path[4096];
     ef_cli_atomic af;
-    int rc;                 /* EF_CLI_EXIT_OK, or the exit code of its failure */
-    int err;                /* errno of a failed write */
-    char why[256];          /* the frame's encoder's message */
+    int rc;        /* EF_CLI_EXIT_OK, or the exit code of its failure */
+    int err;       /* errno of a failed write */
+    char why[256]; /* the frame's encoder's message */
 } file_job;
 
 /* The files are shared out between two lanes (this thread and one more),
@@ -180,7 +180,7 @@ typedef struct lanes {
     size_t n;
     size_t order[MAX_FILES];
     atomic_size_t next;
-    atomic_int stop;        /* a file failed: take no more */
+    atomic_int stop; /* a file failed: take no more */
 } lanes;
 
 /* The frame image encoded into memory (hashed on its way like every other
@@ -219,7 +219,7 @@ static void write_one(ef_vec_out *o, const ef_cli_vec_job *job, file_job *j)
     ef_vec_out_init(o, j->af.fp, EF_VEC_OUT_SHA);
     if (fm) {
         nomem = fm->write(o, job->info, job->collect, f->iface) != 0;
-    } else {                                        /* the frame */
+    } else { /* the frame */
         unsigned char *frame = NULL;
         size_t len = 0;
         if (encode_frame(job->img, &frame, &len, j) != 0) {
@@ -284,7 +284,7 @@ static uint64_t cost(const ef_cli_vec_job *job, const ef_vec_file *f)
     }
     if (f->iface >= 0)
         return (uint64_t)ef_vec_collect_count(job->collect, f->iface) * (ef_vec_hex_digits(f->iface) + 1u) * 13u / 10u;
-    return 45u * f->count;                          /* the frame: count is its pixels */
+    return 45u * f->count; /* the frame: count is its pixels */
 }
 
 static void run_lanes(lanes *l)
@@ -293,7 +293,7 @@ static void run_lanes(lanes *l)
     pthread_t t;
     int started;
 
-    for (size_t k = 0; k < l->n; k++) {             /* insertion sort by cost, stable */
+    for (size_t k = 0; k < l->n; k++) { /* insertion sort by cost, stable */
         size_t i = k;
         while (i > 0 && cost(l->job, l->files[l->order[i - 1]].f) < cost(l->job, l->files[k].f)) {
             l->order[i] = l->order[i - 1];
@@ -311,9 +311,9 @@ static void run_lanes(lanes *l)
     sigaddset(&block, SIGTERM);
     sigaddset(&block, SIGHUP);
     pthread_sigmask(SIG_BLOCK, &block, &old);
-    started = pthread_create(&t, NULL, lane, l) == 0;   /* POSIX threads: ThreadSanitizer follows them */
+    started = pthread_create(&t, NULL, lane, l) == 0; /* POSIX threads: ThreadSanitizer follows them */
     pthread_sigmask(SIG_SETMASK, &old, NULL);
-    lane(l);                                        /* without a second thread: every file here */
+    lane(l); /* without a second thread: every file here */
     if (started)
         pthread_join(t, NULL);
 }
@@ -358,7 +358,7 @@ int ef_cli_vec_write(const ef_cli_vec_job *job, size_t *nfiles)
             f[k].count = ef_vec_collect_count(job->collect, f[k].iface);
         else if (strcmp(f[k].role, "all") == 0)
             f[k].count = ef_vec_collect_total(job->collect, job->ifaces);
-        else                                       /* the frame: its pixels */
+        else /* the frame: its pixels */
             f[k].count = (uint64_t)img->width * (uint64_t)img->height;
         if (join(j->path, sizeof j->path, job->dir, f[k].name) != 0) {
             rc = EF_CLI_EXIT_OUTPUT;
@@ -395,7 +395,7 @@ int ef_cli_vec_write(const ef_cli_vec_job *job, size_t *nfiles)
         }
     }
 #ifdef EF_NO_MANIFEST
-    const int manifest = 0;     /* a build without Nettle (WITH_MANIFEST=0) hashes nothing */
+    const int manifest = 0; /* a build without Nettle (WITH_MANIFEST=0) hashes nothing */
 #else
     const int manifest = !job->dump;
 #endif
@@ -415,7 +415,7 @@ int ef_cli_vec_write(const ef_cli_vec_job *job, size_t *nfiles)
     }
 out:
     for (size_t k = 0; k < opened; k++)
-        ef_cli_atomic_abort(&files[k].af);         /* those not committed: removed */
+        ef_cli_atomic_abort(&files[k].af); /* those not committed: removed */
     free(files);
     free(l);
     free(o);

@@ -15,11 +15,11 @@
 
 typedef struct ef_cli_vec_job {
     const char *dir;
-    unsigned formats;            /* EF_VEC_F_* bits (ef_vec.h) */
-    uint32_t ifaces;             /* interfaces recorded */
+    unsigned formats; /* EF_VEC_F_* bits (ef_vec.h) */
+    uint32_t ifaces;  /* interfaces recorded */
     int force;
-    int dump;                    /* IFACE.actual.hex, vectors.actual.*, frame.actual.*, no manifest */
-    const ef_vec_info *info;     /* for ef_cli_vec_write */
+    int dump;                /* IFACE.actual.hex, vectors.actual.*, frame.actual.*, no manifest */
+    const ef_vec_info *info; /* for ef_cli_vec_write */
     const ef_vec_collect *collect;
     const ef_image *img;
 } ef_cli_vec_job;

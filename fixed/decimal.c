@@ -27,11 +27,11 @@
  */
 #include "fixed_internal.h"
 
-#define DEC_INT_POS 10          /* positions 10^0 .. 10^9: |v| < 2^31 < 10^10 */
-#define DEC_FRAC_POS 33         /* positions 10^-1 .. 10^-33, see (2) */
+#define DEC_INT_POS 10  /* positions 10^0 .. 10^9: |v| < 2^31 < 10^10 */
+#define DEC_FRAC_POS 33 /* positions 10^-1 .. 10^-33, see (2) */
 #define DEC_SLOTS (DEC_INT_POS + DEC_FRAC_POS)
 #define DEC_LIMBS 5
-#define FIVE_POW_11 UINT32_C(48828125)  /* 5^33 = (5^11)^3; 5^11 < 2^26 */
+#define FIVE_POW_11 UINT32_C(48828125) /* 5^33 = (5^11)^3; 5^11 < 2^26 */
 /* Saturation bound for the exponent.  Exact as long as the text is shorter
  * than 10^18 - 43 characters: a larger exponent then moves every non-zero
  * digit out of range (or below 10^-33) just as the capped one does. */
@@ -51,7 +51,7 @@ static void limbs_mul_add(uint32_t n[DEC_LIMBS], uint32_t m, uint32_t a)
 {
     uint64_t carry = a;
     for (int k = 0; k < DEC_LIMBS; k++) {
-        uint64_t cur = (uint64_t)n[k] * m + carry;      /* < 2^62 + 2^32 */
+        uint64_t cur = (uint64_t)n[k] * m + carry; /* < 2^62 + 2^32 */
         n[k] = (uint32_t)cur;
         carry = cur >> 32;
     }
@@ -62,7 +62,7 @@ static void limbs_div_small(uint32_t n[DEC_LIMBS], uint32_t d)
 {
     uint64_t rem = 0;
     for (int k = DEC_LIMBS - 1; k >= 0; k--) {
-        uint64_t cur = (rem << 32) | n[k];                /* rem < d: < 2^64 */
+        uint64_t cur = (rem << 32) | n[k]; /* rem < d: < 2^64 */
         n[k] = (uint32_t)(cur / d);
         rem = cur % d;
     }
@@ -79,20 +79,23 @@ ef_num_status ef_parse_decimal_q32(const char *s, size_t len, ef_q32 *out, size_
         i++;
     }
     size_t int_begin = i;
-    while (i < len && is_digit(s[i])) i++;
+    while (i < len && is_digit(s[i]))
+        i++;
     size_t int_end = i;
     size_t frac_begin = i, frac_end = i;
     if (i < len && s[i] == '.') {
         size_t j = i + 1;
-        while (j < len && is_digit(s[j])) j++;
-        if (int_end > int_begin || j > i + 1) {   /* "1." and ".5", not "." */
+        while (j < len && is_digit(s[j]))
+            j++;
+        if (int_end > int_begin || j > i + 1) { /* "1." and ".5", not "." */
             frac_begin = i + 1;
             frac_end = j;
             i = j;
         }
     }
     if (int_end == int_begin && frac_end == frac_begin) {
-        if (consumed) *consumed = 0;
+        if (consumed)
+            *consumed = 0;
         return EF_NUM_SYNTAX;
     }
 
@@ -117,30 +120,36 @@ ef_num_status ef_parse_decimal_q32(const char *s, size_t len, ef_q32 *out, size_
             i = j;
         }
     }
-    if (consumed) *consumed = i;
+    if (consumed)
+        *consumed = i;
 
     /* ---- place digits: slot k holds position 10^(DEC_INT_POS - 1 - k) ---- */
     unsigned char slot[DEC_SLOTS] = { 0 };
-    int first = DEC_SLOTS;                      /* first non-zero slot */
+    int first = DEC_SLOTS; /* first non-zero slot */
     /* Position of the leading digit; counts are text offsets (< 10^18). */
     int64_t pos = exp10 + (int64_t)(int_end - int_begin) - 1;
     for (size_t k = int_begin; k < frac_end; k++) {
-        if (k == int_end) k = frac_begin;       /* step over the '.' */
-        if (k >= frac_end) break;
-        if (pos < -DEC_FRAC_POS) break;         /* every later digit is below 10^-33 */
+        if (k == int_end)
+            k = frac_begin; /* step over the '.' */
+        if (k >= frac_end)
+            break;
+        if (pos < -DEC_FRAC_POS)
+            break; /* every later digit is below 10^-33 */
         unsigned d = (unsigned)(s[k] - '0');
         if (d != 0) {
-            if (pos >= DEC_INT_POS) return EF_NUM_RANGE;    /* v >= 10^10 */
+            if (pos >= DEC_INT_POS)
+                return EF_NUM_RANGE; /* v >= 10^10 */
             int idx = (int)(DEC_INT_POS - 1 - pos);
             slot[idx] = (unsigned char)d;
-            if (idx < first) first = idx;
+            if (idx < first)
+                first = idx;
         }
         pos--;
     }
 
     /* ---- N = floor(v * 10^33); t = floor(N / 5^33) = floor(v * 2^33) ---- */
     uint32_t n[DEC_LIMBS] = { 0 };
-    for (int k = first; k < DEC_SLOTS;) {       /* Horner, nine digits a step */
+    for (int k = first; k < DEC_SLOTS;) { /* Horner, nine digits a step */
         uint32_t chunk = 0, scale = 1;
         for (int j = 0; j < 9 && k < DEC_SLOTS; j++, k++) {
             chunk = chunk * 10u + slot[k];
@@ -152,13 +161,16 @@ ef_num_status ef_parse_decimal_q32(const char *s, size_t len, ef_q32 *out, size_
     limbs_div_small(n, FIVE_POW_11);
     limbs_div_small(n, FIVE_POW_11);
     for (int k = 2; k < DEC_LIMBS; k++)
-        if (n[k] != 0) return EF_NUM_RANGE;     /* v * 2^33 >= 2^64 */
+        if (n[k] != 0)
+            return EF_NUM_RANGE; /* v * 2^33 >= 2^64 */
     uint64_t t = ((uint64_t)n[1] << 32) | n[0];
 
     /* (1): round half up on the magnitude = ties away from zero overall. */
     uint64_t q = (t >> 1) + (t & 1u);
-    if (q > (uint64_t)INT64_MAX) return EF_NUM_RANGE;   /* |v| rounds to >= 2^31 */
-    if (out) out->v = negative ? -(int64_t)q : (int64_t)q;
+    if (q > (uint64_t)INT64_MAX)
+        return EF_NUM_RANGE; /* |v| rounds to >= 2^31 */
+    if (out)
+        out->v = negative ? -(int64_t)q : (int64_t)q;
     return EF_NUM_OK;
 }
 
@@ -169,7 +181,8 @@ size_t ef_q32_format(ef_q32 v, char *buf)
      * 1 + 10 + 1 + 32 + NUL = 45 <= 48 bytes. */
     size_t n = 0;
     uint64_t m = ef_abs_u64(v.v);
-    if (v.v < 0) buf[n++] = '-';
+    if (v.v < 0)
+        buf[n++] = '-';
 
     char tmp[10];
     size_t t = 0;
@@ -178,7 +191,8 @@ size_t ef_q32_format(ef_q32 v, char *buf)
         tmp[t++] = (char)('0' + ip % 10u);
         ip /= 10u;
     } while (ip != 0);
-    while (t > 0) buf[n++] = tmp[--t];
+    while (t > 0)
+        buf[n++] = tmp[--t];
 
     /* Fraction f / 2^32: each step f*10 < 10 * 2^32 fits uint64; the digit
      * is the part above 2^32.  Stops when the remainder is zero, so no

@@ -41,7 +41,9 @@ _Static_assert((-1 & 3) == 3, "two's complement representation");
  * ------------------------------------------------------------------------ */
 
 /* Q31.32: value = v / 2^32. */
-typedef struct ef_q32 { int64_t v; } ef_q32;
+typedef struct ef_q32 {
+    int64_t v;
+} ef_q32;
 #define EF_Q32_FRAC_BITS 32
 #define EF_Q32_ONE ((int64_t)1 << EF_Q32_FRAC_BITS)
 
@@ -57,7 +59,11 @@ typedef uint32_t ef_angle;
 #define EF_DEV_FRAC_BITS 8
 #define EF_DEV_ONE (1 << EF_DEV_FRAC_BITS)
 
-static inline ef_q32 ef_q32_raw(int64_t v) { ef_q32 r = { v }; return r; }
+static inline ef_q32 ef_q32_raw(int64_t v)
+{
+    ef_q32 r = { v };
+    return r;
+}
 /* Exact: n * 2^32.  Range: |n| < 2^31 (caller's duty; debug-asserted in tests). */
 static inline ef_q32 ef_q32_from_int(int32_t n) { return ef_q32_raw((int64_t)n * EF_Q32_ONE); }
 
@@ -70,11 +76,11 @@ static inline ef_q32 ef_q32_from_int(int32_t n) { return ef_q32_raw((int64_t)n *
  * implementation; compilers fold this to one sar instruction. */
 static inline int32_t ef_asr_i32(int32_t v, unsigned n)
 {
-    return v >= 0 ? (int32_t)((uint32_t)v >> n) : (int32_t)~((uint32_t)~v >> n);
+    return v >= 0 ? (int32_t)((uint32_t)v >> n) : (int32_t) ~((uint32_t)~v >> n);
 }
 static inline int64_t ef_asr_i64(int64_t v, unsigned n)
 {
-    return v >= 0 ? (int64_t)((uint64_t)v >> n) : (int64_t)~((uint64_t)~v >> n);
+    return v >= 0 ? (int64_t)((uint64_t)v >> n) : (int64_t) ~((uint64_t)~v >> n);
 }
 
 /* Shift left = v * 2^n computed modulo 2^64 (wraps; never UB).  The caller
@@ -110,7 +116,7 @@ static inline int64_t ef_round_shr_i64(int64_t v, unsigned n)
  * This is the DDA's quotient/remainder pair (the remainder is the error term). */
 static inline int64_t ef_floordiv_i64(int64_t a, int64_t d)
 {
-    int64_t q = a / d, r = a % d;      /* C11: truncation toward zero */
+    int64_t q = a / d, r = a % d; /* C11: truncation toward zero */
     return (r < 0) ? q - 1 : q;
 }
 static inline int64_t ef_floormod_i64(int64_t a, int64_t d)
@@ -121,7 +127,10 @@ static inline int64_t ef_floormod_i64(int64_t a, int64_t d)
 static inline void ef_divmod_floor_i64(int64_t a, int64_t d, int64_t *q, int64_t *r)
 {
     int64_t qq = a / d, rr = a % d;
-    if (rr < 0) { qq -= 1; rr += d; }
+    if (rr < 0) {
+        qq -= 1;
+        rr += d;
+    }
     *q = qq;
     *r = rr;
 }
@@ -130,10 +139,7 @@ static inline int64_t ef_ceildiv_i64(int64_t a, int64_t d) { return -ef_floordiv
 
 /* Round to nearest, ties away from zero: sign(a) * floor(|a| / d + 1/2).
  * |a| <= INT64_MAX - d/2 (caller's duty). */
-static inline int64_t ef_rounddiv_i64(int64_t a, int64_t d)
-{
-    return a >= 0 ? (a + d / 2) / d : -((-a + d / 2) / d);
-}
+static inline int64_t ef_rounddiv_i64(int64_t a, int64_t d) { return a >= 0 ? (a + d / 2) / d : -((-a + d / 2) / d); }
 
 /* ---------------------------------------------------------------------------
  * Saturation and wrap, made explicit
@@ -158,7 +164,10 @@ bool ef_mul_i64_checked(int64_t a, int64_t b, int64_t *out);
  * ------------------------------------------------------------------------ */
 
 /* Signed 64 x 64 -> 128 product as hi:lo (two's complement). */
-typedef struct ef_i128 { int64_t hi; uint64_t lo; } ef_i128;
+typedef struct ef_i128 {
+    int64_t hi;
+    uint64_t lo;
+} ef_i128;
 ef_i128 ef_mul_i64_wide(int64_t a, int64_t b);
 
 /* Q32 multiply: round_nearest(a * b / 2^32), ties toward +inf.
@@ -209,7 +218,8 @@ static inline unsigned ef_popcount32(uint32_t v)
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline void ef_divmod_floor_i32(int32_t a, int32_t d, int32_t *q, int32_t *r)
+static inline void
+ef_divmod_floor_i32(int32_t a, int32_t d, int32_t *q, int32_t *r)
 {
     const int32_t q0 = a / d, r0 = a % d, neg = -(int32_t)(r0 < 0);
     *q = q0 + neg;
@@ -231,8 +241,8 @@ size_t ef_utf8_len(const unsigned char *s, size_t n);
 /* Status of a number parse. */
 typedef enum ef_num_status {
     EF_NUM_OK = 0,
-    EF_NUM_SYNTAX,     /* not a number at all: no digits where one was needed */
-    EF_NUM_RANGE       /* a number, but its value does not fit Q31.32 */
+    EF_NUM_SYNTAX, /* not a number at all: no digits where one was needed */
+    EF_NUM_RANGE   /* a number, but its value does not fit Q31.32 */
 } ef_num_status;
 
 /* Parses the longest prefix of s[0..len) that is a decimal number:

@@ -11,7 +11,9 @@
 #include "ef_fixed.h"
 
 /* Unsigned 128-bit value hi:lo, used for magnitudes of wide products. */
-typedef struct ef_u128 { uint64_t hi, lo; } ef_u128;
+typedef struct ef_u128 {
+    uint64_t hi, lo;
+} ef_u128;
 
 /* uint64 -> int64 modulo 2^64 is ef_wrap_i64 and |v| is ef_abs_u64 (ef_fixed.h). */
 
@@ -20,12 +22,29 @@ typedef struct ef_u128 { uint64_t hi, lo; } ef_u128;
 static inline unsigned ef_clz_u64(uint64_t v)
 {
     unsigned n = 0;
-    if ((v >> 32) == 0) { n += 32; v <<= 32; }
-    if ((v >> 48) == 0) { n += 16; v <<= 16; }
-    if ((v >> 56) == 0) { n += 8;  v <<= 8; }
-    if ((v >> 60) == 0) { n += 4;  v <<= 4; }
-    if ((v >> 62) == 0) { n += 2;  v <<= 2; }
-    if ((v >> 63) == 0) { n += 1; }
+    if ((v >> 32) == 0) {
+        n += 32;
+        v <<= 32;
+    }
+    if ((v >> 48) == 0) {
+        n += 16;
+        v <<= 16;
+    }
+    if ((v >> 56) == 0) {
+        n += 8;
+        v <<= 8;
+    }
+    if ((v >> 60) == 0) {
+        n += 4;
+        v <<= 4;
+    }
+    if ((v >> 62) == 0) {
+        n += 2;
+        v <<= 2;
+    }
+    if ((v >> 63) == 0) {
+        n += 1;
+    }
     return n;
 }
 

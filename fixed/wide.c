@@ -42,8 +42,10 @@ ef_i128 ef_mul_i64_wide(int64_t a, int64_t b)
     uint64_t ua = (uint64_t)a, ub = (uint64_t)b;
     ef_u128 p = ef_mul_u64_wide(ua, ub);
     uint64_t hi = p.hi;
-    if (a < 0) hi -= ub;
-    if (b < 0) hi -= ua;
+    if (a < 0)
+        hi -= ub;
+    if (b < 0)
+        hi -= ua;
     ef_i128 r;
     r.hi = ef_wrap_i64(hi);
     r.lo = p.lo;
@@ -72,7 +74,8 @@ uint64_t ef_div_u128_u64(ef_u128 n, uint64_t d, uint64_t *rem)
     while (q1 >= base || q1 * v0 > ((rh << 32) | u1)) {
         q1--;
         rh += v1;
-        if (rh >= base) break;
+        if (rh >= base)
+            break;
     }
     /* Partial remainder (u32:u1) - q1*v is < v < 2^64, so computing it
      * modulo 2^64 gives it exactly. */
@@ -83,7 +86,8 @@ uint64_t ef_div_u128_u64(ef_u128 n, uint64_t d, uint64_t *rem)
     while (q0 >= base || q0 * v0 > ((rh << 32) | u0)) {
         q0--;
         rh += v1;
-        if (rh >= base) break;
+        if (rh >= base)
+            break;
     }
     uint64_t r = ((u21 << 32) | u0) - q0 * v;
     *rem = r >> s;
@@ -94,12 +98,14 @@ uint64_t ef_div_u128_u64(ef_u128 n, uint64_t d, uint64_t *rem)
  * The tie rule is applied to the magnitude, which makes it symmetric. */
 static bool round_div_signed(ef_u128 n, uint64_t d, bool negative, int64_t *out)
 {
-    if (n.hi >= d) return false;                /* quotient >= 2^64 */
+    if (n.hi >= d)
+        return false; /* quotient >= 2^64 */
     uint64_t r;
     uint64_t q = ef_div_u128_u64(n, d, &r);
-    bool up = r >= d - r;                       /* 2r >= d without overflow */
+    bool up = r >= d - r; /* 2r >= d without overflow */
     uint64_t limit = negative ? (uint64_t)1 << 63 : ((uint64_t)1 << 63) - 1u;
-    if (q > limit || (up && q == limit)) return false;
+    if (q > limit || (up && q == limit))
+        return false;
     q += up ? 1u : 0u;
     *out = negative ? ef_wrap_i64((uint64_t)0 - q) : (int64_t)q;
     return true;
@@ -114,29 +120,34 @@ bool ef_q32_mul(ef_q32 a, ef_q32 b, ef_q32 *out)
     uint64_t lo = p.lo + ((uint64_t)1 << 31);
     int64_t hi = p.hi + (lo < p.lo ? 1 : 0);
     /* The result hi * 2^32 + (lo >> 32) fits int64 iff -2^31 <= hi < 2^31. */
-    if (hi < -((int64_t)1 << 31) || hi >= ((int64_t)1 << 31)) return false;
+    if (hi < -((int64_t)1 << 31) || hi >= ((int64_t)1 << 31))
+        return false;
     out->v = ef_wrap_i64(((uint64_t)hi << 32) | (lo >> 32));
     return true;
 }
 
 bool ef_q32_div(ef_q32 a, ef_q32 b, ef_q32 *out)
 {
-    if (b.v == 0) return false;                 /* caller's duty; fail safe */
+    if (b.v == 0)
+        return false; /* caller's duty; fail safe */
     uint64_t ua = ef_abs_u64(a.v), ub = ef_abs_u64(b.v);
-    ef_u128 n;                                  /* |a| * 2^32 < 2^96 */
+    ef_u128 n; /* |a| * 2^32 < 2^96 */
     n.hi = ua >> 32;
     n.lo = ua << 32;
     int64_t q;
-    if (!round_div_signed(n, ub, (a.v < 0) != (b.v < 0), &q)) return false;
+    if (!round_div_signed(n, ub, (a.v < 0) != (b.v < 0), &q))
+        return false;
     out->v = q;
     return true;
 }
 
 bool ef_muldiv_i64(int64_t a, int64_t b, int64_t c, int64_t *out)
 {
-    if (c == 0) return false;                   /* caller's duty; fail safe */
+    if (c == 0)
+        return false; /* caller's duty; fail safe */
     ef_u128 n = ef_mul_u64_wide(ef_abs_u64(a), ef_abs_u64(b));
     bool negative = ((a < 0) != (b < 0)) != (c < 0);
-    if (n.hi == 0 && n.lo == 0) negative = false;   /* 0, never "-0" */
+    if (n.hi == 0 && n.lo == 0)
+        negative = false; /* 0, never "-0" */
     return round_div_signed(n, ef_abs_u64(c), negative, out);
 }

@@ -85,7 +85,7 @@ static int pump(run *b, uint32_t ndata, uint32_t chunk, int want_done, uint64_t 
                     *got += f.len;
                 unacked++;
             } else {
-                return EF_HOST_EIO;     /* NAK, ERROR or out of order: not a clean link */
+                return EF_HOST_EIO; /* NAK, ERROR or out of order: not a clean link */
             }
             pos += used;
             idle = now_s();
@@ -114,7 +114,7 @@ static int median_cmp(const void *a, const void *b)
 int ef_bench_link(const ef_transport_ops *ops, ef_link *l, uint64_t bytes, int timeout_ms, ef_bench_result out[4])
 {
     run b = { ops, l, timeout_ms > 0 ? timeout_ms : 2000, malloc(EF_BOARD_FRAME_MAX), malloc(4 * EF_BOARD_FRAME_MAX),
-              0, 16 };
+              0,   16 };
     uint8_t id[EF_BOARD_IDENTIFY_LEN], st[EF_BOARD_STATUS_LEN];
     int r = 0;
     memset(out, 0, 4 * sizeof *out);
@@ -161,7 +161,7 @@ int ef_bench_link(const ef_transport_ops *ops, ef_link *l, uint64_t bytes, int t
         o->mb_s = o->seconds > 0 ? (double)o->bytes / o->seconds / 1e6 : 0;
         o->ran = 1;
     }
-    {   /* latency: the status request's round trip */
+    { /* latency: the status request's round trip */
         enum { N = 200 };
         double t[N];
         for (int i = 0; i < N; i++) {

@@ -10,12 +10,12 @@
 #include "transport.h"
 
 typedef struct ef_bench_result {
-    const char *name;           /* sink, source, loopback, latency */
-    int ran;                    /* 0: not applicable to this transport (note says why) */
-    uint64_t bytes;             /* payload bytes moved (loopback: each way) */
+    const char *name; /* sink, source, loopback, latency */
+    int ran;          /* 0: not applicable to this transport (note says why) */
+    uint64_t bytes;   /* payload bytes moved (loopback: each way) */
     double seconds;
-    double mb_s;                /* payload MB/s (10^6 bytes) */
-    double usec_median, usec_min;  /* latency only */
+    double mb_s;                  /* payload MB/s (10^6 bytes) */
+    double usec_median, usec_min; /* latency only */
     char note[120];
 } ef_bench_result;
 

@@ -18,7 +18,7 @@
 
 #include "transport.h"
 
-typedef struct ef_gpiol ef_gpiol;   /* an open chip and, once requested, its lines */
+typedef struct ef_gpiol ef_gpiol; /* an open chip and, once requested, its lines */
 
 /* Opens the chip at path (/dev/gpiochipN). */
 int ef_gpiol_open(ef_gpiol **out, const char *path, char *err, size_t errlen);
@@ -29,8 +29,8 @@ int ef_gpiol_info(ef_gpiol *c, char *label, size_t labellen, unsigned *nlines);
 int ef_gpiol_line(ef_gpiol *c, unsigned offset, char *name, size_t namelen, char *consumer, size_t conslen);
 /* Requests n_out lines as outputs (driven low) and n_in as inputs, once.
  * Bit i of the values below is the i-th offset of each list. */
-int ef_gpiol_request(ef_gpiol *c, const unsigned *out_offsets, unsigned n_out,
-                     const unsigned *in_offsets, unsigned n_in, const char *consumer, char *err, size_t errlen);
+int ef_gpiol_request(ef_gpiol *c, const unsigned *out_offsets, unsigned n_out, const unsigned *in_offsets,
+                     unsigned n_in, const char *consumer, char *err, size_t errlen);
 int ef_gpiol_set(ef_gpiol *c, uint32_t values);
 int ef_gpiol_get(ef_gpiol *c, uint32_t *values);
 /* "libgpiod 1.6.3 (v1 API)", or why there is no GPIO support. */
@@ -42,8 +42,10 @@ static inline int ef_gpiol_errno(int e)
 {
     switch (e) {
     case EBUSY: return EF_HOST_EBUSY;
-    case EACCES: case EPERM: return EF_HOST_EACCESS;
-    case ENOENT: case ENXIO: return EF_HOST_ENOTFOUND;
+    case EACCES:
+    case EPERM: return EF_HOST_EACCESS;
+    case ENOENT:
+    case ENXIO: return EF_HOST_ENOTFOUND;
     case ENODEV: return EF_HOST_ENODEV;
     case ENOMEM: return EF_HOST_ENOMEM;
     case EINVAL: return EF_HOST_EINVAL;

@@ -63,8 +63,8 @@ int ef_gpiol_line(ef_gpiol *c, unsigned offset, char *name, size_t namelen, char
     return 0;
 }
 
-static int request_bulk(ef_gpiol *c, struct gpiod_line_bulk *bulk, const unsigned *offsets, unsigned n,
-                        int output, const char *consumer, char *err, size_t errlen)
+static int request_bulk(ef_gpiol *c, struct gpiod_line_bulk *bulk, const unsigned *offsets, unsigned n, int output,
+                        const char *consumer, char *err, size_t errlen)
 {
     int zeros[GPIOD_LINE_BULK_MAX_LINES] = { 0 };
     if (gpiod_chip_get_lines(c->chip, (unsigned *)offsets, n, bulk) != 0) {
@@ -72,8 +72,8 @@ static int request_bulk(ef_gpiol *c, struct gpiod_line_bulk *bulk, const unsigne
         snprintf(err, errlen, "%s: cannot get lines: %s", gpiod_chip_name(c->chip), strerror(e));
         return ef_gpiol_errno(e);
     }
-    int rc = output ? gpiod_line_request_bulk_output(bulk, consumer, zeros)
-                    : gpiod_line_request_bulk_input(bulk, consumer);
+    int rc =
+        output ? gpiod_line_request_bulk_output(bulk, consumer, zeros) : gpiod_line_request_bulk_input(bulk, consumer);
     if (rc != 0) {
         int e = errno;
         snprintf(err, errlen, "%s: cannot request %u %s lines: %s", gpiod_chip_name(c->chip), n,
@@ -83,8 +83,8 @@ static int request_bulk(ef_gpiol *c, struct gpiod_line_bulk *bulk, const unsigne
     return 0;
 }
 
-int ef_gpiol_request(ef_gpiol *c, const unsigned *out_offsets, unsigned n_out,
-                     const unsigned *in_offsets, unsigned n_in, const char *consumer, char *err, size_t errlen)
+int ef_gpiol_request(ef_gpiol *c, const unsigned *out_offsets, unsigned n_out, const unsigned *in_offsets,
+                     unsigned n_in, const char *consumer, char *err, size_t errlen)
 {
     int rc = request_bulk(c, &c->out, out_offsets, n_out, 1, consumer, err, errlen);
     if (rc)
@@ -127,7 +127,4 @@ const char *ef_gpiol_version(void)
     return buf;
 }
 
-int ef_gpiol_available(void)
-{
-    return 1;
-}
+int ef_gpiol_available(void) { return 1; }

@@ -70,8 +70,8 @@ int ef_gpiol_line(ef_gpiol *c, unsigned offset, char *name, size_t namelen, char
     return 0;
 }
 
-static int request_one(ef_gpiol *c, struct gpiod_line_request **req, const unsigned *offsets, unsigned n,
-                       int output, const char *consumer, char *err, size_t errlen)
+static int request_one(ef_gpiol *c, struct gpiod_line_request **req, const unsigned *offsets, unsigned n, int output,
+                       const char *consumer, char *err, size_t errlen)
 {
     int rc = EF_HOST_ENOMEM;
     struct gpiod_line_settings *s = gpiod_line_settings_new();
@@ -101,8 +101,8 @@ out:
     return rc;
 }
 
-int ef_gpiol_request(ef_gpiol *c, const unsigned *out_offsets, unsigned n_out,
-                     const unsigned *in_offsets, unsigned n_in, const char *consumer, char *err, size_t errlen)
+int ef_gpiol_request(ef_gpiol *c, const unsigned *out_offsets, unsigned n_out, const unsigned *in_offsets,
+                     unsigned n_in, const char *consumer, char *err, size_t errlen)
 {
     if (n_out > EF_GPIOL_MAX || n_in > EF_GPIOL_MAX)
         return EF_HOST_EINVAL;
@@ -152,7 +152,4 @@ const char *ef_gpiol_version(void)
     return buf;
 }
 
-int ef_gpiol_available(void)
-{
-    return 1;
-}
+int ef_gpiol_available(void) { return 1; }

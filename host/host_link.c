@@ -34,8 +34,8 @@
 #include "ef_vec.h"
 #include "ef_vec_read.h"
 
-#define MAX_TRIES 4             /* timeouts in a row before giving up */
-#define ACKR_EVERY 4            /* result frames between two ACKRs */
+#define MAX_TRIES 4  /* timeouts in a row before giving up */
+#define ACKR_EVERY 4 /* result frames between two ACKRs */
 
 typedef struct hl {
     const ef_transport_ops *ops;
@@ -44,9 +44,9 @@ typedef struct hl {
     ef_host_stream_report *rep;
 
     /* what goes out */
-    uint8_t *cmds;              /* packed 13-byte commands */
+    uint8_t *cmds; /* packed 13-byte commands */
     uint64_t ncmds;
-    uint32_t per_frame, last_seq;  /* last_seq = END */
+    uint32_t per_frame, last_seq; /* last_seq = END */
     uint32_t base, next, window;
     uint32_t input_crc;
     uint8_t *fbuf;
@@ -65,7 +65,7 @@ typedef struct hl {
     uint8_t done_payload[EF_BOARD_DONE_LEN];
 
     char dir[4096], part_path[4200], state_path[4200];
-    uint32_t vec_crc;           /* identifies the vectors file for --resume */
+    uint32_t vec_crc; /* identifies the vectors file for --resume */
     uint64_t vec_size;
     ef_vec_info info;
 } hl;
@@ -80,22 +80,15 @@ static double now_s(void)
 int ef_host_exit_code(int err)
 {
     switch (err) {
-    case EF_HOST_EINVAL:
-        return EF_HX_USAGE;
-    case EF_HOST_EUNSUPPORTED:
-        return EF_HX_NOBOARD;
+    case EF_HOST_EINVAL: return EF_HX_USAGE;
+    case EF_HOST_EUNSUPPORTED: return EF_HX_NOBOARD;
     case EF_HOST_ENODEV:
-    case EF_HOST_ETIMEDOUT:
-        return EF_HX_LOST;
-    case EF_HOST_EACCESS:
-        return EF_HX_ACCESS;
+    case EF_HOST_ETIMEDOUT: return EF_HX_LOST;
+    case EF_HOST_EACCESS: return EF_HX_ACCESS;
     case EF_HOST_ENOTFOUND:
-    case EF_HOST_EAMBIGUOUS:
-        return EF_HX_NOBOARD;
-    case EF_HOST_ENOMEM:
-        return EF_HX_INTERNAL;
-    default:
-        return EF_HX_BOARD;
+    case EF_HOST_EAMBIGUOUS: return EF_HX_NOBOARD;
+    case EF_HOST_ENOMEM: return EF_HX_INTERNAL;
+    default: return EF_HX_BOARD;
     }
 }
 
@@ -127,8 +120,8 @@ void ef_host_ident_describe(const ef_host_ident *id, char *buf, size_t size)
     for (unsigned n = 8; n <= 32; n *= 2)
         if (id->samples_mask >> ef_board_samples_bit(n) & 1u)
             k += (size_t)snprintf(s + k, sizeof s - k, "%s%u", k ? "/" : "", n);
-    snprintf(buf, size, "serial %s, protocol %u, samples %s, canvas up to %" PRIu32 "x%" PRIu32 ", %" PRIu32
-             " edges, window %u",
+    snprintf(buf, size,
+             "serial %s, protocol %u, samples %s, canvas up to %" PRIu32 "x%" PRIu32 ", %" PRIu32 " edges, window %u",
              id->serial[0] ? id->serial : "(none)", id->protocol, k ? s : "none", id->width_max, id->height_max,
              id->edges_max, id->window);
 }
@@ -151,8 +144,7 @@ __attribute__((format(printf, 3, 4))) static int fail(hl *h, int code, const cha
 static int link_fail(hl *h, const char *what, int err)
 {
     const char *d = h->ops->detail ? h->ops->detail(h->l) : NULL;
-    fprintf(stderr, "edgeflag-host: %s failed: %s%s%s\n", what, ef_host_strerror(err), d && *d ? ": " : "",
-            d ? d : "");
+    fprintf(stderr, "edgeflag-host: %s failed: %s%s%s\n", what, ef_host_strerror(err), d && *d ? ": " : "", d ? d : "");
     return ef_host_exit_code(err);
 }
 
@@ -164,8 +156,8 @@ static int lost(hl *h, int err)
     fprintf(stderr,
             "edgeflag-host: %s after %" PRIu32 " of %" PRIu32 " frames acknowledged and %" PRIu32
             " result frames kept in %s; run the same command with --resume to continue\n",
-            err == EF_HOST_ENODEV ? "the board went away (unplugged?)" : "the board stopped answering",
-            h->base, h->last_seq + 1, h->res_next, h->dir);
+            err == EF_HOST_ENODEV ? "the board went away (unplugged?)" : "the board stopped answering", h->base,
+            h->last_seq + 1, h->res_next, h->dir);
     return EF_HX_LOST;
 }
 
@@ -178,9 +170,10 @@ static int save_state(hl *h)
     FILE *f = fopen(tmp, "w");
     if (!f)
         return -1;
-    fprintf(f, "edgeflag-host resume 1\nvectors_size %" PRIu64 "\nvectors_crc %08" PRIx32
-               "\nper_frame %" PRIu32 "\nmask %" PRIu32 "\nres_next %" PRIu32 "\npart_bytes %" PRIu64
-               "\nrecords %" PRIu64 "\nresults_crc %08" PRIx32 "\ncounts",
+    fprintf(f,
+            "edgeflag-host resume 1\nvectors_size %" PRIu64 "\nvectors_crc %08" PRIx32 "\nper_frame %" PRIu32
+            "\nmask %" PRIu32 "\nres_next %" PRIu32 "\npart_bytes %" PRIu64 "\nrecords %" PRIu64
+            "\nresults_crc %08" PRIx32 "\ncounts",
             h->vec_size, h->vec_crc, h->per_frame, h->start_payload_mask, h->res_next, h->part_bytes, h->records,
             h->results_crc);
     for (int i = 0; i < EF_IF_COUNT; i++)
@@ -206,8 +199,8 @@ static int load_state(hl *h)
                     "edgeflag-host resume %u vectors_size %" SCNu64 " vectors_crc %" SCNx32 " per_frame %" SCNu32
                     " mask %" SCNu32 " res_next %" SCNu32 " part_bytes %" SCNu64 " records %" SCNu64
                     " results_crc %" SCNx32 " counts",
-                    &v, &size, &crc, &h->per_frame, &h->start_payload_mask, &h->res_next, &h->part_bytes,
-                    &h->records, &rcrc) == 9;
+                    &v, &size, &crc, &h->per_frame, &h->start_payload_mask, &h->res_next, &h->part_bytes, &h->records,
+                    &rcrc) == 9;
     for (int i = 0; ok && i < EF_IF_COUNT; i++)
         ok = fscanf(f, "%" SCNu64, &h->counts[i]) == 1;
     fclose(f);
@@ -249,12 +242,12 @@ static int send_ackr(hl *h, int resend)
         return fail(h, EF_HX_OUTPUT, "cannot write the resume state: %s", strerror(errno));
     uint8_t p[4], f[EF_BOARD_HEADER + 4 + EF_BOARD_TRAILER];
     ef_put32(p, h->res_next);
-    const int r = h->ops->write(h->l, f, ef_frame_put(f, EF_FT_ACKR, resend ? EF_ACKR_RESEND : 0, 0, p, 4),
-                                h->o->timeout_ms);
+    const int r =
+        h->ops->write(h->l, f, ef_frame_put(f, EF_FT_ACKR, resend ? EF_ACKR_RESEND : 0, 0, p, 4), h->o->timeout_ms);
     h->unacked = 0;
     if (resend)
         h->resend_asked = 1;
-    return r < 0 ? -r + 1000 : 0;   /* transport errors come back as 1000 + -err */
+    return r < 0 ? -r + 1000 : 0; /* transport errors come back as 1000 + -err */
 }
 
 /* Checks the records of a RESULT payload and counts them. */
@@ -315,18 +308,18 @@ static int take(hl *h, const ef_frame *f, int *progress)
                         "during the run; run again without --resume");
         if (want < h->next) {
             h->rep->retransmits += h->next - want;
-            h->next = want;                    /* go back */
+            h->next = want; /* go back */
         }
         return 0;
     }
     case EF_FT_RESULT:
     case EF_FT_DONE:
     case EF_FT_ERROR:
-        if (f->seq < h->res_next) {            /* a copy of one already kept: say so again, */
-            h->ackr_due = 1;                   /* or copies could fill the board's window */
+        if (f->seq < h->res_next) { /* a copy of one already kept: say so again, */
+            h->ackr_due = 1;        /* or copies could fill the board's window */
             return 0;
         }
-        if (f->seq > h->res_next) {            /* one was lost: ask again, once */
+        if (f->seq > h->res_next) { /* one was lost: ask again, once */
             if (!h->resend_asked) {
                 const int r = send_ackr(h, 1);
                 if (r >= 1000)
@@ -356,8 +349,10 @@ static int take(hl *h, const ef_frame *f, int *progress)
         h->unacked++;
         h->rep->result_frames++;
         if (take_records(h, f->payload, f->len) != 0) {
-            snprintf(why, sizeof why, "result frame %" PRIu32 " holds a record that is not a vectors.bin record "
-                     "of an interface asked for", f->seq);
+            snprintf(why, sizeof why,
+                     "result frame %" PRIu32 " holds a record that is not a vectors.bin record "
+                     "of an interface asked for",
+                     f->seq);
             return fail(h, EF_HX_BOARD, "%s", why);
         }
         if (fwrite(f->payload, 1, f->len, h->part) != f->len)
@@ -382,7 +377,7 @@ static int take_bytes(hl *h, int *progress)
         const int r = ef_frame_parse(h->rbuf + pos, h->rlen - pos, &f, &used);
         if (r == EF_FRAME_MORE)
             break;
-        if (r == EF_FRAME_BAD) {               /* damaged on the way: resync, the timeout recovers */
+        if (r == EF_FRAME_BAD) { /* damaged on the way: resync, the timeout recovers */
             pos += ef_frame_resync(h->rbuf + pos, h->rlen - pos);
             continue;
         }
@@ -409,8 +404,8 @@ static void draw_progress(hl *h, double t0, int final)
     for (int i = 0; i < 30; i++)
         bar[i] = i < k ? '#' : '.';
     bar[30] = 0;
-    fprintf(stderr, "\r[%s] %3d%% %8.1f MB/s  ETA %5.1f s  results %" PRIu64 " records%s", bar, (int)(frac * 100),
-            rate, eta, h->records, final ? "\n" : "");
+    fprintf(stderr, "\r[%s] %3d%% %8.1f MB/s  ETA %5.1f s  results %" PRIu64 " records%s", bar, (int)(frac * 100), rate,
+            eta, h->records, final ? "\n" : "");
 }
 
 /* Writes RESULTS/vectors.actual.bin from the header and .results.part. */
@@ -448,14 +443,17 @@ static int check_done(hl *h)
     const uint8_t *d = h->done_payload;
     char why[200];
     if (ef_get64(d + 16) != h->ncmds || ef_get32(d + 24) != h->input_crc) {
-        snprintf(why, sizeof why, "the board took %" PRIu64 " commands with CRC %08" PRIx32 ", %" PRIu64
-                 " with CRC %08" PRIx32 " were sent", ef_get64(d + 16), ef_get32(d + 24), h->ncmds, h->input_crc);
+        snprintf(why, sizeof why,
+                 "the board took %" PRIu64 " commands with CRC %08" PRIx32 ", %" PRIu64 " with CRC %08" PRIx32
+                 " were sent",
+                 ef_get64(d + 16), ef_get32(d + 24), h->ncmds, h->input_crc);
         return fail(h, EF_HX_BOARD, "input differs: %s", why);
     }
     if (ef_get64(d) != h->records || ef_get64(d + 8) != h->part_bytes || ef_get32(d + 28) != h->results_crc) {
-        snprintf(why, sizeof why, "the board sent %" PRIu64 " records (%" PRIu64 " bytes, CRC %08" PRIx32
-                 "), %" PRIu64 " (%" PRIu64 " bytes, CRC %08" PRIx32 ") arrived", ef_get64(d), ef_get64(d + 8),
-                 ef_get32(d + 28), h->records, h->part_bytes, h->results_crc);
+        snprintf(why, sizeof why,
+                 "the board sent %" PRIu64 " records (%" PRIu64 " bytes, CRC %08" PRIx32 "), %" PRIu64 " (%" PRIu64
+                 " bytes, CRC %08" PRIx32 ") arrived",
+                 ef_get64(d), ef_get64(d + 8), ef_get32(d + 28), h->records, h->part_bytes, h->results_crc);
         return fail(h, EF_HX_BOARD, "results differ: %s", why);
     }
     return 0;
@@ -487,8 +485,10 @@ static int load_vectors(hl *h)
         return err.status == EF_ERR_NOMEM ? EF_HX_INTERNAL : EF_HX_INPUT;
     }
     if (!(d.mask & 1u << EF_IF_CMD) || d.seq[EF_IF_CMD].n == 0) {
-        fprintf(stderr, "edgeflag-host: %s: records no cmd transactions: nothing to send (write it with "
-                        "edgeflag vectors, whose default records every interface)\n", path);
+        fprintf(stderr,
+                "edgeflag-host: %s: records no cmd transactions: nothing to send (write it with "
+                "edgeflag vectors, whose default records every interface)\n",
+                path);
         ef_vec_dump_free(&d);
         return EF_HX_INPUT;
     }
@@ -558,8 +558,7 @@ static int run(hl *h)
     int r = h->ops->identify(h->l, raw);
     ef_host_ident id;
     if (r < 0)
-        return r == EF_HOST_ENODEV || r == EF_HOST_ETIMEDOUT ? lost(h, r)
-                                                               : link_fail(h, "identify", r);
+        return r == EF_HOST_ENODEV || r == EF_HOST_ETIMEDOUT ? lost(h, r) : link_fail(h, "identify", r);
     if ((r = ef_host_ident_parse(raw, &id)) != 0) {
         if (memcmp(raw, EF_BOARD_MAGIC, 4) == 0) {
             char b[64];
@@ -568,8 +567,8 @@ static int run(hl *h)
         }
         return fail(h, EF_HX_BOARD, "the device did not answer identify as an edgeflag board (no \"EFB1\")");
     }
-    if (!(id.samples_mask >> ef_board_samples_bit((unsigned)h->samples) & 1u) || (uint32_t)h->info.width > id.width_max ||
-        (uint32_t)h->info.height > id.height_max) {
+    if (!(id.samples_mask >> ef_board_samples_bit((unsigned)h->samples) & 1u) ||
+        (uint32_t)h->info.width > id.width_max || (uint32_t)h->info.height > id.height_max) {
         char b[300], d[200];
         ef_host_ident_describe(&id, d, sizeof d);
         snprintf(b, sizeof b, "%s: %d samples at %" PRId32 "x%" PRId32 " does not fit this board (%s)", o->vectors,
@@ -578,8 +577,9 @@ static int run(hl *h)
     }
     h->window = id.window ? id.window : 1;
     if (o->iface_mask & ~id.iface_mask)
-        return fail(h, EF_HX_BOARD, "the board cannot return the internal interfaces asked for (it returns "
-                                    "only what identify lists); use --interfaces pix");
+        return fail(h, EF_HX_BOARD,
+                    "the board cannot return the internal interfaces asked for (it returns "
+                    "only what identify lists); use --interfaces pix");
 
     if (o->resume) {
         const int s = load_state(h);
@@ -589,20 +589,21 @@ static int run(hl *h)
                                 : "--resume: the resume state belongs to another vectors file or is damaged");
         uint8_t st[EF_BOARD_STATUS_LEN];
         if ((r = h->ops->status(h->l, st)) < 0)
-            return r == EF_HOST_ENODEV || r == EF_HOST_ETIMEDOUT ? lost(h, r)
-                                                                   : link_fail(h, "status", r);
+            return r == EF_HOST_ENODEV || r == EF_HOST_ETIMEDOUT ? lost(h, r) : link_fail(h, "status", r);
         if (memcmp(st, EF_BOARD_MAGIC, 4) != 0)
             return fail(h, EF_HX_BOARD, "the board's status answer is malformed");
         const uint32_t rx_seq = ef_get32(st + 8), res_made = ef_get32(st + 12);
         if (st[6] == EF_BS_IDLE || rx_seq == 0)
-            return fail(h, EF_HX_BOARD, "the board has no run to resume (it was reset or power-cycled); run "
-                                        "again without --resume");
-        uint64_t taken = (uint64_t)(rx_seq - 1) * h->per_frame;   /* commands in the DATA frames it took */
+            return fail(h, EF_HX_BOARD,
+                        "the board has no run to resume (it was reset or power-cycled); run "
+                        "again without --resume");
+        uint64_t taken = (uint64_t)(rx_seq - 1) * h->per_frame; /* commands in the DATA frames it took */
         if (taken > h->ncmds)
             taken = h->ncmds;
         if (ef_get32(st + 20) != ef_frame_crc32(0, h->cmds, (size_t)taken * EF_BOARD_CMD_BYTES))
-            return fail(h, EF_HX_BOARD, "the board's run is not this vectors file (its input CRC differs); run "
-                                        "again without --resume");
+            return fail(h, EF_HX_BOARD,
+                        "the board's run is not this vectors file (its input CRC differs); run "
+                        "again without --resume");
         if (res_made < h->res_next)
             return fail(h, EF_HX_BOARD, "the board made fewer result frames than were kept: not the same run");
         h->last_seq = (uint32_t)((h->ncmds + h->per_frame - 1) / h->per_frame) + 1;
@@ -622,8 +623,7 @@ static int run(hl *h)
         h->start_payload_mask = o->iface_mask ? o->iface_mask : 1u << EF_IF_PIX;
         h->last_seq = (uint32_t)((h->ncmds + per - 1) / per) + 1;
         if ((r = h->ops->reset(h->l)) < 0)
-            return r == EF_HOST_ENODEV || r == EF_HOST_ETIMEDOUT ? lost(h, r)
-                                                                   : link_fail(h, "reset", r);
+            return r == EF_HOST_ENODEV || r == EF_HOST_ETIMEDOUT ? lost(h, r) : link_fail(h, "reset", r);
         h->part = fopen(h->part_path, "w+b");
         if (!h->part)
             return fail(h, EF_HX_OUTPUT, "cannot create the results: %s", strerror(errno));
@@ -650,7 +650,7 @@ static int run(hl *h)
         const int can_send = h->next <= h->last_seq && h->next - h->base < h->window;
         size_t got = 0;
         if (h->rlen == h->rcap)
-            h->rlen = 0;                       /* cannot happen with frames <= FRAME_MAX; be safe */
+            h->rlen = 0; /* cannot happen with frames <= FRAME_MAX; be safe */
         r = h->ops->read(h->l, h->rbuf + h->rlen, h->rcap - h->rlen, &got, can_send ? 0 : 10);
         if (r < 0 && r != EF_HOST_ETIMEDOUT)
             return ef_host_exit_code(r) == EF_HX_LOST ? lost(h, r) : link_fail(h, "receiving", r);

@@ -17,14 +17,14 @@
 /* Exit codes of edgeflag-host (docs/board.md section 7). */
 enum {
     EF_HX_OK = 0,
-    EF_HX_MISMATCH = 1,   /* verify: the results differ from the vectors */
+    EF_HX_MISMATCH = 1, /* verify: the results differ from the vectors */
     EF_HX_USAGE = 2,
-    EF_HX_INPUT = 3,      /* the vectors file is unreadable or malformed */
-    EF_HX_OUTPUT = 4,     /* the results folder cannot be written */
-    EF_HX_LOST = 5,       /* link lost (unplugged, not answering): --resume continues */
-    EF_HX_BOARD = 6,      /* the board failed, broke the protocol, was reset, or is another protocol */
-    EF_HX_NOBOARD = 7,    /* no board, or several and no selector */
-    EF_HX_ACCESS = 8,     /* permission denied */
+    EF_HX_INPUT = 3,   /* the vectors file is unreadable or malformed */
+    EF_HX_OUTPUT = 4,  /* the results folder cannot be written */
+    EF_HX_LOST = 5,    /* link lost (unplugged, not answering): --resume continues */
+    EF_HX_BOARD = 6,   /* the board failed, broke the protocol, was reset, or is another protocol */
+    EF_HX_NOBOARD = 7, /* no board, or several and no selector */
+    EF_HX_ACCESS = 8,  /* permission denied */
     EF_HX_INTERNAL = 70
 };
 
@@ -43,19 +43,19 @@ int ef_host_ident_parse(const uint8_t raw[EF_BOARD_IDENTIFY_LEN], ef_host_ident 
 void ef_host_ident_describe(const ef_host_ident *id, char *buf, size_t size);
 
 typedef struct ef_host_stream_opts {
-    const char *vectors;        /* vectors.bin (must record cmd) */
-    const char *results;        /* folder for vectors.actual.bin and the resume state */
-    uint32_t iface_mask;        /* interfaces to ask back (0: pix) */
+    const char *vectors; /* vectors.bin (must record cmd) */
+    const char *results; /* folder for vectors.actual.bin and the resume state */
+    uint32_t iface_mask; /* interfaces to ask back (0: pix) */
     int resume;
-    unsigned frame_cmds;        /* commands per DATA frame (0: the largest that fits) */
-    int timeout_ms;             /* no progress for this long: retransmit; 4 times: give up */
-    int progress;               /* draw a progress bar on stderr */
+    unsigned frame_cmds; /* commands per DATA frame (0: the largest that fits) */
+    int timeout_ms;      /* no progress for this long: retransmit; 4 times: give up */
+    int progress;        /* draw a progress bar on stderr */
     int quiet;
 } ef_host_stream_opts;
 
 typedef struct ef_host_stream_report {
     uint64_t cmds, frames_sent, retransmits, naks, timeouts, result_frames, records, result_bytes;
-    uint64_t resumed_from;      /* first frame sent by this run (0 when not resumed) */
+    uint64_t resumed_from; /* first frame sent by this run (0 when not resumed) */
     double seconds;
     int samples;
     int32_t width, height;

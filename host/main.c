@@ -94,26 +94,58 @@ static const ef_transport_ops *find_transport(const char *name)
 
 static int parse(int argc, char **argv, args *a)
 {
-    enum { O_TRANSPORT = 256, O_DEVICE, O_VIDPID, O_TSIZE, O_INFLIGHT, O_CHIP, O_LINES, O_TIMEOUT, O_SIMSTATE,
-           O_SIMFAULTS, O_CONNECT, O_RESULTS, O_RESUME, O_FRAMECMDS, O_IFACES, O_JUNIT, O_DIFF, O_ERRORS, O_TRANS, O_MIB,
-           O_QUIET, O_JSON, O_HELP, O_SIMDUT };
-    static const struct option opts[] = {
-        { "transport", required_argument, 0, O_TRANSPORT }, { "device", required_argument, 0, O_DEVICE },
-        { "vid-pid", required_argument, 0, O_VIDPID },      { "transfer-size", required_argument, 0, O_TSIZE },
-        { "in-flight", required_argument, 0, O_INFLIGHT },  { "chip", required_argument, 0, O_CHIP },
-        { "lines", required_argument, 0, O_LINES },         { "timeout", required_argument, 0, O_TIMEOUT },
-        { "sim-state", required_argument, 0, O_SIMSTATE },  { "sim-faults", required_argument, 0, O_SIMFAULTS },
-        { "sim-dut", required_argument, 0, O_SIMDUT },
-        { "connect", required_argument, 0, O_CONNECT },
-        { "results", required_argument, 0, O_RESULTS },     { "resume", no_argument, 0, O_RESUME },
-        { "frame-cmds", required_argument, 0, O_FRAMECMDS }, { "interfaces", required_argument, 0, O_IFACES },
-        { "junit", required_argument, 0, O_JUNIT },         { "diff-image", required_argument, 0, O_DIFF },
-        { "errors", required_argument, 0, O_ERRORS },       { "transactions", no_argument, 0, O_TRANS },
-        { "mib", required_argument, 0, O_MIB },             { "quiet", no_argument, 0, O_QUIET },
-        { "json", no_argument, 0, O_JSON },                 { "help", no_argument, 0, O_HELP },
-        { 0, 0, 0, 0 }
+    enum {
+        O_TRANSPORT = 256,
+        O_DEVICE,
+        O_VIDPID,
+        O_TSIZE,
+        O_INFLIGHT,
+        O_CHIP,
+        O_LINES,
+        O_TIMEOUT,
+        O_SIMSTATE,
+        O_SIMFAULTS,
+        O_CONNECT,
+        O_RESULTS,
+        O_RESUME,
+        O_FRAMECMDS,
+        O_IFACES,
+        O_JUNIT,
+        O_DIFF,
+        O_ERRORS,
+        O_TRANS,
+        O_MIB,
+        O_QUIET,
+        O_JSON,
+        O_HELP,
+        O_SIMDUT
     };
-    int32_t v;   /* ef_cli_parse_int: digits only, within the bounds (cli/args.c) */
+    static const struct option opts[] = { { "transport", required_argument, 0, O_TRANSPORT },
+                                          { "device", required_argument, 0, O_DEVICE },
+                                          { "vid-pid", required_argument, 0, O_VIDPID },
+                                          { "transfer-size", required_argument, 0, O_TSIZE },
+                                          { "in-flight", required_argument, 0, O_INFLIGHT },
+                                          { "chip", required_argument, 0, O_CHIP },
+                                          { "lines", required_argument, 0, O_LINES },
+                                          { "timeout", required_argument, 0, O_TIMEOUT },
+                                          { "sim-state", required_argument, 0, O_SIMSTATE },
+                                          { "sim-faults", required_argument, 0, O_SIMFAULTS },
+                                          { "sim-dut", required_argument, 0, O_SIMDUT },
+                                          { "connect", required_argument, 0, O_CONNECT },
+                                          { "results", required_argument, 0, O_RESULTS },
+                                          { "resume", no_argument, 0, O_RESUME },
+                                          { "frame-cmds", required_argument, 0, O_FRAMECMDS },
+                                          { "interfaces", required_argument, 0, O_IFACES },
+                                          { "junit", required_argument, 0, O_JUNIT },
+                                          { "diff-image", required_argument, 0, O_DIFF },
+                                          { "errors", required_argument, 0, O_ERRORS },
+                                          { "transactions", no_argument, 0, O_TRANS },
+                                          { "mib", required_argument, 0, O_MIB },
+                                          { "quiet", no_argument, 0, O_QUIET },
+                                          { "json", no_argument, 0, O_JSON },
+                                          { "help", no_argument, 0, O_HELP },
+                                          { 0, 0, 0, 0 } };
+    int32_t v; /* ef_cli_parse_int: digits only, within the bounds (cli/args.c) */
     opterr = 0;
     optind = 1;
     int c;
@@ -181,13 +213,9 @@ static int parse(int argc, char **argv, args *a)
         case O_QUIET: a->quiet = 1; break;
         case O_JSON: a->json = 1; break;
         case O_HELP:
-        case 'h':
-            usage(stdout);
-            exit(0);
-        case ':':
-            return usage_error("option %s needs a value", argv[optind - 1]);
-        default:
-            return usage_error("unknown option '%s'", argv[optind - 1]);
+        case 'h': usage(stdout); exit(0);
+        case ':': return usage_error("option %s needs a value", argv[optind - 1]);
+        default: return usage_error("unknown option '%s'", argv[optind - 1]);
         }
     }
     for (int i = optind; i < argc; i++) {
@@ -207,13 +235,12 @@ static int open_link(const args *a, const ef_transport_ops **ops, ef_link **l)
         ef_found found[16];
         int total = 0, nfound = 0, denied = 0;
         const ef_transport_ops *which = NULL;
-        for (size_t i = 0; i < 2; i++) {      /* usb and gpio: real boards only */
+        for (size_t i = 0; i < 2; i++) { /* usb and gpio: real boards only */
             if (i == 1 && !a->link.chip)
-                continue;                      /* a GPIO bus cannot be told from other GPIO use by looking */
+                continue; /* a GPIO bus cannot be told from other GPIO use by looking */
             const int n = TRANSPORTS[i]->probe(&a->link, found + nfound, 16 - nfound);
             if (n < 0 && n != EF_HOST_EUNSUPPORTED && n != EF_HOST_ENOTFOUND) {
-                fprintf(stderr, "edgeflag-host: looking for %s boards: %s\n", TRANSPORTS[i]->name,
-                        ef_host_strerror(n));
+                fprintf(stderr, "edgeflag-host: looking for %s boards: %s\n", TRANSPORTS[i]->name, ef_host_strerror(n));
                 return n == EF_HOST_EACCESS ? EF_HX_ACCESS : EF_HX_NOBOARD;
             }
             for (int k = 0; k < n && nfound < 16; k++, nfound++) {
@@ -228,7 +255,7 @@ static int open_link(const args *a, const ef_transport_ops **ops, ef_link **l)
                     total ? "several boards answer; choose one with --transport and --device (edgeflag-host list)"
                           : "no board found (no USB device answers identify; GPIO needs --chip and --lines); "
                             "use --transport sim for the simulated board");
-            for (int k = 0; k < nfound; k++)   /* what was seen, so the user can tell which */
+            for (int k = 0; k < nfound; k++) /* what was seen, so the user can tell which */
                 fprintf(stderr, "edgeflag-host:   %s %s %s%s\n", found[k].transport, found[k].where,
                         found[k].ok ? "" : "(not usable) ", found[k].desc);
             return !total && denied ? EF_HX_ACCESS : EF_HX_NOBOARD;
@@ -340,14 +367,15 @@ static int cmd_stream(args *a, int verify)
     int code = open_link(a, &ops, &l);
     if (code)
         return code;
-    if (verify && !a->interfaces) {          /* every interface both the file and the board have, but cmd */
+    if (verify && !a->interfaces) { /* every interface both the file and the board have, but cmd */
         uint8_t raw[EF_BOARD_IDENTIFY_LEN];
         ef_host_ident id;
         if (ops->identify(l, raw) == 0 && ef_host_ident_parse(raw, &id) == 0)
             mask |= file_mask(a->vectors) & id.iface_mask & ~(1u << EF_IF_CMD);
     }
-    ef_host_stream_opts so = { a->vectors, results, mask, a->resume, a->frame_cmds, a->link.timeout_ms,
-                               !a->quiet && isatty(2), a->quiet };
+    ef_host_stream_opts so = {
+        a->vectors, results, mask, a->resume, a->frame_cmds, a->link.timeout_ms, !a->quiet && isatty(2), a->quiet
+    };
     ef_host_stream_report rep;
     code = ef_host_stream(ops, l, &so, &rep);
     ops->close(l);
@@ -400,13 +428,16 @@ static int cmd_stream(args *a, int verify)
     }
     if (a->json)
         printf("{\"command\": \"%s\", \"transport\": \"%s\", \"exit\": %d, \"vectors\": \"%s\", \"results\": \"%s\", "
-               "\"interfaces\": \"%s\", \"commands\": %" PRIu64 ", \"frames_sent\": %" PRIu64 ", \"retransmits\": %"
-               PRIu64 ", \"naks\": %" PRIu64 ", \"timeouts\": %" PRIu64 ", \"resumed_from_frame\": %" PRIu64
-               ", \"result_records\": %" PRIu64 ", \"result_bytes\": %" PRIu64 ", \"seconds\": %.6f, "
+               "\"interfaces\": \"%s\", \"commands\": %" PRIu64 ", \"frames_sent\": %" PRIu64
+               ", \"retransmits\": %" PRIu64 ", \"naks\": %" PRIu64 ", \"timeouts\": %" PRIu64
+               ", \"resumed_from_frame\": %" PRIu64 ", \"result_records\": %" PRIu64 ", \"result_bytes\": %" PRIu64
+               ", \"seconds\": %.6f, "
                "\"check\": %s}\n",
                a->cmd, ops->name, code, a->vectors, results, names, rep.cmds, rep.frames_sent, rep.retransmits,
                rep.naks, rep.timeouts, rep.resumed_from, rep.records, rep.result_bytes, rep.seconds,
-               check < 0 ? "null" : check == 0 ? "\"pass\"" : "\"fail\"");
+               check < 0    ? "null"
+               : check == 0 ? "\"pass\""
+                            : "\"fail\"");
     return code;
 }
 
@@ -429,8 +460,8 @@ static int cmd_bench(args *a)
     for (int i = 0; i < 4; i++) {
         if (a->json) {
             if (i < 3)
-                printf(", \"%s\": {\"ran\": %s, \"bytes\": %" PRIu64 ", \"seconds\": %.6f, \"mb_s\": %.1f}",
-                       r[i].name, r[i].ran ? "true" : "false", r[i].bytes, r[i].seconds, r[i].mb_s);
+                printf(", \"%s\": {\"ran\": %s, \"bytes\": %" PRIu64 ", \"seconds\": %.6f, \"mb_s\": %.1f}", r[i].name,
+                       r[i].ran ? "true" : "false", r[i].bytes, r[i].seconds, r[i].mb_s);
             else
                 printf(", \"latency\": {\"usec_median\": %.1f, \"usec_min\": %.1f}}\n", r[i].usec_median,
                        r[i].usec_min);

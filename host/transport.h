@@ -26,23 +26,23 @@ enum {
     EF_HOST_EAMBIGUOUS = -7, /* several boards match: say which */
     EF_HOST_EBUSY = -8,      /* claimed by another program */
     EF_HOST_ENOMEM = -9,
-    EF_HOST_EINVAL = -10,    /* bad option value */
+    EF_HOST_EINVAL = -10,      /* bad option value */
     EF_HOST_EUNSUPPORTED = -11 /* transport not built in (library absent at build time) */
 };
 const char *ef_host_strerror(int err);
 
 /* Options every transport may read (unset: 0 / NULL). */
 typedef struct ef_host_opts {
-    const char *device;      /* usb: SERIAL, BUS:DEV, or #INDEX (docs/board.md 5.1) */
-    uint16_t vid, pid;       /* usb: 0 = the defaults (1209:0001) */
-    unsigned transfer_size;  /* usb: bytes per bulk transfer (0 = default) */
-    unsigned in_flight;      /* usb: transfers in flight each way (0 = default, >= 4) */
-    int timeout_ms;          /* every transfer / bus wait; 0 = default */
-    const char *chip;        /* gpio: chip name or path (gpiochip0, /dev/gpiochip0) */
-    const char *lines;       /* gpio: line map (docs/board.md 5.2) */
-    const char *sim_state;   /* sim: directory holding the board's state across runs */
-    const char *sim_faults;  /* sim: fault injection (docs/board.md 6) */
-    const char *connect;     /* socket: unix:PATH or tcp:HOST:PORT (docs/board.md 5.5) */
+    const char *device;     /* usb: SERIAL, BUS:DEV, or #INDEX (docs/board.md 5.1) */
+    uint16_t vid, pid;      /* usb: 0 = the defaults (1209:0001) */
+    unsigned transfer_size; /* usb: bytes per bulk transfer (0 = default) */
+    unsigned in_flight;     /* usb: transfers in flight each way (0 = default, >= 4) */
+    int timeout_ms;         /* every transfer / bus wait; 0 = default */
+    const char *chip;       /* gpio: chip name or path (gpiochip0, /dev/gpiochip0) */
+    const char *lines;      /* gpio: line map (docs/board.md 5.2) */
+    const char *sim_state;  /* sim: directory holding the board's state across runs */
+    const char *sim_faults; /* sim: fault injection (docs/board.md 6) */
+    const char *connect;    /* socket: unix:PATH or tcp:HOST:PORT (docs/board.md 5.5) */
 } ef_host_opts;
 
 typedef struct ef_link ef_link;
@@ -50,10 +50,10 @@ typedef struct ef_link ef_link;
 /* One board found by list / auto. */
 typedef struct ef_found {
     char transport[8];
-    char where[64];          /* usb "BUS:DEV", gpio chip path */
-    char desc[160];          /* VID:PID, serial, protocol, DUT parameters / lines */
-    int ok;                  /* answered identify with our protocol */
-    int err;                 /* why not (EF_HOST_E*: EACCESS, EPROTO, ...), 0 when ok */
+    char where[64]; /* usb "BUS:DEV", gpio chip path */
+    char desc[160]; /* VID:PID, serial, protocol, DUT parameters / lines */
+    int ok;         /* answered identify with our protocol */
+    int err;        /* why not (EF_HOST_E*: EACCESS, EPROTO, ...), 0 when ok */
 } ef_found;
 
 typedef struct ef_transport_ops {

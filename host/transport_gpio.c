@@ -37,24 +37,24 @@ static const char *const sig_name[SIG_COUNT] = {
 };
 /* clang-format on */
 #define OUT_BIT(sig) ((uint32_t)1 << (sig))
-#define IN_BIT(sig) ((uint32_t)1 << ((sig) - SIG_INPUTS))
+#define IN_BIT(sig) ((uint32_t)1 << ((sig)-SIG_INPUTS))
 
 #define DEFAULT_TIMEOUT_MS 1000
 #define STEPS_MAX 1000
-#define RING 65536                     /* board bytes taken during writes, for read() */
+#define RING 65536 /* board bytes taken during writes, for read() */
 #define NAME_MAX_LEN 48
 #define CONSUMER "edgeflag-host"
 
 struct ef_link {
-    char err[256];                     /* the last failure, in words */
+    char err[256]; /* the last failure, in words */
     ef_gpiol *c;
     char chip[64];
     unsigned offset[SIG_COUNT];
     unsigned setup, hold;
-    int timeout_ms;                    /* control replies and err queries (--timeout) */
-    uint32_t in;                       /* the board's lines at the last sample */
-    int ctl;                           /* ctl at the last edge */
-    int engine_failed;                 /* err is high for an engine failure: bytes still flow */
+    int timeout_ms;    /* control replies and err queries (--timeout) */
+    uint32_t in;       /* the board's lines at the last sample */
+    int ctl;           /* ctl at the last edge */
+    int engine_failed; /* err is high for an engine failure: bytes still flow */
     uint8_t ring[RING];
     size_t ring_head, ring_len;
     uint64_t cycles, sent, taken;
@@ -63,7 +63,7 @@ struct ef_link {
 /* ---- the line map (docs/board-gpio.md section 6) ---- */
 
 typedef struct line_map {
-    char token[SIG_COUNT][NAME_MAX_LEN];   /* an offset in digits, or a line name */
+    char token[SIG_COUNT][NAME_MAX_LEN]; /* an offset in digits, or a line name */
     unsigned setup, hold;
 } line_map;
 
@@ -92,8 +92,8 @@ static int is_number(const char *s, size_t n, unsigned long *v)
 static int set_token(line_map *m, int sig, const char *v, size_t n, const char *item, char *err, size_t errlen)
 {
     if (n == 0 || n >= NAME_MAX_LEN || memchr(v, '=', n)) {
-        snprintf(err, errlen, "--lines: '%s': a line is an offset or a name of at most %d characters",
-                 item, NAME_MAX_LEN - 1);
+        snprintf(err, errlen, "--lines: '%s': a line is an offset or a name of at most %d characters", item,
+                 NAME_MAX_LEN - 1);
         return EF_HOST_EINVAL;
     }
     memcpy(m->token[sig], v, n);
@@ -133,7 +133,7 @@ static int set_byte_bus(line_map *m, int first, const char *v, size_t n, const c
 
 static int parse_lines(line_map *m, const char *spec, char *err, size_t errlen)
 {
-    for (int i = 0; i < SIG_COUNT; i++)           /* the default map: offset = signal index */
+    for (int i = 0; i < SIG_COUNT; i++) /* the default map: offset = signal index */
         snprintf(m->token[i], NAME_MAX_LEN, "%d", i);
     m->setup = m->hold = 1;
     if (!spec)
@@ -164,8 +164,10 @@ static int parse_lines(line_map *m, const char *spec, char *err, size_t errlen)
         } else if ((sig = sig_lookup(p, kn)) >= 0) {
             rc = set_token(m, sig, v, vn, item, err, errlen);
         } else {
-            snprintf(err, errlen, "--lines: '%s': unknown signal (d, q, d0..d7, q0..q7, clk, valid, take, ctl, "
-                     "ready, avail, done, err, setup, hold)", item);
+            snprintf(err, errlen,
+                     "--lines: '%s': unknown signal (d, q, d0..d7, q0..q7, clk, valid, take, ctl, "
+                     "ready, avail, done, err, setup, hold)",
+                     item);
             return EF_HOST_EINVAL;
         }
         if (rc)
@@ -198,14 +200,14 @@ static int resolve_lines(ef_link *l, const line_map *m, char *err, size_t errlen
         snprintf(err, errlen, "%s: cannot read the chip's information: %s", l->chip, ef_host_strerror(rc));
         return rc;
     }
-    char (*names)[NAME_MAX_LEN] = NULL;     /* read once, only when a name is used */
+    char(*names)[NAME_MAX_LEN] = NULL; /* read once, only when a name is used */
     for (int s = 0; s < SIG_COUNT && rc == 0; s++) {
         unsigned long num;
         const char *t = m->token[s];
         if (is_number(t, strlen(t), &num)) {
             if (num >= nlines) {
-                snprintf(err, errlen, "--lines: %s=%s: %s has %u lines (0 to %u)", sig_name[s], t, l->chip,
-                         nlines, nlines - 1);
+                snprintf(err, errlen, "--lines: %s=%s: %s has %u lines (0 to %u)", sig_name[s], t, l->chip, nlines,
+                         nlines - 1);
                 rc = EF_HOST_EINVAL;
             }
             l->offset[s] = (unsigned)num;
@@ -248,10 +250,7 @@ static int resolve_lines(ef_link *l, const line_map *m, char *err, size_t errlen
 
 /* ---- chips ---- */
 
-static int chip_filter(const struct dirent *e)
-{
-    return strncmp(e->d_name, "gpiochip", 8) == 0;
-}
+static int chip_filter(const struct dirent *e) { return strncmp(e->d_name, "gpiochip", 8) == 0; }
 
 /* /dev/gpiochip* in numeric order; returns the count or a negative error. */
 static int list_chips(char (*paths)[64], int max)
@@ -269,7 +268,7 @@ static int list_chips(char (*paths)[64], int max)
         }
     closedir(d);
     int m = n < max ? n : max;
-    for (int i = 1; i < m; i++)                   /* insertion sort by chip number */
+    for (int i = 1; i < m; i++) /* insertion sort by chip number */
         for (int j = i; j > 0 && atoi(paths[j - 1] + 13) > atoi(paths[j] + 13); j--) {
             char t[64];
             memcpy(t, paths[j], 64), memcpy(paths[j], paths[j - 1], 64), memcpy(paths[j - 1], t, 64);
@@ -300,8 +299,10 @@ static int resolve_chip(const char *chip, char *path, size_t pathlen, char *err,
             snprintf(path, pathlen, "%.63s", paths[0]);
             return 0;
         }
-        snprintf(err, errlen, n ? "%d GPIO chips: choose one with --chip (edgeflag-host list shows them)"
-                                : "no GPIO chip found (/dev/gpiochip*)", n);
+        snprintf(err, errlen,
+                 n ? "%d GPIO chips: choose one with --chip (edgeflag-host list shows them)"
+                   : "no GPIO chip found (/dev/gpiochip*)",
+                 n);
         return n ? EF_HOST_EAMBIGUOUS : EF_HOST_ENOTFOUND;
     }
     int hits = 0;
@@ -319,8 +320,10 @@ static int resolve_chip(const char *chip, char *path, size_t pathlen, char *err,
     }
     if (hits == 1)
         return 0;
-    snprintf(err, errlen, hits ? "--chip %s: several chips have this label; give the path" :
-             "--chip %s: no GPIO chip has this name or label", chip);
+    snprintf(err, errlen,
+             hits ? "--chip %s: several chips have this label; give the path"
+                  : "--chip %s: no GPIO chip has this name or label",
+             chip);
     return hits ? EF_HOST_EAMBIGUOUS : EF_HOST_ENOTFOUND;
 }
 
@@ -363,15 +366,9 @@ static int cycle(ef_link *l, uint8_t d, uint32_t ctrl)
     return sample(l);
 }
 
-static uint8_t in_q(const ef_link *l)
-{
-    return (uint8_t)(l->in >> (SIG_Q0 - SIG_INPUTS));
-}
+static uint8_t in_q(const ef_link *l) { return (uint8_t)(l->in >> (SIG_Q0 - SIG_INPUTS)); }
 
-static int in_line(const ef_link *l, int sig)
-{
-    return (l->in & IN_BIT(sig)) != 0;
-}
+static int in_line(const ef_link *l, int sig) { return (l->in & IN_BIT(sig)) != 0; }
 
 static int64_t now_ms(void)
 {
@@ -387,7 +384,7 @@ static int wait_line(ef_link *l, int sig, int timeout_ms, int64_t *waited)
     int64_t t0 = now_ms();
     for (unsigned spin = 0; !in_line(l, sig); spin++) {
         if (sig != SIG_ERR && in_line(l, SIG_ERR) && !l->ctl && !l->engine_failed)
-            return EF_HOST_EIO;                 /* the caller asks why (err_line) */
+            return EF_HOST_EIO; /* the caller asks why (err_line) */
         if (now_ms() - t0 >= timeout_ms) {
             *waited = now_ms() - t0;
             return EF_HOST_ETIMEDOUT;
@@ -412,14 +409,16 @@ static int control(ef_link *l, uint8_t code, uint8_t *out, size_t len, int timeo
         int64_t waited = 0;
         rc = wait_line(l, SIG_AVAIL, timeout_ms, &waited);
         if (rc == EF_HOST_ETIMEDOUT)
-            snprintf(l->err, sizeof l->err, "%s: no %s reply from the board after %d of %zu bytes in %lld ms "
-                     "(is a board on these lines? docs/board-gpio.md)", l->chip, what, (int)i, len, (long long)waited);
+            snprintf(l->err, sizeof l->err,
+                     "%s: no %s reply from the board after %d of %zu bytes in %lld ms "
+                     "(is a board on these lines? docs/board-gpio.md)",
+                     l->chip, what, (int)i, len, (long long)waited);
         if (rc)
             break;
         out[i] = in_q(l);
         rc = cycle(l, 0, OUT_BIT(SIG_CTL) | OUT_BIT(SIG_TAKE));
     }
-    int rc2 = cycle(l, 0, 0);                    /* back to the stream view */
+    int rc2 = cycle(l, 0, 0); /* back to the stream view */
     return rc ? rc : rc2;
 }
 
@@ -440,17 +439,20 @@ static int err_line(ef_link *l, const char *during)
         return 0;
     uint8_t st[EF_GB_BUS_STATUS_LEN];
     if (control(l, EF_GB_REQ_BUS_STATUS, st, sizeof st, l->timeout_ms, "bus status") != 0) {
-        snprintf(l->err, sizeof l->err, "%s: the board raised its error line during %s "
-                 "(its bus status could not be read)", l->chip, during);
+        snprintf(l->err, sizeof l->err,
+                 "%s: the board raised its error line during %s "
+                 "(its bus status could not be read)",
+                 l->chip, during);
         return EF_HOST_EIO;
     }
     if (st[0] == EF_GB_ERR_ENGINE) {
         l->engine_failed = 1;
         return 0;
     }
-    snprintf(l->err, sizeof l->err, "%s: the board raised its error line during %s: %s; it accepted %lu bytes "
-             "(host sent %llu) and sent %lu (host took %llu) since its reset; reset the board to clear it", l->chip,
-             during, st[0] < sizeof cause_text / sizeof cause_text[0] ? cause_text[st[0]] : "unknown cause",
+    snprintf(l->err, sizeof l->err,
+             "%s: the board raised its error line during %s: %s; it accepted %lu bytes "
+             "(host sent %llu) and sent %lu (host took %llu) since its reset; reset the board to clear it",
+             l->chip, during, st[0] < sizeof cause_text / sizeof cause_text[0] ? cause_text[st[0]] : "unknown cause",
              (unsigned long)ef_get32(st + 4), (unsigned long long)l->sent, (unsigned long)ef_get32(st + 8),
              (unsigned long long)l->taken);
     return EF_HOST_EIO;
@@ -463,7 +465,8 @@ static int gpio_open(ef_link **out, const ef_host_opts *o, char *err, size_t err
     line_map m;
     *out = NULL;
     if (!ef_gpiol_available()) {
-        snprintf(err, errlen, "the gpio transport is absent: edgeflag-host was built without libgpiod "
+        snprintf(err, errlen,
+                 "the gpio transport is absent: edgeflag-host was built without libgpiod "
                  "(install libgpiod-dev and rebuild)");
         return EF_HOST_EUNSUPPORTED;
     }
@@ -485,8 +488,8 @@ static int gpio_open(ef_link **out, const ef_host_opts *o, char *err, size_t err
          * while the kernel (or an emulator) notices: retry briefly. */
         int64_t t0 = now_ms();
         do {
-            rc = ef_gpiol_request(l->c, l->offset, SIG_OUTPUTS, l->offset + SIG_OUTPUTS, SIG_INPUTS, CONSUMER,
-                                  err, errlen);
+            rc = ef_gpiol_request(l->c, l->offset, SIG_OUTPUTS, l->offset + SIG_OUTPUTS, SIG_INPUTS, CONSUMER, err,
+                                  errlen);
             if (rc == EF_HOST_EBUSY) {
                 struct timespec ts = { 0, 5000000 };
                 nanosleep(&ts, NULL);
@@ -497,8 +500,8 @@ static int gpio_open(ef_link **out, const ef_host_opts *o, char *err, size_t err
                 char name[NAME_MAX_LEN], consumer[64];
                 if (ef_gpiol_line(l->c, l->offset[s], name, sizeof name, consumer, sizeof consumer) == 0 &&
                     consumer[0]) {
-                    snprintf(err, errlen, "%s: line %u (%s) is in use by '%s'", l->chip, l->offset[s],
-                             sig_name[s], consumer);
+                    snprintf(err, errlen, "%s: line %u (%s) is in use by '%s'", l->chip, l->offset[s], sig_name[s],
+                             consumer);
                     break;
                 }
             }
@@ -521,15 +524,12 @@ static void gpio_close(ef_link *l)
 {
     if (!l)
         return;
-    ef_gpiol_set(l->c, 0);                        /* leave every output low */
+    ef_gpiol_set(l->c, 0); /* leave every output low */
     ef_gpiol_close(l->c);
     free(l);
 }
 
-static int timeout_of(int t)
-{
-    return t > 0 ? t : DEFAULT_TIMEOUT_MS;
-}
+static int timeout_of(int t) { return t > 0 ? t : DEFAULT_TIMEOUT_MS; }
 
 static int gpio_identify(ef_link *l, uint8_t out[48])
 {
@@ -544,9 +544,9 @@ static int gpio_status(ef_link *l, uint8_t out[40])
 static int gpio_reset(ef_link *l)
 {
     int rc = control(l, EF_GB_REQ_RESET, NULL, 0, l->timeout_ms, "reset");
-    l->ring_head = l->ring_len = 0;               /* bytes from before the reset are void */
+    l->ring_head = l->ring_len = 0; /* bytes from before the reset are void */
     l->engine_failed = 0;
-    l->sent = l->taken = 0;                       /* counted like the board's counters */
+    l->sent = l->taken = 0; /* counted like the board's counters */
     return rc;
 }
 
@@ -570,9 +570,10 @@ static int gpio_write(ef_link *l, const uint8_t *buf, size_t len, int timeout_ms
             rc = wait_line(l, SIG_READY, t, &waited);
         } while (rc == EF_HOST_EIO && in_line(l, SIG_ERR));
         if (rc == EF_HOST_ETIMEDOUT) {
-            snprintf(l->err, sizeof l->err, "%s: the board held ready low for %lld ms after %llu bytes "
-                     "(stalled; done is %s)", l->chip, (long long)waited, (unsigned long long)l->sent,
-                     in_line(l, SIG_DONE) ? "high" : "low");
+            snprintf(l->err, sizeof l->err,
+                     "%s: the board held ready low for %lld ms after %llu bytes "
+                     "(stalled; done is %s)",
+                     l->chip, (long long)waited, (unsigned long long)l->sent, in_line(l, SIG_DONE) ? "high" : "low");
             return rc;
         }
         if (rc)
@@ -593,7 +594,7 @@ static int gpio_write(ef_link *l, const uint8_t *buf, size_t len, int timeout_ms
 
 static int gpio_flush(ef_link *l, int timeout_ms)
 {
-    (void)timeout_ms;                             /* every write is on the wire when it returns */
+    (void)timeout_ms; /* every write is on the wire when it returns */
     return err_line(l, "a flush");
 }
 
@@ -691,15 +692,9 @@ static int gpio_probe(const ef_host_opts *o, ef_found *found, int max)
     return n;
 }
 
-static const char *gpio_version(void)
-{
-    return ef_gpiol_version();
-}
+static const char *gpio_version(void) { return ef_gpiol_version(); }
 
-static const char *gpio_detail(ef_link *l)
-{
-    return l ? l->err : "";
-}
+static const char *gpio_detail(ef_link *l) { return l ? l->err : ""; }
 
 const ef_transport_ops ef_transport_gpio = {
     .name = "gpio",
@@ -716,12 +711,6 @@ const ef_transport_ops ef_transport_gpio = {
     .detail = gpio_detail,
 };
 
-const char *ef_gpio_link_detail(const ef_link *l)
-{
-    return l->err;
-}
+const char *ef_gpio_link_detail(const ef_link *l) { return l->err; }
 
-unsigned long long ef_gpio_link_cycles(const ef_link *l)
-{
-    return (unsigned long long)l->cycles;
-}
+unsigned long long ef_gpio_link_cycles(const ef_link *l) { return (unsigned long long)l->cycles; }

@@ -13,7 +13,7 @@
 #include "transport.h"
 
 typedef struct null_link {
-    uint32_t next;              /* one past the highest numbered frame seen */
+    uint32_t next; /* one past the highest numbered frame seen */
     int ack_due;
     uint8_t ack[EF_BOARD_HEADER + 12 + EF_BOARD_TRAILER];
 } null_link;
@@ -34,7 +34,7 @@ static int null_identify(ef_link *l, uint8_t out[48])
     memset(out, 0, 48);
     memcpy(out, EF_BOARD_MAGIC, 4);
     out[4] = EF_BOARD_PROTOCOL;
-    out[6] = 64;                                          /* window */
+    out[6] = 64; /* window */
     ef_put32(out + 16, 1u << 3 | 1u << 4 | 1u << 5);
     ef_put32(out + 20, 16384);
     ef_put32(out + 24, 16384);
@@ -91,10 +91,7 @@ static int null_read(ef_link *l, uint8_t *buf, size_t cap, size_t *got, int time
     return 0;
 }
 
-static void null_close(ef_link *l)
-{
-    free(l);
-}
+static void null_close(ef_link *l) { free(l); }
 
 static int null_probe(const ef_host_opts *o, ef_found *found, int max)
 {
@@ -102,10 +99,7 @@ static int null_probe(const ef_host_opts *o, ef_found *found, int max)
     return 0;
 }
 
-static const char *null_version(void)
-{
-    return "built in (no link: measures the host's own cost)";
-}
+static const char *null_version(void) { return "built in (no link: measures the host's own cost)"; }
 
-const ef_transport_ops ef_transport_null = { "null", null_probe, null_open, null_identify, null_status, null_reset,
-                                             null_write, null_flush, null_read, null_close, null_version, NULL };
+const ef_transport_ops ef_transport_null = { "null",     null_probe, null_open, null_identify, null_status,  null_reset,
+                                             null_write, null_flush, null_read, null_close,    null_version, NULL };

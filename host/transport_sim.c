@@ -32,10 +32,9 @@
 #include "ef_frame.h"
 #include "transport.h"
 
-enum { F_DROP, F_CORRUPT, F_UNPLUG, F_RESET, F_STALL, F_DROP_REPLY, F_CORRUPT_REPLY, F_NOT_OURS, F_PROTOCOL,
-       F_KINDS };
-static const char *const FAULT_NAME[F_KINDS] = { "drop", "corrupt", "unplug", "reset", "stall", "drop-reply",
-                                                 "corrupt-reply", "not-ours", "protocol" };
+enum { F_DROP, F_CORRUPT, F_UNPLUG, F_RESET, F_STALL, F_DROP_REPLY, F_CORRUPT_REPLY, F_NOT_OURS, F_PROTOCOL, F_KINDS };
+static const char *const FAULT_NAME[F_KINDS] = { "drop",       "corrupt",       "unplug",   "reset",   "stall",
+                                                 "drop-reply", "corrupt-reply", "not-ours", "protocol" };
 #define MAX_FAULTS 32
 #define LOG_RESET 0xffffffffu
 
@@ -43,22 +42,22 @@ typedef struct sim_link {
     ef_board *b;
     FILE *log;
     int gone, stalled;
-    int reply_faults;           /* drop-reply or corrupt-reply asked for: replies go frame by frame */
-    struct { int kind; uint64_t at; } fault[MAX_FAULTS];
+    int reply_faults; /* drop-reply or corrupt-reply asked for: replies go frame by frame */
+    struct {
+        int kind;
+        uint64_t at;
+    } fault[MAX_FAULTS];
     int nfaults;
     uint64_t wframes, rframes;
-    uint8_t *in;                /* board output not yet split into frames */
+    uint8_t *in; /* board output not yet split into frames */
     size_t in_len, in_cap;
-    uint8_t *out;               /* frames for the host, after reply faults */
+    uint8_t *out; /* frames for the host, after reply faults */
     size_t out_len, out_pos, out_cap;
 } sim_link;
 
-static int sim_dut = EF_SIM_DUT_MODEL;     /* set by main before any open */
+static int sim_dut = EF_SIM_DUT_MODEL; /* set by main before any open */
 
-void ef_transport_sim_select_dut(int which)
-{
-    sim_dut = which;
-}
+void ef_transport_sim_select_dut(int which) { sim_dut = which; }
 
 static void nap_ms(int ms)
 {
@@ -90,8 +89,10 @@ static int parse_faults(sim_link *s, const char *text, char *err, size_t errlen)
         char *end;
         const unsigned long long n = eq ? strtoull(eq + 1, &end, 10) : 0;
         if (kind < 0 || !eq || end != p + len || n == 0 || eq[1] == '-' || s->nfaults == MAX_FAULTS) {
-            snprintf(err, errlen, "--sim-faults: '%.*s' is not KIND=N (KIND: drop, corrupt, unplug, reset, stall, "
-                     "drop-reply, corrupt-reply, not-ours, protocol; N >= 1; at most %d)", (int)len, p, MAX_FAULTS);
+            snprintf(err, errlen,
+                     "--sim-faults: '%.*s' is not KIND=N (KIND: drop, corrupt, unplug, reset, stall, "
+                     "drop-reply, corrupt-reply, not-ours, protocol; N >= 1; at most %d)",
+                     (int)len, p, MAX_FAULTS);
             return EF_HOST_EINVAL;
         }
         s->fault[s->nfaults].kind = kind;
@@ -110,8 +111,7 @@ static int log_bytes(sim_link *s, const uint8_t *buf, uint32_t len)
         return 0;
     uint8_t n[4];
     ef_put32(n, len);
-    if (fwrite(n, 1, 4, s->log) != 4 || (len != LOG_RESET && fwrite(buf, 1, len, s->log) != len) ||
-        fflush(s->log) != 0)
+    if (fwrite(n, 1, 4, s->log) != 4 || (len != LOG_RESET && fwrite(buf, 1, len, s->log) != len) || fflush(s->log) != 0)
         return EF_HOST_EIO;
     return 0;
 }
@@ -177,7 +177,7 @@ static int replay(sim_link *s, const char *path)
         if (len == LOG_RESET) {
             ef_board_reset(s->b);
         } else if (len > EF_BOARD_FRAME_MAX + 16 || fread(buf, 1, len, f) != len) {
-            r = EF_HOST_EIO;             /* a log cut short by a crash: the tail is lost */
+            r = EF_HOST_EIO; /* a log cut short by a crash: the tail is lost */
         } else {
             ef_board_rx(s->b, buf, len);
         }
@@ -199,8 +199,14 @@ static int sim_open(ef_link **out, const ef_host_opts *o, char *err, size_t errl
         free(s);
         return r;
     }
-    ef_board_info info = { "EFSIM0001", EF_BOARD_CAP_RESULTS | EF_BOARD_CAP_RESUME | EF_BOARD_CAP_INTERNAL,
-                           1u << 3 | 1u << 4 | 1u << 5, 16384, 16384, 1u << 22, 16, (1u << 7) - 1 };
+    ef_board_info info = { "EFSIM0001",
+                           EF_BOARD_CAP_RESULTS | EF_BOARD_CAP_RESUME | EF_BOARD_CAP_INTERNAL,
+                           1u << 3 | 1u << 4 | 1u << 5,
+                           16384,
+                           16384,
+                           1u << 22,
+                           16,
+                           (1u << 7) - 1 };
     ef_board_dut dut;
     if (sim_dut == EF_SIM_DUT_RTL) {
         if (!ef_board_dut_rtl_built()) {
@@ -226,8 +232,7 @@ static int sim_open(ef_link **out, const ef_host_opts *o, char *err, size_t errl
         char path[4200];
         snprintf(path, sizeof path, "%s/board.log", o->sim_state);
         if (ef_cli_make_dirs(o->sim_state) != 0 || (r = replay(s, path)) != 0 || !(s->log = fopen(path, "ab"))) {
-            snprintf(err, errlen, "--sim-state: cannot use %s: %s", path,
-                     r ? ef_host_strerror(r) : strerror(errno));
+            snprintf(err, errlen, "--sim-state: cannot use %s: %s", path, r ? ef_host_strerror(r) : strerror(errno));
             ef_board_free(s->b);
             free(s);
             return r ? r : EF_HOST_EIO;
@@ -333,7 +338,7 @@ static int sim_read(ef_link *l, uint8_t *buf, size_t cap, size_t *got, int timeo
             return 0;
     }
     if (n == 0) {
-        nap_ms(timeout_ms);             /* nothing will come: a board would be silent this long */
+        nap_ms(timeout_ms); /* nothing will come: a board would be silent this long */
         return EF_HOST_ETIMEDOUT;
     }
     if (n > cap)
@@ -360,7 +365,7 @@ static void sim_close(ef_link *l)
 static int sim_probe(const ef_host_opts *o, ef_found *found, int max)
 {
     (void)o, (void)found, (void)max;
-    return 0;                           /* never found: the simulated board is only used when named */
+    return 0; /* never found: the simulated board is only used when named */
 }
 
 static const char *sim_version(void)
@@ -371,5 +376,5 @@ static const char *sim_version(void)
     return text;
 }
 
-const ef_transport_ops ef_transport_sim = { "sim", sim_probe, sim_open, sim_identify, sim_status, sim_reset,
-                                            sim_write, sim_flush, sim_read, sim_close, sim_version, NULL };
+const ef_transport_ops ef_transport_sim = { "sim",     sim_probe, sim_open, sim_identify, sim_status,  sim_reset,
+                                            sim_write, sim_flush, sim_read, sim_close,    sim_version, NULL };

@@ -34,19 +34,26 @@
 #include "ef_frame.h"
 #include "transport.h"
 
-enum { CTL_IDENTIFY = 0x10, CTL_STATUS = 0x11, CTL_RESET = 0x12, CTL_REPLY = 0x80, CTL_TRIES = 4,
-       CTL_PAYLOAD_MAX = 64, DEFAULT_TIMEOUT_MS = 2000 };
+enum {
+    CTL_IDENTIFY = 0x10,
+    CTL_STATUS = 0x11,
+    CTL_RESET = 0x12,
+    CTL_REPLY = 0x80,
+    CTL_TRIES = 4,
+    CTL_PAYLOAD_MAX = 64,
+    DEFAULT_TIMEOUT_MS = 2000
+};
 
 typedef struct sock_link {
     int fd, timeout_ms, gone;
     char addr[300];
     char err[400];
-    uint8_t *in;            /* bytes from the board: [0, pass) for host_link, [pass, len) not yet scanned */
+    uint8_t *in; /* bytes from the board: [0, pass) for host_link, [pass, len) not yet scanned */
     size_t pass, len, cap;
-    size_t skip;            /* bytes of a non-control frame still to pass through unscanned */
-    uint32_t tag;           /* the last control request's tag */
-    int want_type;          /* reply type awaited (0: none) */
-    int got;                /* the awaited reply arrived */
+    size_t skip;   /* bytes of a non-control frame still to pass through unscanned */
+    uint32_t tag;  /* the last control request's tag */
+    int want_type; /* reply type awaited (0: none) */
+    int got;       /* the awaited reply arrived */
     uint8_t reply[CTL_PAYLOAD_MAX];
     uint32_t reply_len;
 } sock_link;
@@ -104,7 +111,7 @@ static void scan(sock_link *s)
         const size_t avail = s->len - p;
         if (memcmp(s->in + p, EF_BOARD_MAGIC, avail < 4 ? avail : 4) != 0) {
             const uint8_t *e = memchr(s->in + p + 1, 'E', avail - 1);
-            p = e ? (size_t)(e - s->in) : s->len;          /* no frame here: host_link resyncs */
+            p = e ? (size_t)(e - s->in) : s->len; /* no frame here: host_link resyncs */
             continue;
         }
         if (avail < EF_BOARD_HEADER)
@@ -127,10 +134,10 @@ static void scan(sock_link *s)
         if (avail < size)
             break;
         if (ef_frame_crc32(0, s->in + p, EF_BOARD_HEADER + n) != ef_get32(s->in + p + EF_BOARD_HEADER + n)) {
-            p++;                                            /* damaged: never seen, the request is retried */
+            p++; /* damaged: never seen, the request is retried */
             continue;
         }
-        p = take_reply(s, p, size);                         /* 0 after a reset's reply */
+        p = take_reply(s, p, size); /* 0 after a reset's reply */
     }
     s->pass = p < s->len ? p : s->len;
 }
@@ -175,7 +182,7 @@ static int send_all(sock_link *s, const uint8_t *buf, size_t len, int timeout_ms
         const ssize_t n = send(s->fd, buf, len, MSG_NOSIGNAL);
         if (n > 0) {
             buf += n, len -= (size_t)n;
-            deadline = now_ms() + timeout_ms;               /* the timeout bounds a wait with no progress */
+            deadline = now_ms() + timeout_ms; /* the timeout bounds a wait with no progress */
             continue;
         }
         if (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR)
@@ -275,9 +282,9 @@ static int dial(sock_link *s, const char *addr, int timeout_ms, char *err, size_
     if (e) {
         snprintf(err, errlen, "%s: %s (is the board, bridge or simulation listening?)", addr, strerror(e));
         return e == EACCES || e == EPERM ? EF_HOST_EACCESS
-             : e == ECONNREFUSED || e == ENOENT || e == ETIMEDOUT || e == EHOSTUNREACH || e == ENETUNREACH
-                     ? EF_HOST_ENOTFOUND
-                     : EF_HOST_EIO;
+               : e == ECONNREFUSED || e == ENOENT || e == ETIMEDOUT || e == EHOSTUNREACH || e == ENETUNREACH
+                   ? EF_HOST_ENOTFOUND
+                   : EF_HOST_EIO;
     }
     if (family != AF_UNIX) {
         const int one = 1;
@@ -358,10 +365,7 @@ static int sock_status(ef_link *l, uint8_t out[40])
     return control((sock_link *)l, CTL_STATUS, out, EF_BOARD_STATUS_LEN);
 }
 
-static int sock_reset(ef_link *l)
-{
-    return control((sock_link *)l, CTL_RESET, NULL, 0);
-}
+static int sock_reset(ef_link *l) { return control((sock_link *)l, CTL_RESET, NULL, 0); }
 
 static int sock_write(ef_link *l, const uint8_t *buf, size_t len, int timeout_ms)
 {
@@ -371,7 +375,7 @@ static int sock_write(ef_link *l, const uint8_t *buf, size_t len, int timeout_ms
 
 static int sock_flush(ef_link *l, int timeout_ms)
 {
-    (void)timeout_ms;                   /* write() hands every byte to the kernel before it returns */
+    (void)timeout_ms; /* write() hands every byte to the kernel before it returns */
     return ((sock_link *)l)->gone ? EF_HOST_ENODEV : 0;
 }
 
@@ -410,19 +414,13 @@ static void sock_close(ef_link *l)
 static int sock_probe(const ef_host_opts *o, ef_found *found, int max)
 {
     (void)o, (void)found, (void)max;
-    return 0;                           /* sockets are not probed: the address is always named */
+    return 0; /* sockets are not probed: the address is always named */
 }
 
-static const char *sock_version(void)
-{
-    return "built in (POSIX sockets: --connect unix:PATH or tcp:HOST:PORT)";
-}
+static const char *sock_version(void) { return "built in (POSIX sockets: --connect unix:PATH or tcp:HOST:PORT)"; }
 
-static const char *sock_detail(ef_link *l)
-{
-    return l ? ((sock_link *)l)->err : "";
-}
+static const char *sock_detail(ef_link *l) { return l ? ((sock_link *)l)->err : ""; }
 
-const ef_transport_ops ef_transport_socket = { "socket", sock_probe, sock_open, sock_identify, sock_status,
-                                               sock_reset, sock_write, sock_flush, sock_read, sock_close,
-                                               sock_version, sock_detail };
+const ef_transport_ops ef_transport_socket = { "socket",    sock_probe, sock_open,    sock_identify,
+                                               sock_status, sock_reset, sock_write,   sock_flush,
+                                               sock_read,   sock_close, sock_version, sock_detail };

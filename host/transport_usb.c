@@ -39,19 +39,19 @@ _Static_assert(EF_USB_PROTOCOL == EF_BOARD_PROTOCOL, "one protocol version");
  * High-Speed's 53.248 MB/s: enough to keep the bus busy through a host
  * scheduling hiccup of a few ms, small enough for any board's FIFO. */
 #define USB_XFER_DEFAULT (64u * 1024u)
-#define USB_XFER_MIN 512u               /* one High-Speed packet */
+#define USB_XFER_MIN 512u /* one High-Speed packet */
 #define USB_XFER_MAX (16u * 1024u * 1024u)
 #define USB_INFLIGHT_DEFAULT 8u
-#define USB_INFLIGHT_MIN 1u             /* 1 is allowed for measuring; default >= 4 */
+#define USB_INFLIGHT_MIN 1u /* 1 is allowed for measuring; default >= 4 */
 #define USB_INFLIGHT_MAX 256u
-#define USB_TIMEOUT_DEFAULT 2000        /* ms, every bulk transfer */
-#define USB_CTRL_TIMEOUT 1000           /* ms, every control transfer */
-#define USB_IDENTIFY_RETRY_MS 1500      /* re-enumeration after plug-in */
+#define USB_TIMEOUT_DEFAULT 2000   /* ms, every bulk transfer */
+#define USB_CTRL_TIMEOUT 1000      /* ms, every control transfer */
+#define USB_IDENTIFY_RETRY_MS 1500 /* re-enumeration after plug-in */
 
 typedef struct usb_xfer {
     struct libusb_transfer *t;
     struct ef_link *link;
-    int busy;                           /* submitted, callback not yet run */
+    int busy; /* submitted, callback not yet run */
 } usb_xfer;
 
 struct ef_link {
@@ -60,20 +60,20 @@ struct ef_link {
     int claimed;
     unsigned xfer_size, nx;
     int timeout_ms;
-    char where[16];                     /* "BUS:DEV" */
+    char where[16]; /* "BUS:DEV" */
     char serial[20];
 
-    usb_xfer *out;                      /* nx OUT transfers */
-    unsigned out_fill_idx;              /* transfer being filled, or nx if none */
-    size_t out_fill;                    /* bytes in it */
+    usb_xfer *out;         /* nx OUT transfers */
+    unsigned out_fill_idx; /* transfer being filled, or nx if none */
+    size_t out_fill;       /* bytes in it */
     unsigned out_busy;
 
-    usb_xfer *in;                       /* nx IN transfers */
+    usb_xfer *in; /* nx IN transfers */
     unsigned in_busy;
-    uint8_t *ring;                      /* bytes received, not yet read */
+    uint8_t *ring; /* bytes received, not yet read */
     size_t ring_cap, ring_head, ring_len;
 
-    int error;                          /* sticky EF_HOST_E*, 0 if none */
+    int error; /* sticky EF_HOST_E*, 0 if none */
     char err[320];
 };
 
@@ -114,7 +114,7 @@ static int xfer_status_err(enum libusb_transfer_status s)
     case LIBUSB_TRANSFER_COMPLETED: return EF_HOST_OK;
     case LIBUSB_TRANSFER_TIMED_OUT: return EF_HOST_ETIMEDOUT;
     case LIBUSB_TRANSFER_NO_DEVICE: return EF_HOST_ENODEV;
-    default: return EF_HOST_EIO;    /* STALL, OVERFLOW, ERROR, CANCELLED */
+    default: return EF_HOST_EIO; /* STALL, OVERFLOW, ERROR, CANCELLED */
     }
 }
 
@@ -152,13 +152,14 @@ static int link_fail(struct ef_link *l, int e, const char *what)
     if (e == EF_HOST_ENODEV)
         snprintf(l->err, sizeof l->err,
                  "usb %s (serial %s): the board went away during %s (unplugged or reset); "
-                 "plug it in and run again with --resume", l->where, l->serial, what);
+                 "plug it in and run again with --resume",
+                 l->where, l->serial, what);
     else if (e == EF_HOST_ETIMEDOUT)
-        snprintf(l->err, sizeof l->err, "usb %s (serial %s): %s timed out after %d ms",
-                 l->where, l->serial, what, l->timeout_ms);
+        snprintf(l->err, sizeof l->err, "usb %s (serial %s): %s timed out after %d ms", l->where, l->serial, what,
+                 l->timeout_ms);
     else
-        snprintf(l->err, sizeof l->err, "usb %s (serial %s): %s failed: %s", l->where, l->serial,
-                 what, ef_host_strerror(e));
+        snprintf(l->err, sizeof l->err, "usb %s (serial %s): %s failed: %s", l->where, l->serial, what,
+                 ef_host_strerror(e));
     return e;
 }
 
@@ -172,12 +173,12 @@ static int usb_identify_raw(libusb_device_handle *h, uint8_t out[EF_USB_IDENTIFY
     int64_t end = now_ms() + retry_ms;
     int delay = 20;
     for (;;) {
-        int n = libusb_control_transfer(h, EF_USB_RT_IN, EF_USB_REQ_IDENTIFY, 0, 0, out,
-                                        EF_USB_IDENTIFY_LEN, USB_CTRL_TIMEOUT);
+        int n = libusb_control_transfer(h, EF_USB_RT_IN, EF_USB_REQ_IDENTIFY, 0, 0, out, EF_USB_IDENTIFY_LEN,
+                                        USB_CTRL_TIMEOUT);
         if (n == EF_USB_IDENTIFY_LEN)
             return 0;
         if (n >= 0)
-            return EF_HOST_EPROTO;      /* short answer: not our board */
+            return EF_HOST_EPROTO; /* short answer: not our board */
         if (n == LIBUSB_ERROR_NO_DEVICE || n == LIBUSB_ERROR_ACCESS || now_ms() >= end)
             return usb_err(n);
         sleep_ms(delay);
@@ -192,11 +193,11 @@ static int usb_check_identify(const uint8_t raw[EF_USB_IDENTIFY_LEN], ef_host_id
     if (ef_host_ident_parse(raw, id) == 0)
         return 0;
     if (memcmp(raw, EF_USB_MAGIC, 4) != 0)
-        snprintf(why, whylen, "not an edgeflag board (identify magic %02x %02x %02x %02x, expected \"EFB1\")",
-                 raw[0], raw[1], raw[2], raw[3]);
+        snprintf(why, whylen, "not an edgeflag board (identify magic %02x %02x %02x %02x, expected \"EFB1\")", raw[0],
+                 raw[1], raw[2], raw[3]);
     else
-        snprintf(why, whylen, "edgeflag board speaking protocol version %u; this host speaks version %u",
-                 id->protocol, EF_USB_PROTOCOL);
+        snprintf(why, whylen, "edgeflag board speaking protocol version %u; this host speaks version %u", id->protocol,
+                 EF_USB_PROTOCOL);
     return EF_HOST_EPROTO;
 }
 
@@ -204,9 +205,9 @@ typedef struct usb_cand {
     libusb_device *dev;
     uint8_t bus, addr;
     uint16_t vid, pid;
-    int status;                         /* 0 ours, else why not */
+    int status; /* 0 ours, else why not */
     char serial[20];
-    char desc[144];                     /* room for "#N " in ef_found.desc */
+    char desc[144]; /* room for "#N " in ef_found.desc */
 } usb_cand;
 
 /* Opens and identifies one candidate; fills status, serial, desc.
@@ -220,11 +221,12 @@ static void cand_probe(usb_cand *c, libusb_device_handle **hout)
     if (r != 0) {
         c->status = usb_err(r);
         if (c->status == EF_HOST_EACCESS)
-            snprintf(c->desc, sizeof c->desc, "%04x:%04x permission denied (udev rule host/60-edgeflag.rules "
-                     "not installed? see docs/board-usb.md section 8)", c->vid, c->pid);
+            snprintf(c->desc, sizeof c->desc,
+                     "%04x:%04x permission denied (udev rule host/60-edgeflag.rules "
+                     "not installed? see docs/board-usb.md section 8)",
+                     c->vid, c->pid);
         else
-            snprintf(c->desc, sizeof c->desc, "%04x:%04x cannot open: %s", c->vid, c->pid,
-                     libusb_error_name(r));
+            snprintf(c->desc, sizeof c->desc, "%04x:%04x cannot open: %s", c->vid, c->pid, libusb_error_name(r));
         return;
     }
     r = usb_identify_raw(h, id, USB_IDENTIFY_RETRY_MS);
@@ -279,9 +281,9 @@ static int cand_scan(libusb_context *ctx, const ef_host_opts *o, usb_cand **out)
         k++;
     }
     libusb_free_device_list(devs, 1);
-    for (int i = 1; i < k; i++)                 /* insertion sort: a handful */
-        for (int j = i; j > 0 && (c[j - 1].bus > c[j].bus ||
-                                  (c[j - 1].bus == c[j].bus && c[j - 1].addr > c[j].addr)); j--) {
+    for (int i = 1; i < k; i++) /* insertion sort: a handful */
+        for (int j = i; j > 0 && (c[j - 1].bus > c[j].bus || (c[j - 1].bus == c[j].bus && c[j - 1].addr > c[j].addr));
+             j--) {
             usb_cand t = c[j];
             c[j] = c[j - 1];
             c[j - 1] = t;
@@ -341,10 +343,10 @@ static int usb_probe(const ef_host_opts *o, ef_found *found, int max)
 /* ---- selection -------------------------------------------------------- */
 
 typedef struct usb_sel {
-    const char *serial;                 /* NULL: any */
+    const char *serial; /* NULL: any */
     size_t serial_len;
-    int bus, addr;                      /* -1: any */
-    int index;                          /* -1: any */
+    int bus, addr; /* -1: any */
+    int index;     /* -1: any */
 } usb_sel;
 
 static int all_digits(const char *s, size_t n)
@@ -383,8 +385,7 @@ static int parse_sel(const char *spec, usb_sel *s, char *err, size_t errlen)
             s->serial_len = n - 7;
         } else if (n > 1 && p[0] == '#' && all_digits(p + 1, n - 1)) {
             s->index = parse_num(p + 1, n - 1);
-        } else if (colon && all_digits(p, (size_t)(colon - p)) &&
-                   all_digits(colon + 1, n - (size_t)(colon - p) - 1)) {
+        } else if (colon && all_digits(p, (size_t)(colon - p)) && all_digits(colon + 1, n - (size_t)(colon - p) - 1)) {
             s->bus = parse_num(p, (size_t)(colon - p));
             s->addr = parse_num(colon + 1, n - (size_t)(colon - p) - 1);
             if (s->bus > 255 || s->addr > 255)
@@ -400,8 +401,10 @@ static int parse_sel(const char *spec, usb_sel *s, char *err, size_t errlen)
         p = e + 1;
     }
 bad:
-    snprintf(err, errlen, "--device '%s': expected SERIAL (up to 16 characters), BUS:DEV (decimal, "
-             "as `edgeflag-host list` prints), #INDEX, or several of them separated by commas", spec);
+    snprintf(err, errlen,
+             "--device '%s': expected SERIAL (up to 16 characters), BUS:DEV (decimal, "
+             "as `edgeflag-host list` prints), #INDEX, or several of them separated by commas",
+             spec);
     return EF_HOST_EINVAL;
 }
 
@@ -577,7 +580,7 @@ static int usb_read(ef_link *l, uint8_t *buf, size_t cap, size_t *got, int timeo
     *got = 0;
     if (l->error && l->ring_len == 0)
         return l->error;
-    if (!l->error && out_submit_fill(l))      /* the board may need these bytes to answer */
+    if (!l->error && out_submit_fill(l)) /* the board may need these bytes to answer */
         return l->error;
     int64_t end = now_ms() + (timeout_ms > 0 ? timeout_ms : 0);
     while (l->ring_len == 0) {
@@ -613,8 +616,8 @@ static int usb_ctrl_in(ef_link *l, uint8_t req, uint8_t *out, uint16_t len, cons
     if (n == len)
         return 0;
     if (n >= 0) {
-        snprintf(l->err, sizeof l->err, "usb %s (serial %s): %s returned %d of %u bytes", l->where, l->serial,
-                 what, n, len);
+        snprintf(l->err, sizeof l->err, "usb %s (serial %s): %s returned %d of %u bytes", l->where, l->serial, what, n,
+                 len);
         return EF_HOST_EPROTO;
     }
     if (n == LIBUSB_ERROR_NO_DEVICE)
@@ -648,8 +651,7 @@ static int usb_reset(ef_link *l)
     }
     if (n == LIBUSB_ERROR_NO_DEVICE)
         return link_fail(l, EF_HOST_ENODEV, "reset");
-    snprintf(l->err, sizeof l->err, "usb %s (serial %s): reset failed: %s", l->where, l->serial,
-             libusb_error_name(n));
+    snprintf(l->err, sizeof l->err, "usb %s (serial %s): reset failed: %s", l->where, l->serial, libusb_error_name(n));
     return usb_err(n);
 }
 
@@ -728,8 +730,8 @@ static int usb_open(ef_link **out, const ef_host_opts *o, char *err, size_t errl
     unsigned xs = o && o->transfer_size ? o->transfer_size : USB_XFER_DEFAULT;
     unsigned nx = o && o->in_flight ? o->in_flight : USB_INFLIGHT_DEFAULT;
     if (xs < USB_XFER_MIN || xs > USB_XFER_MAX || xs % USB_XFER_MIN != 0) {
-        snprintf(err, errlen, "transfer size %u: must be a multiple of 512 between %u and %u bytes", xs,
-                 USB_XFER_MIN, USB_XFER_MAX);
+        snprintf(err, errlen, "transfer size %u: must be a multiple of 512 between %u and %u bytes", xs, USB_XFER_MIN,
+                 USB_XFER_MAX);
         return EF_HOST_EINVAL;
     }
     if (nx < USB_INFLIGHT_MIN || nx > USB_INFLIGHT_MAX) {
@@ -802,11 +804,14 @@ static int usb_open(ef_link **out, const ef_host_opts *o, char *err, size_t errl
             r = EF_HOST_EPROTO;
         } else if (nmatch == 0) {
             snprintf(err, errlen, "no edgeflag board matches%s (VID:PID %04x:%04x; %s%s)", sel_echo, vid, pid,
-                     idx ? "boards found: " : n ? "no device answered identify" : "no such device", seen);
+                     idx ? "boards found: "
+                     : n ? "no device answered identify"
+                         : "no such device",
+                     seen);
             r = EF_HOST_ENOTFOUND;
         } else {
-            snprintf(err, errlen, "%d boards match%s (%s); choose one with --device SERIAL or BUS:DEV",
-                     nmatch, sel_echo, seen);
+            snprintf(err, errlen, "%d boards match%s (%s); choose one with --device SERIAL or BUS:DEV", nmatch,
+                     sel_echo, seen);
             r = EF_HOST_EAMBIGUOUS;
         }
         cand_free(c, n);
@@ -823,8 +828,10 @@ static int usb_open(ef_link **out, const ef_host_opts *o, char *err, size_t errl
         if (e == EF_HOST_EACCESS)
             access_msg(err, errlen, l->where, spec);
         else if (e == EF_HOST_EBUSY)
-            snprintf(err, errlen, "device %s (serial %s)%s: interface %d is claimed by another program (close it, "
-                     "or check `lsof /dev/bus/usb/*/*`)", l->where, l->serial, sel_echo, EF_USB_INTERFACE);
+            snprintf(err, errlen,
+                     "device %s (serial %s)%s: interface %d is claimed by another program (close it, "
+                     "or check `lsof /dev/bus/usb/*/*`)",
+                     l->where, l->serial, sel_echo, EF_USB_INTERFACE);
         else
             snprintf(err, errlen, "device %s (serial %s)%s: cannot claim interface %d: %s", l->where, l->serial,
                      sel_echo, EF_USB_INTERFACE, libusb_error_name(r));
@@ -834,8 +841,7 @@ static int usb_open(ef_link **out, const ef_host_opts *o, char *err, size_t errl
     l->claimed = 1;
     l->ring_cap = (size_t)(nx + 1) * xs;
     l->ring = malloc(l->ring_cap);
-    if (!l->ring || alloc_xfers(l, &l->out, EF_USB_EP_OUT, out_cb) ||
-        alloc_xfers(l, &l->in, EF_USB_EP_IN, in_cb)) {
+    if (!l->ring || alloc_xfers(l, &l->out, EF_USB_EP_OUT, out_cb) || alloc_xfers(l, &l->in, EF_USB_EP_IN, in_cb)) {
         snprintf(err, errlen, "device %s: out of memory for %u transfers of %u bytes", l->where, nx, xs);
         usb_close(l);
         return EF_HOST_ENOMEM;
@@ -859,10 +865,7 @@ static const char *usb_version(void)
     return v;
 }
 
-static const char *usb_detail(ef_link *l)
-{
-    return l ? l->err : "";
-}
+static const char *usb_detail(ef_link *l) { return l ? l->err : ""; }
 
 const ef_transport_ops ef_transport_usb = {
     .name = "usb",

@@ -53,10 +53,7 @@ static int none_read(ef_link *l, uint8_t *buf, size_t cap, size_t *got, int time
     return EF_HOST_EUNSUPPORTED;
 }
 
-static void none_close(ef_link *l)
-{
-    (void)l;
-}
+static void none_close(ef_link *l) { (void)l; }
 
 static const char *none_version(void)
 {

@@ -37,9 +37,9 @@ ef_status ef_fill(ef_ctx *ctx, ef_image *img, const ef_polygon *poly, ef_rule ru
     if (!ctx || !img || img->width != ctx->width || img->height != ctx->height)
         return EF_ERR_ARG;
     if (ctx->trace)
-        return ef_trace_fill(ctx, img, poly, rule, color);   /* the cycle-stamped pipeline */
+        return ef_trace_fill(ctx, img, poly, rule, color); /* the cycle-stamped pipeline */
     if (ctx->filt)
-        return ef_filter_fill(ctx, img, poly, rule, color);  /* section 3.5 options (filter.c) */
+        return ef_filter_fill(ctx, img, poly, rule, color); /* section 3.5 options (filter.c) */
     ef_blend b;
     uint8_t p[4] = { ef_mul255(color.r, color.a), ef_mul255(color.g, color.a), ef_mul255(color.b, color.a), color.a };
     memcpy(&b.solid, p, 4);

@@ -16,8 +16,9 @@
 #define P6(c) P4(c), P4((c) + 1), P4((c) + 1), P4((c) + 2)
 static const uint8_t count_mask8[256] = { P6(0), P6(1), P6(1), P6(2) };
 
-#define C8(n, b) ALPHA(b, n), ALPHA((b) + 1, n), ALPHA((b) + 2, n), ALPHA((b) + 3, n), \
-                 ALPHA((b) + 4, n), ALPHA((b) + 5, n), ALPHA((b) + 6, n), ALPHA((b) + 7, n)
+#define C8(n, b) \
+    ALPHA(b, n), ALPHA((b) + 1, n), ALPHA((b) + 2, n), ALPHA((b) + 3, n), ALPHA((b) + 4, n), ALPHA((b) + 5, n), \
+        ALPHA((b) + 6, n), ALPHA((b) + 7, n)
 static const uint8_t alpha_count8[9] = { C8(8, 0), ALPHA(8, 8) };
 static const uint8_t alpha_count16[17] = { C8(16, 0), C8(16, 8), ALPHA(16, 16) };
 static const uint8_t alpha_count32[33] = { C8(32, 0), C8(32, 8), C8(32, 16), C8(32, 24), ALPHA(32, 32) };

@@ -37,11 +37,11 @@ ef_status ef_ctx_create(ef_ctx **out, int32_t width, int32_t height, int samples
     ctx->h = EF_DEV_ONE / samples;
     ctx->c = ctx->h / 2;
 #if defined(EF_MUTATION) && EF_MUTATION == 3
-    ctx->c = 0;   /* test builds only: samples shifted half a sub-pixel (tests/mutants.sh) */
+    ctx->c = 0; /* test builds only: samples shifted half a sub-pixel (tests/mutants.sh) */
 #endif
     const uint8_t *k = ef_pattern(samples);
     for (int s = 0; s < samples; s++) {
-        ctx->off[s] = EF_DEV_ONE - ctx->h * k[s] - ctx->c;   /* spec 6.1: 1 <= off <= 255 */
+        ctx->off[s] = EF_DEV_ONE - ctx->h * k[s] - ctx->c; /* spec 6.1: 1 <= off <= 255 */
         ctx->mask_pairs[2 * s] = (int16_t)s;
         ctx->mask_pairs[2 * s + 1] = (int16_t)ctx->off[s];
     }
@@ -50,7 +50,7 @@ ef_status ef_ctx_create(ef_ctx **out, int32_t width, int32_t height, int samples
     ctx->slot = malloc((size_t)height * sizeof *ctx->slot);
     ctx->eo_cells = calloc(cells, sizeof *ctx->eo_cells);
     ctx->nz_cells = calloc(cells * (size_t)(samples / 8), sizeof *ctx->nz_cells);
-    ctx->occ = calloc((cells + 63) / 64 + 1, sizeof *ctx->occ);   /* + 1: MASK rows OR zeros past the last cell */
+    ctx->occ = calloc((cells + 63) / 64 + 1, sizeof *ctx->occ); /* + 1: MASK rows OR zeros past the last cell */
     ctx->crowd = calloc(cells + 1, sizeof *ctx->crowd);
     if (!ctx->slot || !ctx->eo_cells || !ctx->nz_cells || !ctx->occ || !ctx->crowd) {
         ef_ctx_destroy(ctx);

@@ -58,9 +58,9 @@ typedef struct setup_state {
     ef_slot *slot;
     uint32_t nedges;
     uint32_t dropped;
-    int32_t h, c;           /* 256/N and h/2 */
-    unsigned sh;            /* h = 2^sh */
-    int32_t last_row;       /* last sample row, N*H - 1 */
+    int32_t h, c;     /* 256/N and h/2 */
+    unsigned sh;      /* h = 2^sh */
+    int32_t last_row; /* last sample row, N*H - 1 */
     int32_t row_min, row_max;
 } setup_state;
 
@@ -74,12 +74,12 @@ static inline void setup_edge(setup_state *st, ef_point a, ef_point b)
     const unsigned sh = st->sh;
     const int down = a.y < b.y;
     const ef_point p0 = down ? a : b, p1 = down ? b : a;
-    int32_t r0 = floor_shr(p0.y - c + h - 1, sh);         /* ceil((Y0 - c) / h) */
-    int32_t r1 = floor_shr(p1.y - c - 1, sh);             /* ceil((Y1 - c) / h) - 1 */
+    int32_t r0 = floor_shr(p0.y - c + h - 1, sh); /* ceil((Y0 - c) / h) */
+    int32_t r1 = floor_shr(p1.y - c - 1, sh);     /* ceil((Y1 - c) / h) - 1 */
     if (r0 < 0)
-        r0 = 0;                                            /* top clip: start inside */
+        r0 = 0; /* top clip: start inside */
     if (r1 > st->last_row)
-        r1 = st->last_row;                                 /* bottom clip */
+        r1 = st->last_row; /* bottom clip */
     if (r0 > r1) {
         st->dropped++;
         return;
@@ -88,8 +88,8 @@ static inline void setup_edge(setup_state *st, ef_point a, ef_point b)
     ef_edge *E = &st->edges[i];
     E->x0 = p0.x;
     E->y0 = p0.y;
-    E->dx = p1.x - p0.x;                                   /* |dx| < 2^24 */
-    E->dy = p1.y - p0.y;                                   /* 1 .. 2^24 - 1 */
+    E->dx = p1.x - p0.x; /* |dx| < 2^24 */
+    E->dy = p1.y - p0.y; /* 1 .. 2^24 - 1 */
     E->r0 = r0;
     E->r1 = r1;
     E->dir = down ? 1 : -1;
@@ -116,18 +116,27 @@ ef_status ef_edges_setup(ef_ctx *ctx, const ef_polygon *poly, int32_t *row_min, 
      * (as the start of its edge); a bad one undoes what was built, so an
      * error leaves no state behind (and no diagnostic counted: the counts
      * reach ctx->diag only on success). */
-    setup_state st = { ctx->edges, ctx->slot, 0, 0, ctx->h, ctx->c,
-                       ctx->samples == 8 ? 5u : ctx->samples == 16 ? 4u : 3u,
-                       ctx->samples * ctx->height - 1, INT32_MAX, -1 };
+    setup_state st = { ctx->edges,
+                       ctx->slot,
+                       0,
+                       0,
+                       ctx->h,
+                       ctx->c,
+                       ctx->samples == 8    ? 5u
+                       : ctx->samples == 16 ? 4u
+                                            : 3u,
+                       ctx->samples * ctx->height - 1,
+                       INT32_MAX,
+                       -1 };
     uint32_t edges_in = 0;
     int bad = 0;
     for (uint32_t ci = poly->ncontours; ci-- > 0 && !bad;) {
         uint32_t b = poly->start[ci], n = poly->start[ci + 1] - b;
         edges_in += n;
         if (n == 0)
-            continue;                              /* pts may be NULL when every contour is empty */
+            continue; /* pts may be NULL when every contour is empty */
         const ef_point *pts = poly->pts + b;
-        ef_point bb = pts[0];                      /* edge k runs pts[k] -> pts[k+1 mod n] */
+        ef_point bb = pts[0]; /* edge k runs pts[k] -> pts[k+1 mod n] */
         if (coord_bad(bb)) {
             bad = 1;
             break;
@@ -139,7 +148,7 @@ ef_status ef_edges_setup(ef_ctx *ctx, const ef_polygon *poly, int32_t *row_min, 
                 break;
             }
             if (a.y == bb.y)
-                st.dropped++;                          /* horizontal: crosses no row */
+                st.dropped++; /* horizontal: crosses no row */
             else
                 setup_edge(&st, a, bb);
             bb = a;

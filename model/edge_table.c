@@ -13,10 +13,7 @@
  */
 #include "internal.h"
 
-void ef_et_reset(ef_ctx *ctx)
-{
-    ctx->naet = 0;
-}
+void ef_et_reset(ef_ctx *ctx) { ctx->naet = 0; }
 
 int32_t ef_et_take(ef_ctx *ctx, int32_t row, uint32_t *n)
 {

@@ -34,8 +34,8 @@ static EF_ALWAYS_INLINE void fill_evenodd(ef_ctx *ctx, int32_t y, int32_t xmin, 
             bits &= bits - 1;
             uint32_t v = cells[p];
             if (v == 0)
-                continue;                  /* flags that cancelled: mask unchanged */
-            cells[p] = 0;                  /* clear-on-read */
+                continue; /* flags that cancelled: mask unchanged */
+            cells[p] = 0; /* clear-on-read */
             if (acc && p > start) {
                 int32_t len = (p < W ? p : W) - start;
                 if (direct)

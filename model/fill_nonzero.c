@@ -11,10 +11,7 @@
  */
 #include "internal.h"
 
-static inline uint32_t lanes_nonzero(uint64_t acc)
-{
-    return ef_gather_pads(((acc & EF_LANES7) + EF_LANES7) & EF_PADS);
-}
+static inline uint32_t lanes_nonzero(uint64_t acc) { return ef_gather_pads(((acc & EF_LANES7) + EF_LANES7) & EF_PADS); }
 
 /* For N = 16 and 32 with compositing, the lanes are added as 16-byte
  * vectors (GCC's and Clang's generic vector extension: SSE2 on x86-64, NEON
@@ -53,22 +50,22 @@ static EF_ALWAYS_INLINE void fill_nonzero(ef_ctx *ctx, int32_t y, int32_t xmin, 
     uint64_t *occ = ctx->occ;
     const int32_t W = ctx->width;
     uint64_t acc[4] = { 0, 0, 0, 0 };
-    uint64_t mask = 0;               /* coverage mask, the interleaved pads (by_count) or the count (by_vector) */
+    uint64_t mask = 0; /* coverage mask, the interleaved pads (by_count) or the count (by_vector) */
     uint64_t overflows = 0;
     int32_t start = xmin;
 #if EF_FILL_VECTOR
     ef_u8x16 vacc[2] = { { 0 }, { 0 } };
 #endif
-#define NZ_SPAN(x0, n)                                                                        \
-    do {                                                                                      \
-        if (by_vector)                                                                        \
-            ef_blend_span_n(blend, y, x0, n, (uint32_t)mask);                                 \
-        else if (by_count)                                                                    \
+#define NZ_SPAN(x0, n) \
+    do { \
+        if (by_vector) \
+            ef_blend_span_n(blend, y, x0, n, (uint32_t)mask); \
+        else if (by_count) \
             ef_blend_span_n(blend, y, x0, n, (uint32_t)((mask * UINT64_C(0x0101010101010101)) >> 56)); \
-        else if (direct)                                                                      \
-            ef_blend_span(blend, y, x0, n, (uint32_t)mask);                                   \
-        else                                                                                  \
-            span(user, y, x0, n, (uint32_t)mask);                                             \
+        else if (direct) \
+            ef_blend_span(blend, y, x0, n, (uint32_t)mask); \
+        else \
+            span(user, y, x0, n, (uint32_t)mask); \
     } while (0)
     for (int32_t wi = xmin >> 6; wi <= xmax >> 6; wi++) {
         uint64_t bits = occ[wi];
@@ -91,7 +88,7 @@ static EF_ALWAYS_INLINE void fill_nonzero(ef_ctx *ctx, int32_t y, int32_t xmin, 
                  * test for it on every cell. */
                 ef_u8x16 v[2];
                 memcpy(v, cell, (size_t)words * 8);
-                memset(cell, 0, (size_t)words * 8);    /* clear-on-read */
+                memset(cell, 0, (size_t)words * 8); /* clear-on-read */
                 if (mask && p > start) {
                     int32_t len = (p < W ? p : W) - start;
                     NZ_SPAN(start, len);
@@ -100,7 +97,7 @@ static EF_ALWAYS_INLINE void fill_nonzero(ef_ctx *ctx, int32_t y, int32_t xmin, 
                 for (int k = 0; k < words / 2; k++) {
                     const ef_u8x16 a = vacc[k], b = v[k] & 0x7F;
                     const ef_u8x16 sum = (a + b) & 0x7F;
-                    if (check_overflow)      /* as below: operands agree in sign, result not */
+                    if (check_overflow) /* as below: operands agree in sign, result not */
                         over -= (ef_u8x16)((~(a ^ b) & (a ^ sum) & 0x40) != 0);
                     vacc[k] = sum;
                     nonzero -= (ef_u8x16)(sum != 0);
@@ -118,9 +115,9 @@ static EF_ALWAYS_INLINE void fill_nonzero(ef_ctx *ctx, int32_t y, int32_t xmin, 
                 v[w] &= EF_LANES7;
                 any |= v[w];
             }
-            memset(cell, 0, (size_t)words * 8);    /* clear-on-read */
+            memset(cell, 0, (size_t)words * 8); /* clear-on-read */
             if (any == 0)
-                continue;                  /* contributions that cancelled: mask unchanged */
+                continue; /* contributions that cancelled: mask unchanged */
             if (mask && p > start) {
                 int32_t len = (p < W ? p : W) - start;
                 NZ_SPAN(start, len);
@@ -133,7 +130,7 @@ static EF_ALWAYS_INLINE void fill_nonzero(ef_ctx *ctx, int32_t y, int32_t xmin, 
                     /* Signed 7-bit overflow per lane: operands agree in sign, result not. */
                     uint64_t ov = ~(a ^ b) & (a ^ sum) & EF_SIGN7;
                     if (ov)
-                        overflows += ef_popcount32(ef_gather_pads(ov << 1));  /* bit 8L+6 -> 8L+7 */
+                        overflows += ef_popcount32(ef_gather_pads(ov << 1)); /* bit 8L+6 -> 8L+7 */
                 }
                 acc[w] = sum;
                 if (by_count)
@@ -152,12 +149,12 @@ static EF_ALWAYS_INLINE void fill_nonzero(ef_ctx *ctx, int32_t y, int32_t xmin, 
 #undef NZ_SPAN
 }
 
-#define FILL_NZ(words, check)                                                  \
-    do {                                                                       \
-        if (blend)                                                             \
+#define FILL_NZ(words, check) \
+    do { \
+        if (blend) \
             fill_nonzero(ctx, y, xmin, xmax, NULL, NULL, blend, 1, words, check); \
-        else                                                                   \
-            fill_nonzero(ctx, y, xmin, xmax, span, user, NULL, 0, words, check);  \
+        else \
+            fill_nonzero(ctx, y, xmin, xmax, span, user, NULL, 0, words, check); \
     } while (0)
 
 void ef_fill_nonzero(ef_ctx *ctx, int32_t y, int32_t xmin, int32_t xmax, ef_span_fn span, void *user,

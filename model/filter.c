@@ -47,7 +47,7 @@ ef_status ef_ctx_set_filter(ef_ctx *ctx, ef_filter filter, ef_subpixel subpixel)
     ef_filt_free(ctx->filt);
     ctx->filt = NULL;
     if (filter == EF_FILTER_BOX && subpixel == EF_SUBPIXEL_NONE)
-        return EF_OK;                              /* the default: ef_fill's own path */
+        return EF_OK; /* the default: ef_fill's own path */
     struct ef_filt *f = calloc(1, sizeof *f);
     if (!f)
         return EF_ERR_NOMEM;
@@ -63,7 +63,7 @@ ef_status ef_ctx_set_filter(ef_ctx *ctx, ef_filter filter, ef_subpixel subpixel)
     ef_status st = EF_OK;
     for (int p = 0; p < f->nch && st == EF_OK; p++) {
         const int32_t delta = f->nch == 1 ? 0 : (p - 1) * EF_SUBPIXEL_SHIFT;
-        f->tx[p] = t - delta;                      /* samples move by delta - t: geometry by t - delta */
+        f->tx[p] = t - delta; /* samples move by delta - t: geometry by t - delta */
         st = ef_ctx_create(&f->ch[p], wm, hm, ctx->samples);
         f->line[p][0] = calloc((size_t)wm, sizeof(uint32_t));
         f->line[p][1] = calloc((size_t)wm, sizeof(uint32_t));
@@ -237,7 +237,7 @@ static void out_row(ef_ctx *ctx, int32_t y, row_fn fn, void *user)
                     const uint32_t *u = f->line[p][up], *d = f->line[p][cur];
                     const uint32_t u0 = u[x], u1 = u[x + 1], d0 = d[x], d1 = d[x + 1];
                     if ((u0 & u1 & d0 & d1) == full)
-                        psum[p] = den;                 /* interior: the whole base covered */
+                        psum[p] = den; /* interior: the whole base covered */
                     else if (!(u0 | u1 | d0 | d1))
                         psum[p] = 0;
                     else
@@ -282,7 +282,7 @@ static ef_status filter_rows(ef_ctx *ctx, const ef_polygon *poly, ef_rule rule, 
         ef_et_reset(sc);
         const ef_diag before = sc->diag;
         st = ef_edges_setup(sc, &tp, &rmin[p], &rmax[p]);
-        if (p == 0) {                              /* the shape's edges, counted once (spec 10.5) */
+        if (p == 0) { /* the shape's edges, counted once (spec 10.5) */
             ctx->diag.edges_in += sc->diag.edges_in - before.edges_in;
             ctx->diag.edges_dropped += sc->diag.edges_dropped - before.edges_dropped;
         }
@@ -294,7 +294,7 @@ static ef_status filter_rows(ef_ctx *ctx, const ef_polygon *poly, ef_rule rule, 
         }
     }
     if (st != EF_OK) {
-        for (int c = 0; c < p; c++)                /* leave the edge tables empty */
+        for (int c = 0; c < p; c++) /* leave the edge tables empty */
             for (int32_t r = rmin[c]; r <= rmax[c]; r++) {
                 uint32_t n;
                 (void)ef_et_take(f->ch[c], r, &n);
@@ -306,7 +306,7 @@ static ef_status filter_rows(ef_ctx *ctx, const ef_polygon *poly, ef_rule rule, 
     const int32_t hm = ctx->height + f->e;
     const int32_t qend = qmax + f->e < hm - 1 ? qmax + f->e : hm - 1;
     const int evenodd = rule == EF_RULE_EVENODD;
-    for (int c = 0; c < f->nch; c++) {             /* the line above the first row is empty */
+    for (int c = 0; c < f->nch; c++) { /* the line above the first row is empty */
         clear_line(f, c, 0);
         clear_line(f, c, 1);
     }
@@ -316,7 +316,7 @@ static ef_status filter_rows(ef_ctx *ctx, const ef_polygon *poly, ef_rule rule, 
             clear_line(f, c, f->cur);
             line_sink ls = { f->line[c][f->cur], &f->lo[c][f->cur], &f->hi[c][f->cur], f->iv[c][f->cur],
                              &f->niv[c][f->cur] };
-            mask_row(f->ch[c], q, evenodd, &ls);   /* empty slot and AET outside its rows: nothing */
+            mask_row(f->ch[c], q, evenodd, &ls); /* empty slot and AET outside its rows: nothing */
             ctx->diag.winding_overflows += f->ch[c]->diag.winding_overflows - ov;
         }
         if (!f->e)
@@ -357,7 +357,7 @@ typedef struct blend_user {
     ef_image *img;
     uint8_t premul[4], a;
     uint32_t den;
-    uint64_t p4;            /* premul in 4 lanes (internal.h's compositing helpers) */
+    uint64_t p4; /* premul in 4 lanes (internal.h's compositing helpers) */
 } blend_user;
 
 /* Spec 10.4: each colour channel blends with its own coverage, alpha with
@@ -371,7 +371,7 @@ static void row_to_image(void *user, int32_t y, int32_t x0, int32_t x1, const ui
         if (!(s[0] | s[1] | s[2]))
             continue;
         if (b->a == 255 && (s[0] & s[1] & s[2]) == b->den && (s[0] | s[1] | s[2]) == b->den) {
-            memcpy(d, b->premul, 4);                   /* d' = P exactly: mul(d, 255) = d */
+            memcpy(d, b->premul, 4); /* d' = P exactly: mul(d, 255) = d */
             continue;
         }
         uint8_t cov[4];
@@ -381,8 +381,8 @@ static void row_to_image(void *user, int32_t y, int32_t x0, int32_t x1, const ui
         if (cov[0] == cov[1] && cov[1] == cov[2]) {
             /* one coverage for all four channels: spec 8 in four lanes, as ef_blend_span_n */
             const uint64_t dd = ef_spread4(ef_load32(d));
-            const uint32_t v = ef_pack4((dd + ef_mul255x4(b->p4, cov[0]) - ef_mul255x4(dd, ef_mul255(b->a, cov[0]))) &
-                                        EF_LANE8X4);
+            const uint32_t v =
+                ef_pack4((dd + ef_mul255x4(b->p4, cov[0]) - ef_mul255x4(dd, ef_mul255(b->a, cov[0]))) & EF_LANE8X4);
             memcpy(d, &v, 4);
             continue;
         }
@@ -395,8 +395,11 @@ static void row_to_image(void *user, int32_t y, int32_t x0, int32_t x1, const ui
 
 ef_status ef_filter_fill(ef_ctx *ctx, ef_image *img, const ef_polygon *poly, ef_rule rule, ef_rgba8 color)
 {
-    blend_user b = { img, { ef_mul255(color.r, color.a), ef_mul255(color.g, color.a), ef_mul255(color.b, color.a),
-                            color.a }, color.a, ef_filter_denominator(ctx), 0 };
+    blend_user b = { img,
+                     { ef_mul255(color.r, color.a), ef_mul255(color.g, color.a), ef_mul255(color.b, color.a), color.a },
+                     color.a,
+                     ef_filter_denominator(ctx),
+                     0 };
     b.p4 = ef_spread4(ef_load32(b.premul));
     return filter_rows(ctx, poly, rule, row_to_image, &b);
 }

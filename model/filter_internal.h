@@ -9,22 +9,22 @@
 #include "ef_filter.h"
 #include "internal.h"
 
-#define EF_SUBPIXEL_SHIFT 85   /* Q16.8: 85/256 px, the nearest to a third of a pixel */
+#define EF_SUBPIXEL_SHIFT 85 /* Q16.8: 85/256 px, the nearest to a third of a pixel */
 
 struct ef_filt {
     int filter, subpixel, nch, e;
-    int pos_of_colour[3];          /* R, G, B -> channel context (0 left, 1 centre, 2 right) */
-    ef_ctx *ch[3];                 /* (W+e) x (H+e) mask canvases */
-    int32_t tx[3], ty;             /* geometry translation of each channel, Q16.8 */
-    uint32_t *line[3][2];          /* W+e masks each: [saved, current] */
-    int32_t lo[3][2], hi[3][2];    /* non-zero masks lie in [lo, hi] */
-    int32_t *iv[3][2];             /* the spans written into each line, (first, last) pairs */
+    int pos_of_colour[3];       /* R, G, B -> channel context (0 left, 1 centre, 2 right) */
+    ef_ctx *ch[3];              /* (W+e) x (H+e) mask canvases */
+    int32_t tx[3], ty;          /* geometry translation of each channel, Q16.8 */
+    uint32_t *line[3][2];       /* W+e masks each: [saved, current] */
+    int32_t lo[3][2], hi[3][2]; /* non-zero masks lie in [lo, hi] */
+    int32_t *iv[3][2];          /* the spans written into each line, (first, last) pairs */
     uint32_t niv[3][2];
-    int32_t *merge;                /* 6 lines' spans, merged: the columns an output row visits */
-    int cur;                       /* which of the two lines is current */
-    uint32_t *tab;                 /* tent: [a*2+b][byte g][256] weight sums */
-    uint32_t *sum;                 /* W x 3 sums of the output row */
-    ef_point *pts;                 /* the translated polygon */
+    int32_t *merge; /* 6 lines' spans, merged: the columns an output row visits */
+    int cur;        /* which of the two lines is current */
+    uint32_t *tab;  /* tent: [a*2+b][byte g][256] weight sums */
+    uint32_t *sum;  /* W x 3 sums of the output row */
+    ef_point *pts;  /* the translated polygon */
     size_t pts_cap;
 };
 

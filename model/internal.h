@@ -45,14 +45,14 @@
  * |qs| < 2^29, 0 <= e, rs < dy < 2^24: all fit int32. */
 typedef struct ef_edge {
     /* DDA state (spec 5 step 5), hot in the plotter */
-    int32_t x;      /* Q16.8: ceil(exact crossing of the next row) - 1 */
-    int32_t e;      /* error term, 0 <= e < dy */
-    int32_t qs;     /* floor(h*dX / dY); MASK edges: floor(256*dX / dY), the step over a pixel row */
-    int32_t rs;     /* (h*dX) mod dY; MASK edges: (256*dX) mod dY */
-    int32_t dy;     /* Y1 - Y0 > 0 */
-    int32_t r1;     /* last sample row (inclusive, clipped) */
-    int32_t dir;    /* +1 downward, -1 upward */
-    int32_t mode;   /* plotter path, EF_PLOT_* */
+    int32_t x;    /* Q16.8: ceil(exact crossing of the next row) - 1 */
+    int32_t e;    /* error term, 0 <= e < dy */
+    int32_t qs;   /* floor(h*dX / dY); MASK edges: floor(256*dX / dY), the step over a pixel row */
+    int32_t rs;   /* (h*dX) mod dY; MASK edges: (256*dX) mod dY */
+    int32_t dy;   /* Y1 - Y0 > 0 */
+    int32_t r1;   /* last sample row (inclusive, clipped) */
+    int32_t dir;  /* +1 downward, -1 upward */
+    int32_t mode; /* plotter path, EF_PLOT_* */
     /* from edge setup (steps 2-4, 6) */
     int32_t x0, y0; /* upper end point */
     int32_t dx;     /* X1 - X0 */
@@ -86,28 +86,28 @@ typedef struct ef_slot {
 
 struct ef_ctx {
     int32_t width, height;
-    int samples;            /* N */
-    int32_t h, c;           /* 256/N and h/2, Q16.8 */
-    int32_t off[EF_SAMPLES_MAX];  /* plot offset per sub-scanline: 256 - h*k_s - c */
+    int samples;                         /* N */
+    int32_t h, c;                        /* 256/N and h/2, Q16.8 */
+    int32_t off[EF_SAMPLES_MAX];         /* plot offset per sub-scanline: 256 - h*k_s - c */
     _Alignas(16) int16_t mask_pairs[64]; /* (s, off[s]), s = 0..N-1: MASK rows' multiplier pairs (plotter.c) */
 
     /* edge store and edge table */
     ef_edge *edges;
     uint32_t nedges, edges_cap;
-    ef_slot *slot;          /* height entries: the pixel row's list of new edges */
-    int32_t *aet;           /* active edge indices, unsorted */
+    ef_slot *slot; /* height entries: the pixel row's list of new edges */
+    int32_t *aet;  /* active edge indices, unsorted */
     uint32_t naet;
-    uint32_t naet_row;      /* active edges while the current row was plotted */
-    ef_aet_saved *aet_saved; /* edges_cap entries: the AET as a crowded row found it (plotter.c) */
-    int32_t *crowd;         /* W + 2 entries, zero between rows: edges that may plot per cell, as differences */
+    uint32_t naet_row;          /* active edges while the current row was plotted */
+    ef_aet_saved *aet_saved;    /* edges_cap entries: the AET as a crowded row found it (plotter.c) */
+    int32_t *crowd;             /* W + 2 entries, zero between rows: edges that may plot per cell, as differences */
     int32_t crowd_lo, crowd_hi; /* the entries of crowd that a crowded row touched */
 
     /* the one-scanline buffer: W+1 cells (cell W is the right-clamp sink) */
-    uint32_t *eo_cells;     /* even-odd: N bits per cell */
-    uint64_t *nz_cells;     /* non-zero: N/8 words per cell; the plotter adds to
+    uint32_t *eo_cells; /* even-odd: N bits per cell */
+    uint64_t *nz_cells; /* non-zero: N/8 words per cell; the plotter adds to
                              * their bytes (ef_nz_lane_byte), the filler masks
                              * the pad bits off as it reads them */
-    uint64_t *occ;          /* one bit per cell: marked since the last fill (mask tracking) */
+    uint64_t *occ;      /* one bit per cell: marked since the last fill (mask tracking) */
 
     ef_diag diag;
 
@@ -135,7 +135,7 @@ ef_status ef_edges_setup(ef_ctx *ctx, const ef_polygon *poly, int32_t *row_min, 
 static EF_ALWAYS_INLINE void ef_dda_start(ef_edge *E, int32_t h, int32_t c, int32_t w256, int last_s, int mask_ok)
 {
     const int32_t dy = E->dy, dx = E->dx;
-    const int32_t step = h * dx;                      /* |h*dx| < 2^29 */
+    const int32_t step = h * dx; /* |h*dx| < 2^29 */
     /* End points' x range (branch-free: edge orientation is data). */
     const int32_t neg3 = -(int32_t)(dx < 0);
     const int32_t xlo = E->x0 + (dx & neg3), xhi = E->x0 + (dx & ~neg3);
@@ -155,7 +155,7 @@ static EF_ALWAYS_INLINE void ef_dda_start(ef_edge *E, int32_t h, int32_t c, int3
     const int32_t num = dx * (h + ((EF_DEV_ONE - h) & -mask));
     int32_t qs, rs;
     ef_divmod_floor_i32(num, dy, &qs, &rs);
-    E->qs = qs;             /* MASK edges: (qn, rn); ef_mask_demote makes them per sample row */
+    E->qs = qs; /* MASK edges: (qn, rn); ef_mask_demote makes them per sample row */
     E->rs = rs;
     /* The path: 0 CLAMP, 1 INSIDE, 2 STEEP (|x step| <= |qs| + 1, over at
      * most last_s steps within one row, less than 6 px), 3 MASK (under 1 px).
@@ -169,7 +169,7 @@ static EF_ALWAYS_INLINE void ef_dda_start(ef_edge *E, int32_t h, int32_t c, int3
     /* A MASK edge starts at the first sample row of its pixel row: r0 with
      * its sample index (r0 mod N) cleared. */
     const int32_t r = E->r0 & ~(last_s & -mask);
-    const int32_t t = h * r + c - E->y0;              /* Y_r - Y0: >= 0 unless MASK */
+    const int32_t t = h * r + c - E->y0; /* Y_r - Y0: >= 0 unless MASK */
     if (t <= 63) {
         int32_t q, rem;
         ef_divmod_floor_i32(t * dx - 1, dy, &q, &rem);
@@ -231,14 +231,14 @@ ef_status ef_filter_fill(ef_ctx *ctx, ef_image *img, const ef_polygon *poly, ef_
 /* composite.c: a shape's colour, premultiplied and prepared for the span
  * compositor below (docs/spec.md section 8). */
 typedef struct ef_blend {
-    uint8_t *px;            /* the image */
+    uint8_t *px; /* the image */
     size_t stride;
-    uint64_t p4;            /* premultiplied colour P, 4 lanes (ef_spread4) */
-    uint32_t solid;         /* P packed in memory order */
-    uint32_t solid8[8];     /* eight copies: solid fills store 32 bytes at a time */
-    uint32_t a;             /* colour alpha */
+    uint64_t p4;        /* premultiplied colour P, 4 lanes (ef_spread4) */
+    uint32_t solid;     /* P packed in memory order */
+    uint32_t solid8[8]; /* eight copies: solid fills store 32 bytes at a time */
+    uint32_t a;         /* colour alpha */
     int samples;
-    const uint8_t *count8;  /* N = 8: covered samples of every mask */
+    const uint8_t *count8; /* N = 8: covered samples of every mask */
     /* by number n of covered samples, 0..N, with cov = alpha(n) (spec 7.3):
      * mul(P, cov) in 4 lanes and mul(a, cov), so a partial span costs two
      * loads instead of five multiplies (filled once per shape, ef_fill) */
@@ -324,10 +324,7 @@ static inline uint64_t ef_spread4(uint32_t v)
 {
     return (uint64_t)(v & 0x00FF00FFu) | (uint64_t)((v >> 8) & 0x00FF00FFu) << 32;
 }
-static inline uint32_t ef_pack4(uint64_t v)
-{
-    return (uint32_t)v | (uint32_t)(v >> 32) << 8;
-}
+static inline uint32_t ef_pack4(uint64_t v) { return (uint32_t)v | (uint32_t)(v >> 32) << 8; }
 /* mul(v, k) of docs/spec.md 8 in each lane; lanes of v and k <= 255. */
 static inline uint64_t ef_mul255x4(uint64_t v, uint32_t k)
 {
@@ -348,7 +345,8 @@ static inline uint32_t ef_load32(const uint8_t *p)
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline void ef_blend_span_n(const ef_blend *b, int32_t y, int32_t x, int32_t len, uint32_t n)
+static inline void
+ef_blend_span_n(const ef_blend *b, int32_t y, int32_t x, int32_t len, uint32_t n)
 {
     uint8_t *d = b->px + (size_t)y * b->stride + (size_t)x * 4;
     if ((int)n == b->samples) {
@@ -360,10 +358,10 @@ static inline void ef_blend_span_n(const ef_blend *b, int32_t y, int32_t x, int3
              * mispredict). */
             uint8_t *const e = d + (size_t)len * 4;
             if (len >= 8) {
-                uint32_t pat[8];             /* a local copy: cannot alias d */
+                uint32_t pat[8]; /* a local copy: cannot alias d */
                 memcpy(pat, b->solid8, sizeof pat);
                 for (; d < e - 32; d += 32)
-                    memcpy(d, pat, 32);      /* compilers emit wide stores */
+                    memcpy(d, pat, 32); /* compilers emit wide stores */
                 memcpy(e - 32, pat, 32);
             } else if (len >= 2) {
                 const uint64_t two = (uint64_t)b->solid * UINT64_C(0x0000000100000001);
@@ -399,7 +397,8 @@ static inline void ef_blend_span_n(const ef_blend *b, int32_t y, int32_t x, int3
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline void ef_blend_span(const ef_blend *b, int32_t y, int32_t x, int32_t len, ef_mask mask)
+static inline void
+ef_blend_span(const ef_blend *b, int32_t y, int32_t x, int32_t len, ef_mask mask)
 {
     const uint32_t n = b->samples == 8 ? b->count8[mask] : ef_popcount32(mask);
     ef_blend_span_n(b, y, x, len, n);

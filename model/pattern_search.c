@@ -237,10 +237,7 @@ enum objective { OBJ_CRITERION, OBJ_PLATEAU };
 #define TIES_BITS 10
 _Static_assert((NMAX - 1) * (NMAX - 1) < (1 << TIES_BITS), "tie count fits its key field");
 
-static int obj_shift(enum objective obj)
-{
-    return obj == OBJ_CRITERION ? SPREAD_BITS : TIES_BITS;
-}
+static int obj_shift(enum objective obj) { return obj == OBJ_CRITERION ? SPREAD_BITS : TIES_BITS; }
 
 /* Key of p if it is <= limit, else UINT64_MAX.  Skips the rest of the work
  * when the discrepancy alone already loses (most rejected moves). */
@@ -262,10 +259,7 @@ static uint64_t key_bounded(int n, const int *p, uint64_t limit, enum objective 
     return key <= limit ? key : UINT64_MAX;
 }
 
-static void copy_pattern(int n, int *dst, const int *src)
-{
-    memcpy(dst, src, sizeof(int) * (size_t)n);
-}
+static void copy_pattern(int n, int *dst, const int *src) { memcpy(dst, src, sizeof(int) * (size_t)n); }
 
 /* N = 8: every permutation, in lexicographic order.  Ties under the
  * criterion are broken by the orientation rule directly (least star, then
@@ -310,7 +304,9 @@ static void search_exhaustive(int n, int *best)
 
 /* xorshift64 (Marsaglia 2003): a fixed, documented generator, so the search
  * is reproducible without depending on the C library's rand(). */
-typedef struct rng { uint64_t s; } rng;
+typedef struct rng {
+    uint64_t s;
+} rng;
 static uint32_t rng_below(rng *r, uint32_t bound)
 {
     r->s ^= r->s << 13;
@@ -384,8 +380,7 @@ static void search_structured(int n, int *best)
  * pattern seen in best and returns its key.  Since the history starts at
  * the start's key, no accepted pattern is ever worse than the start. */
 #define LAHC_HIST_MAX 1024
-static uint64_t lahc(int n, int *p, long iters, int hist_len, enum objective obj,
-                     rng *r, int *best)
+static uint64_t lahc(int n, int *p, long iters, int hist_len, enum objective obj, rng *r, int *best)
 {
     uint64_t hist[LAHC_HIST_MAX];
     uint64_t cur = key_bounded(n, p, UINT64_MAX - 1, obj), best_key = cur;

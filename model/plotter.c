@@ -43,12 +43,12 @@ static EF_ALWAYS_INLINE void load_offsets(const ef_ctx *ctx, int32_t *off, const
  * t >= 0; neg = -1 without a carry, 0 with one; e = t + (dy & neg) and
  * x += qs + carry = qs1 + neg, so the error term's chain is one add, and no
  * compare or select is needed.  |t| < 2^24. */
-#define DDA_STEP()                                              \
-    do {                                                        \
-        const int32_t t_ = e + rsd;                             \
-        const int32_t neg_ = -(int32_t)((uint32_t)t_ >> 31);    \
-        e = t_ + (dy & neg_);                                   \
-        x += qs1 + neg_;                                        \
+#define DDA_STEP() \
+    do { \
+        const int32_t t_ = e + rsd; \
+        const int32_t neg_ = -(int32_t)((uint32_t)t_ >> 31); \
+        e = t_ + (dy & neg_); \
+        x += qs1 + neg_; \
     } while (0)
 
 /* Sample s's even-odd bit is `bit` in the caller's loop: in the plain loop
@@ -65,22 +65,22 @@ static EF_ALWAYS_INLINE void load_offsets(const ef_ctx *ctx, int32_t *off, const
  * mask, store and the lane rotation, and consecutive samples of an edge touch
  * different bytes, so no store feeds the next load.  limit is the old 7-bit
  * value that overflows (63 for +1, 64 for -1; spec 6.4). */
-#define PLOT_CELL_NOOCC(q, s)                                                                     \
-    do {                                                                                          \
-        if (NZ) {                                                                                 \
-            uint8_t *b_ = &nzb[(size_t)(q) * (size_t)NS + ef_nz_lane_byte((unsigned)(s))];         \
-            if (check)                                                                            \
-                *overflows += (*b_ & 0x7Fu) == limit;                                             \
-            *b_ = (uint8_t)(*b_ + d8);                                                            \
-        } else {                                                                                  \
-            eo[q] ^= EO_BIT(s);                                                                   \
-        }                                                                                         \
+#define PLOT_CELL_NOOCC(q, s) \
+    do { \
+        if (NZ) { \
+            uint8_t *b_ = &nzb[(size_t)(q) * (size_t)NS + ef_nz_lane_byte((unsigned)(s))]; \
+            if (check) \
+                *overflows += (*b_ & 0x7Fu) == limit; \
+            *b_ = (uint8_t)(*b_ + d8); \
+        } else { \
+            eo[q] ^= EO_BIT(s); \
+        } \
     } while (0)
 
-#define PLOT_CELL(q, s)                                                                           \
-    do {                                                                                          \
-        PLOT_CELL_NOOCC(q, s);                                                                    \
-        occ[(q) >> 6] |= UINT64_C(1) << ((q) & 63);                                               \
+#define PLOT_CELL(q, s) \
+    do { \
+        PLOT_CELL_NOOCC(q, s); \
+        occ[(q) >> 6] |= UINT64_C(1) << ((q)&63); \
     } while (0)
 
 /* Edge tracking per edge and row rather than per sample: the filler only
@@ -106,8 +106,8 @@ static EF_ALWAYS_INLINE void track(const ef_ctx *ctx, int32_t xa, int32_t xb, in
  * the CLAMP edges (an end point outside [1, 256W]) of the fast one; the
  * branches before it are plotter_fast.h's and plotter_sse2.h's. */
 static EF_ALWAYS_INLINE void plot_edge_row(ef_ctx *ctx, const int32_t *off, int32_t *px, int32_t *pe, int32_t qs,
-                                           int32_t rs, int32_t dx, int32_t dy, int s0, int s1, int32_t dir, int32_t mode,
-                                           int32_t *lo, int32_t *hi, int32_t *lox, int32_t *hix,
+                                           int32_t rs, int32_t dx, int32_t dy, int s0, int s1, int32_t dir,
+                                           int32_t mode, int32_t *lo, int32_t *hi, int32_t *lox, int32_t *hix,
                                            uint64_t *overflows, const int NS, const int NZ, const int check,
                                            const int first)
 {
@@ -122,7 +122,7 @@ static EF_ALWAYS_INLINE void plot_edge_row(ef_ctx *ctx, const int32_t *off, int3
     uint32_t *eo = ctx->eo_cells;
     uint8_t *nzb = (uint8_t *)ctx->nz_cells;
     uint64_t *occ = ctx->occ;
-    const uint8_t d8 = (uint8_t)dir;                       /* +1 or -1 modulo 256 */
+    const uint8_t d8 = (uint8_t)dir; /* +1 or -1 modulo 256 */
     const unsigned limit = dir > 0 ? 0x3Fu : 0x40u;
     (void)d8;
     (void)limit;
@@ -131,7 +131,7 @@ static EF_ALWAYS_INLINE void plot_edge_row(ef_ctx *ctx, const int32_t *off, int3
     const int32_t xa = x;
     const int32_t rsd = rs - dy, qs1 = qs + 1;
 #if EF_PLOT_FAST
-    if (mode >= EF_PLOT_STEEP) {   /* MASK edges too, on rows that count overflows */
+    if (mode >= EF_PLOT_STEEP) { /* MASK edges too, on rows that count overflows */
         PLOT_STEEP_ROW();
     } else if (mode == EF_PLOT_INSIDE) {
         PLOT_INSIDE_ROW();
@@ -197,7 +197,7 @@ static EF_ALWAYS_INLINE void plot_row(ef_ctx *ctx, int32_t row, int32_t head, in
         plot_edge_row(ctx, off, &x, &e, E->qs, E->rs, E->dx, E->dy, 0, s1, E->dir, E->mode, &lo, &hi, &lox, &hix,
                       &overflows, NS, NZ, check, 0);
         if (crowd)
-            crowd_add(crowd_d, W, E->x, x, &crowd_lo, &crowd_hi);   /* x is monotonic: first plot to past the last */
+            crowd_add(crowd_d, W, E->x, x, &crowd_lo, &crowd_hi); /* x is monotonic: first plot to past the last */
         /* Still active below this row: stays, in AET order.  Branch-free:
          * whether an edge ends here is data, and would mispredict. */
         E->x = x;
@@ -213,8 +213,8 @@ static EF_ALWAYS_INLINE void plot_row(ef_ctx *ctx, int32_t row, int32_t head, in
         int32_t x = E->x, e = E->e;
         const int32_t r1 = E->r1;
         const int s1 = (r1 < end ? r1 : end) - base;
-        plot_edge_row(ctx, off, &x, &e, E->qs, E->rs, E->dx, E->dy, E->r0 - base, s1, E->dir, E->mode, &lo, &hi,
-                      &lox, &hix, &overflows, NS, NZ, check, 1);
+        plot_edge_row(ctx, off, &x, &e, E->qs, E->rs, E->dx, E->dy, E->r0 - base, s1, E->dir, E->mode, &lo, &hi, &lox,
+                      &hix, &overflows, NS, NZ, check, 1);
         if (crowd)
             crowd_add(crowd_d, W, E->x, x, &crowd_lo, &crowd_hi);
         E->x = x;
@@ -251,16 +251,15 @@ void ef_plot_evenodd(ef_ctx *ctx, int32_t row, int32_t head, int32_t *xmin, int3
     }
 }
 
-
 #include "plotter_crowd.h"
 
-#define PLOT_NZ(check, crowd)                                                              \
-    do {                                                                                   \
-        switch (ctx->samples) {                                                            \
-        case 8: plot_row(ctx, row, head, xmin, xmax, 8, 1, check, 0); break;               \
-        case 16: plot_row(ctx, row, head, xmin, xmax, 16, 1, check, crowd); break;         \
-        default: plot_row(ctx, row, head, xmin, xmax, 32, 1, check, crowd); break;         \
-        }                                                                                  \
+#define PLOT_NZ(check, crowd) \
+    do { \
+        switch (ctx->samples) { \
+        case 8: plot_row(ctx, row, head, xmin, xmax, 8, 1, check, 0); break; \
+        case 16: plot_row(ctx, row, head, xmin, xmax, 16, 1, check, crowd); break; \
+        default: plot_row(ctx, row, head, xmin, xmax, 32, 1, check, crowd); break; \
+        } \
     } while (0)
 
 /* The winding-overflow count (spec 6.4) needs a test per sample, but only

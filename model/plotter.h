@@ -35,7 +35,7 @@
  * x86-64 has; other hosts, big-endian ones (the byte order of the non-zero
  * lanes) and EF_NO_VECTOR builds plot those edges sample by sample, with the
  * same results. */
-#if EF_PLOT_FAST && !defined(EF_NO_VECTOR) && defined(__SSE2__) && defined(__BYTE_ORDER__) &&                \
+#if EF_PLOT_FAST && !defined(EF_NO_VECTOR) && defined(__SSE2__) && defined(__BYTE_ORDER__) && \
     __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
 #define EF_MASK_ROWS 1
 #else

@@ -39,14 +39,14 @@
  * for a row's new edges, which start at a data-dependent sample: entering an
  * unrolled sequence there (a switch) costs a mispredicted jump per edge on
  * top of the exit's (PROFILE.md). */
-#define ROW_SAMPLE(S, PLOT)                                                       \
-    if ((S) < NS) {                                                               \
-        const uint64_t bit = UINT64_C(1) << (S);                                  \
-        const uint32_t q_ = (uint32_t)(x + off[S]) >> EF_DEV_FRAC_BITS;          \
-        PLOT(q_, S);                                                              \
-        if ((S) == NS - 1 || (S) == s1)                                           \
-            break;                                                                \
-        DDA_STEP();                                                               \
+#define ROW_SAMPLE(S, PLOT) \
+    if ((S) < NS) { \
+        const uint64_t bit = UINT64_C(1) << (S); \
+        const uint32_t q_ = (uint32_t)(x + off[S]) >> EF_DEV_FRAC_BITS; \
+        PLOT(q_, S); \
+        if ((S) == NS - 1 || (S) == s1) \
+            break; \
+        DDA_STEP(); \
     }
 /* Eight samples a row, as the macro unrolls them. */
 /* clang-format off */
@@ -55,29 +55,28 @@
     ROW_SAMPLE(B + 3, PLOT) ROW_SAMPLE(B + 4, PLOT) ROW_SAMPLE(B + 5, PLOT)      \
     ROW_SAMPLE(B + 6, PLOT) ROW_SAMPLE(B + 7, PLOT)
 /* clang-format on */
-#define ROW_FROM0(PLOT)                                                           \
-    do {                                                                          \
-        ROW_SAMPLES8(0, PLOT) ROW_SAMPLES8(8, PLOT)                               \
-        ROW_SAMPLES8(16, PLOT) ROW_SAMPLES8(24, PLOT)                             \
+#define ROW_FROM0(PLOT) \
+    do { \
+        ROW_SAMPLES8(0, PLOT) ROW_SAMPLES8(8, PLOT) ROW_SAMPLES8(16, PLOT) ROW_SAMPLES8(24, PLOT) \
     } while (0)
-#define ROW_LOOP(PLOT)                                                            \
-    do {                                                                          \
-        uint64_t bit = UINT64_C(1) << s0;                                         \
-        for (int s = s0;; s++) {                                                  \
-            const uint32_t q_ = (uint32_t)(x + off[s]) >> EF_DEV_FRAC_BITS;      \
-            PLOT(q_, s);                                                          \
-            if (s == s1)                                                          \
-                break;                                                            \
-            bit <<= 1;                                                            \
-            DDA_STEP();                                                           \
-        }                                                                         \
+#define ROW_LOOP(PLOT) \
+    do { \
+        uint64_t bit = UINT64_C(1) << s0; \
+        for (int s = s0;; s++) { \
+            const uint32_t q_ = (uint32_t)(x + off[s]) >> EF_DEV_FRAC_BITS; \
+            PLOT(q_, s); \
+            if (s == s1) \
+                break; \
+            bit <<= 1; \
+            DDA_STEP(); \
+        } \
     } while (0)
-#define ROW_SAMPLES(PLOT)                                                         \
-    do {                                                                          \
-        if (first)                                                                \
-            ROW_LOOP(PLOT);                                                       \
-        else                                                                      \
-            ROW_FROM0(PLOT);                                                      \
+#define ROW_SAMPLES(PLOT) \
+    do { \
+        if (first) \
+            ROW_LOOP(PLOT); \
+        else \
+            ROW_FROM0(PLOT); \
     } while (0)
 
 /* Occupancy bits for the cells [a, b], a <= b, b - a < 64. */
@@ -105,30 +104,30 @@ static EF_ALWAYS_INLINE void mark_occ_range(uint64_t *occ, uint32_t a, uint32_t 
  * STEEP: x in [0, 256W - 1], so q = (x + off) >> 8 lies in [0, W], no
  * clamp.  For N >= 16 (more samples a row) the occupancy range is marked
  * once; for N = 8 a bit per sample costs less (PROFILE.md). */
-#define PLOT_STEEP_ROW()                                                                          \
-    do {                                                                                          \
-        *lox = xa < *lox ? xa : *lox;                                                             \
-        *hix = xa > *hix ? xa : *hix;                                                             \
-        if (NS >= 16) {                                                                           \
-            ROW_SAMPLES(PLOT_CELL_NOOCC);                                                         \
-            const uint32_t a_ = (uint32_t)(xa < x ? xa : x) >> EF_DEV_FRAC_BITS;                  \
+#define PLOT_STEEP_ROW() \
+    do { \
+        *lox = xa < *lox ? xa : *lox; \
+        *hix = xa > *hix ? xa : *hix; \
+        if (NS >= 16) { \
+            ROW_SAMPLES(PLOT_CELL_NOOCC); \
+            const uint32_t a_ = (uint32_t)(xa < x ? xa : x) >> EF_DEV_FRAC_BITS; \
             const uint32_t b_ = ((uint32_t)(xa < x ? x : xa) >> EF_DEV_FRAC_BITS) + 1; /* <= W */ \
-            mark_occ_range(occ, a_, b_);                                                          \
-        } else {                                                                                  \
-            ROW_SAMPLES(PLOT_CELL);                                                               \
-        }                                                                                         \
-        DDA_STEP();                                                                               \
+            mark_occ_range(occ, a_, b_); \
+        } else { \
+            ROW_SAMPLES(PLOT_CELL); \
+        } \
+        DDA_STEP(); \
     } while (0)
 
 /* INSIDE: as STEEP without the range of occupancy bits; tracks the first and
  * last plotted x, both in [0, 256W - 1]. */
-#define PLOT_INSIDE_ROW()                                                                         \
-    do {                                                                                          \
-        ROW_SAMPLES(PLOT_CELL);                                                                   \
-        const int32_t a_ = xa < x ? xa : x, b_ = xa < x ? x : xa;                                 \
-        *lox = a_ < *lox ? a_ : *lox;                                                             \
-        *hix = b_ > *hix ? b_ : *hix;                                                             \
-        DDA_STEP();                                                                               \
+#define PLOT_INSIDE_ROW() \
+    do { \
+        ROW_SAMPLES(PLOT_CELL); \
+        const int32_t a_ = xa < x ? xa : x, b_ = xa < x ? x : xa; \
+        *lox = a_ < *lox ? a_ : *lox; \
+        *hix = b_ > *hix ? b_ : *hix; \
+        DDA_STEP(); \
     } while (0)
 
 #endif

@@ -22,7 +22,7 @@ static const uint8_t mask_to[64] = { EF_X32(0xFF), EF_X32(0) };
 /* P_s = s*step + dY*off_s for the four samples of pairs[j] (see plot_mask_row). */
 static EF_ALWAYS_INLINE __m128i mask_p4(const __m128i *pairs, int j, __m128i bl, __m128i bh)
 {
-    const __m128i a = _mm_load_si128(&pairs[j]);   /* ctx (calloc) and the array are 16-byte aligned */
+    const __m128i a = _mm_load_si128(&pairs[j]); /* ctx (calloc) and the array are 16-byte aligned */
     return _mm_add_epi32(_mm_madd_epi16(a, bl), _mm_slli_epi32(_mm_madd_epi16(a, bh), 15));
 }
 
@@ -58,10 +58,10 @@ static EF_ALWAYS_INLINE void plot_mask_row(ef_ctx *ctx, int32_t *px, int32_t *pe
     int32_t x = *px, e = *pe;
     const int32_t step = dx * (EF_DEV_ONE / NS);
     const int32_t B = ef_clamp_i32(ef_asr_i32(x, EF_DEV_FRAC_BITS) - (dx < 0), 0, ctx->width - 2);
-    const int32_t t1 = dy * (EF_DEV_ONE * (B + 1) - x) - e;   /* 256(B+1) - x in [-510, 511] */
+    const int32_t t1 = dy * (EF_DEV_ONE * (B + 1) - x) - e; /* 256(B+1) - x in [-510, 511] */
     const __m128i bl = _mm_set1_epi32((int32_t)((uint32_t)(dy & 0x7FFF) << 16 | ((uint32_t)step & 0x7FFFu)));
-    const __m128i bh = _mm_set1_epi32(
-        (int32_t)((uint32_t)(dy >> 15) << 16 | ((uint32_t)ef_asr_i32(step, 15) & 0xFFFFu)));
+    const __m128i bh =
+        _mm_set1_epi32((int32_t)((uint32_t)(dy >> 15) << 16 | ((uint32_t)ef_asr_i32(step, 15) & 0xFFFFu)));
     const __m128i c1 = _mm_set1_epi32(t1 - 1), c2 = _mm_set1_epi32(t1 - 1 + EF_DEV_ONE * dy);
     const __m128i *pairs = (const __m128i *)ctx->mask_pairs;
     *lo = B < *lo ? B : *lo;

@@ -25,7 +25,7 @@ ef_status ef_rasterize_to(ef_ctx *ctx, const ef_polygon *poly, ef_rule rule, ef_
         if (ctx->naet == 0 && head < 0)
             continue;
         int32_t xmin = INT32_MAX, xmax = -1;
-        ctx->naet_row = ctx->naet + nnew;      /* the AET of spec 6 for this row */
+        ctx->naet_row = ctx->naet + nnew; /* the AET of spec 6 for this row */
         if (evenodd)
             ef_plot_evenodd(ctx, row, head, &xmin, &xmax);
         else

@@ -28,7 +28,7 @@ ef_status ef_trace_enable(ef_ctx *ctx, uint32_t iface_mask, ef_txn_fn sink, void
     for (int i = 0; i < EF_IF_COUNT; i++) {
         const ef_iface_desc *d = ef_iface_get(i);
         unsigned lsb = 0;
-        for (int k = d->nfields - 1; k >= 0; k--) {   /* the last field is the least significant */
+        for (int k = d->nfields - 1; k >= 0; k--) { /* the last field is the least significant */
             tr->lsb[i][k] = (uint16_t)lsb;
             lsb += d->field[k].width;
         }
@@ -47,7 +47,7 @@ void ef_trace_emit(ef_trace *tr, int iface, uint64_t cycle, const uint64_t *v)
     ef_txn t = { .cycle = cycle, .iface = (uint8_t)iface };
     for (unsigned k = 0; k < d->nfields; k++) {
         const unsigned w = d->field[k].width, p = tr->lsb[iface][k];
-        const uint64_t x = v[k] & ((UINT64_C(1) << w) - 1);       /* w <= 32 */
+        const uint64_t x = v[k] & ((UINT64_C(1) << w) - 1); /* w <= 32 */
         /* the bits that stay in this word (x << 0 when aligned), then the rest */
         t.w[p >> 6] |= (x & (UINT64_MAX >> (p & 63))) << (p & 63);
         if ((p & 63) + w > 64)
@@ -94,8 +94,7 @@ ef_status ef_trace_frame_end(ef_ctx *ctx, uint64_t *cycles)
 }
 
 /* Edge k of contour [b, b+n) runs pts[b+k] -> pts[b+(k+1) mod n] (spec 5). */
-static inline void contour_edge(const ef_polygon *poly, uint32_t b, uint32_t n, uint32_t k, ef_point *a,
-                                ef_point *z)
+static inline void contour_edge(const ef_polygon *poly, uint32_t b, uint32_t n, uint32_t k, ef_point *a, ef_point *z)
 {
     *a = poly->pts[b + k];
     *z = poly->pts[b + (k + 1 == n ? 0 : k + 1)];
@@ -120,7 +119,7 @@ ef_status ef_trace_fill(ef_ctx *ctx, ef_image *img, const ef_polygon *poly, ef_r
     if (!poly || (rule != EF_RULE_NONZERO && rule != EF_RULE_EVENODD))
         return EF_ERR_ARG;
     if (ctx->filt)
-        return ef_trace_filter_fill(ctx, img, poly, rule, color);   /* spec 10 (trace_filter.c) */
+        return ef_trace_filter_fill(ctx, img, poly, rule, color); /* spec 10 (trace_filter.c) */
     /* Edge setup first: a polygon it refuses sends no command at all. */
     int32_t row_min, row_max;
     ef_et_reset(ctx);
@@ -130,11 +129,11 @@ ef_status ef_trace_fill(ef_ctx *ctx, ef_image *img, const ef_polygon *poly, ef_r
     if (!tr->in_frame)
         ef_trace_frame_begin(ctx);
 
-    ef_trace_command(tr, EF_OP_SHAPE, rule == EF_RULE_EVENODD, (uint64_t)color.r << 16 | (uint64_t)color.g << 8 | color.b,
-            color.a, 0);
+    ef_trace_command(tr, EF_OP_SHAPE, rule == EF_RULE_EVENODD,
+                     (uint64_t)color.r << 16 | (uint64_t)color.g << 8 | color.b, color.a, 0);
     const int32_t h = ctx->h, c = ctx->c, w256 = ctx->width * EF_DEV_ONE;
     const unsigned log2n = ctx->samples == 8 ? 3 : ctx->samples == 16 ? 4 : 5;
-    int64_t rec = (int64_t)ctx->nedges - 1;      /* next record, walking backwards = input order */
+    int64_t rec = (int64_t)ctx->nedges - 1; /* next record, walking backwards = input order */
     for (uint32_t ci = 0; ci < poly->ncontours; ci++) {
         const uint32_t b = poly->start[ci], n = poly->start[ci + 1] - b;
         for (uint32_t k = 0; k < n; k++) {
@@ -144,22 +143,24 @@ ef_status ef_trace_fill(ef_ctx *ctx, ef_image *img, const ef_polygon *poly, ef_r
             const uint64_t ve[5] = { 0, bits(a.x), bits(a.y), bits(z.x), bits(z.y) };
             ef_trace_emit(tr, EF_IF_SEG, t + EF_L_DEC, ve);
             if (rec < 0 || !ef_trace_record_of(&ctx->edges[rec], a, z))
-                continue;                         /* horizontal or outside: no record */
-            ef_edge E = ctx->edges[rec--];        /* a copy: the plotter starts the DDA itself */
+                continue;                  /* horizontal or outside: no record */
+            ef_edge E = ctx->edges[rec--]; /* a copy: the plotter starts the DDA itself */
             ef_dda_start(&E, h, c, w256, ctx->samples - 1, 0);
-            const uint64_t vw[10] = { 0, (uint64_t)E.r0 >> log2n, (uint64_t)E.r0, (uint64_t)E.r1, bits(E.x),
-                                      (uint64_t)E.e, bits(E.qs), (uint64_t)E.rs, (uint64_t)E.dy, E.dir < 0 };
+            const uint64_t vw[10] = {
+                0,          (uint64_t)E.r0 >> log2n, (uint64_t)E.r0, (uint64_t)E.r1, bits(E.x), (uint64_t)E.e,
+                bits(E.qs), (uint64_t)E.rs,          (uint64_t)E.dy, E.dir < 0
+            };
             ef_trace_emit(tr, EF_IF_ET_WR, t + EF_L_DEC + EF_L_SETUP, vw);
         }
     }
     const uint64_t t_end = ef_trace_command(tr, EF_OP_SHAPE_END, 0, 0, 0, 0);
-    const uint64_t eos[10] = { 1 };    /* eos = 1, every other field 0 */
+    const uint64_t eos[10] = { 1 }; /* eos = 1, every other field 0 */
     ef_trace_emit(tr, EF_IF_SEG, t_end + EF_L_DEC, eos);
     ef_trace_emit(tr, EF_IF_ET_WR, t_end + EF_L_DEC + EF_L_SETUP, eos);
     const uint64_t t0 = t_end + EF_L_DEC + EF_L_SETUP + 1;
 
-    const uint8_t premul[4] = { ef_mul255(color.r, color.a), ef_mul255(color.g, color.a),
-                                ef_mul255(color.b, color.a), color.a };
+    const uint8_t premul[4] = { ef_mul255(color.r, color.a), ef_mul255(color.g, color.a), ef_mul255(color.b, color.a),
+                                color.a };
     const uint64_t t_free = ef_trace_rows(ctx, img, rule, premul, color.a, row_min, row_max, t0);
     if (t_free > tr->cmd_next)
         tr->cmd_next = t_free;

@@ -18,13 +18,13 @@
 #include "internal.h"
 
 typedef struct ef_trace {
-    uint32_t mask;          /* interfaces to report */
+    uint32_t mask; /* interfaces to report */
     ef_txn_fn sink;
     void *user;
     int in_frame;
-    uint64_t cmd_next;      /* earliest cycle of the next command */
-    uint64_t end;           /* one past the last transfer so far */
-    uint16_t lsb[EF_IF_COUNT][EF_IF_MAX_FIELDS];   /* field positions */
+    uint64_t cmd_next;                           /* earliest cycle of the next command */
+    uint64_t end;                                /* one past the last transfer so far */
+    uint16_t lsb[EF_IF_COUNT][EF_IF_MAX_FIELDS]; /* field positions */
 } ef_trace;
 
 /* Reports one transfer of `iface` at `cycle` with field values v[] (in the
@@ -38,7 +38,7 @@ int ef_trace_record_of(const ef_edge *E, ef_point a, ef_point z);
 
 /* trace_filter.c: the spec 10 options in the timing model (docs/microarch.md
  * section 5): ef_fill with the trace and the options on, and FRAME's c field. */
-#define EF_L_FILT 4         /* weigh sweep visit -> pix: line read, adder tree, alpha, blend */
+#define EF_L_FILT 4 /* weigh sweep visit -> pix: line read, adder tree, alpha, blend */
 ef_status ef_trace_filter_fill(ef_ctx *ctx, ef_image *img, const ef_polygon *poly, ef_rule rule, ef_rgba8 color);
 uint64_t ef_trace_filter_bits(const ef_ctx *ctx);
 

@@ -27,14 +27,14 @@ uint64_t ef_trace_filter_bits(const ef_ctx *ctx)
 }
 
 typedef struct fr {
-    ef_ctx *ctx;            /* the caller's context: canvas, diagnostics */
-    ef_ctx *sc;             /* the centre channel's: edge records, AET, one SLB per pass reused */
+    ef_ctx *ctx; /* the caller's context: canvas, diagnostics */
+    ef_ctx *sc;  /* the centre channel's: edge records, AET, one SLB per pass reused */
     struct ef_filt *f;
     ef_trace *tr;
     ef_image *img;
     int nz, ns, nch, e;
-    int32_t wm, w;          /* mask canvas width W+e, canvas width W */
-    int32_t shift[3];       /* delta_c of the pass's channel (left, centre, right), Q16.8 */
+    int32_t wm, w;    /* mask canvas width W+e, canvas width W */
+    int32_t shift[3]; /* delta_c of the pass's channel (left, centre, right), Q16.8 */
     uint64_t t, lw_free, drained;
     uint32_t *line[3][2];
     int32_t lo[3][2], hi[3][2];
@@ -196,7 +196,7 @@ static void weigh(fr *r, int32_t y)
         }
     lo = lo < 0 ? 0 : lo;
     hi = hi > r->w - 1 ? r->w - 1 : hi;
-    uint64_t v = r->t > r->lw_free ? r->t : r->lw_free;   /* after the line writer's last mask */
+    uint64_t v = r->t > r->lw_free ? r->t : r->lw_free; /* after the line writer's last mask */
     const uint32_t n = (uint32_t)r->ns, den = r->e ? 4u * n * n * n : n;
     for (int32_t x = lo; x <= hi; x++, v++) {
         uint32_t sum[3];
@@ -211,7 +211,7 @@ static void weigh(fr *r, int32_t y)
         for (int p = 0; p < r->nch; p++)
             any |= sum[p];
         if (!any)
-            continue;                                      /* no coverage in any channel: no pix */
+            continue; /* no coverage in any channel: no pix */
         uint8_t cov[4];
         for (int c = 0; c < 3; c++)
             cov[c] = (uint8_t)((255u * sum[r->f->pos_of_colour[c]] + den / 2u) / den);
@@ -219,7 +219,8 @@ static void weigh(fr *r, int32_t y)
         uint8_t *d = r->img->px + (size_t)y * r->img->stride + (size_t)x * 4;
         uint64_t rgba = 0;
         for (int ch = 0; ch < 4; ch++) {
-            d[ch] = (uint8_t)(d[ch] + ef_mul255(r->premul[ch], cov[ch]) - ef_mul255(d[ch], ef_mul255(r->alpha, cov[ch])));
+            d[ch] =
+                (uint8_t)(d[ch] + ef_mul255(r->premul[ch], cov[ch]) - ef_mul255(d[ch], ef_mul255(r->alpha, cov[ch])));
             rgba = rgba << 8 | d[ch];
         }
         const uint64_t vp[4] = { (uint64_t)y, (uint64_t)x, cov[3], rgba };
@@ -254,8 +255,18 @@ ef_status ef_trace_filter_fill(ef_ctx *ctx, ef_image *img, const ef_polygon *pol
                 return EF_ERR_ARG;
         }
     ef_point *tp = malloc(((size_t)npts + 1) * sizeof *tp);
-    fr r = { .ctx = ctx, .sc = sc, .f = f, .tr = tr, .img = img, .nz = rule == EF_RULE_NONZERO, .ns = ctx->samples,
-             .nch = f->nch, .e = f->e, .wm = ctx->width + f->e, .w = ctx->width, .alpha = color.a };
+    fr r = { .ctx = ctx,
+             .sc = sc,
+             .f = f,
+             .tr = tr,
+             .img = img,
+             .nz = rule == EF_RULE_NONZERO,
+             .ns = ctx->samples,
+             .nch = f->nch,
+             .e = f->e,
+             .wm = ctx->width + f->e,
+             .w = ctx->width,
+             .alpha = color.a };
     int ok = tp != NULL;
     for (int p = 0; p < 3; p++)
         for (int l = 0; l < 2; l++) {
@@ -298,8 +309,10 @@ ef_status ef_trace_filter_fill(ef_ctx *ctx, ef_image *img, const ef_polygon *pol
                     continue;
                 ef_edge E = sc->edges[rec--];
                 ef_dda_start(&E, h, c, wm256, r.ns - 1, 0);
-                const uint64_t vw[10] = { 0, (uint64_t)E.r0 >> log2n, (uint64_t)E.r0, (uint64_t)E.r1, bits(E.x),
-                                          (uint64_t)E.e, bits(E.qs), (uint64_t)E.rs, (uint64_t)E.dy, E.dir < 0 };
+                const uint64_t vw[10] = {
+                    0,          (uint64_t)E.r0 >> log2n, (uint64_t)E.r0, (uint64_t)E.r1, bits(E.x), (uint64_t)E.e,
+                    bits(E.qs), (uint64_t)E.rs,          (uint64_t)E.dy, E.dir < 0
+                };
                 ef_trace_emit(tr, EF_IF_ET_WR, t + EF_L_DEC + EF_L_SETUP, vw);
             }
         }
@@ -311,7 +324,7 @@ ef_status ef_trace_filter_fill(ef_ctx *ctx, ef_image *img, const ef_polygon *pol
         for (int k = 0; k < 4; k++)
             r.premul[k] = k < 3 ? ef_mul255((&color.r)[k], color.a) : color.a;
         for (int p = 0; p < r.nch; p++)
-            r.shift[p] = f->tx[ce] - f->tx[p];        /* delta_p: x_p = x - delta_p */
+            r.shift[p] = f->tx[ce] - f->tx[p]; /* delta_p: x_p = x - delta_p */
 
         const int32_t hm = ctx->height + r.e, qend = row_max + r.e < hm - 1 ? row_max + r.e : hm - 1;
         for (int32_t q = row_min; q <= qend && row_min <= row_max; q++) {
@@ -327,7 +340,7 @@ ef_status ef_trace_filter_fill(ef_ctx *ctx, ef_image *img, const ef_polygon *pol
                 for (int32_t idx = head; idx >= 0; idx = sc->edges[idx].next)
                     ef_dda_start(&sc->edges[idx], h, c, wm256, r.ns - 1, 0);
                 const int32_t base = q * r.ns, end = base + r.ns - 1;
-                for (int p = 0; p < r.nch; p++) {               /* one pass per channel, left to right */
+                for (int p = 0; p < r.nch; p++) { /* one pass per channel, left to right */
                     int32_t xmin = INT32_MAX, xmax = -1;
                     for (uint32_t k = 0; k < sc->naet; k++) {
                         const ef_edge *E = &sc->edges[sc->aet[k]];

@@ -7,8 +7,14 @@
 
 #include "ef_trace.h"
 
-#define F(n, w) { n, w, 0 }
-#define S(n, w) { n, w, 1 }
+#define F(n, w) \
+    { \
+        n, w, 0 \
+    }
+#define S(n, w) \
+    { \
+        n, w, 1 \
+    }
 
 /* clang-format off */
 static const ef_iface_desc ifaces[EF_IF_COUNT] = {
@@ -26,15 +32,9 @@ static const ef_iface_desc ifaces[EF_IF_COUNT] = {
 
 static const char *const op_names[] = { NULL, "FRAME", "SHAPE", "EDGE", "SHAPE_END", "FRAME_END" };
 
-const char *ef_op_name(int op)
-{
-    return op >= EF_OP_FRAME && op <= EF_OP_FRAME_END ? op_names[op] : NULL;
-}
+const char *ef_op_name(int op) { return op >= EF_OP_FRAME && op <= EF_OP_FRAME_END ? op_names[op] : NULL; }
 
-const ef_iface_desc *ef_iface_get(int iface)
-{
-    return iface >= 0 && iface < EF_IF_COUNT ? &ifaces[iface] : NULL;
-}
+const ef_iface_desc *ef_iface_get(int iface) { return iface >= 0 && iface < EF_IF_COUNT ? &ifaces[iface] : NULL; }
 
 /* `edge` was the name of `seg` until the RTL needed a wire of that name
  * (`edge` is a Verilog keyword): names a user or an older vector set gives are
@@ -65,7 +65,7 @@ uint64_t ef_txn_field(const ef_txn *t, unsigned k)
         return 0;
     const unsigned lsb = field_lsb(d, k), width = d->field[k].width;
     uint64_t v = 0;
-    for (unsigned b = 0; b < width; b++) {      /* bit by bit: fields straddle words */
+    for (unsigned b = 0; b < width; b++) { /* bit by bit: fields straddle words */
         const unsigned p = lsb + b;
         v |= ((t->w[p >> 6] >> (p & 63)) & 1u) << b;
     }
@@ -79,7 +79,7 @@ int64_t ef_txn_field_value(const ef_txn *t, unsigned k)
     if (!d || k >= d->nfields || !d->field[k].is_signed)
         return (int64_t)v;
     const uint64_t sign = UINT64_C(1) << (d->field[k].width - 1);
-    return (int64_t)(v ^ sign) - (int64_t)sign;      /* sign extension without shifting a negative */
+    return (int64_t)(v ^ sign) - (int64_t)sign; /* sign extension without shifting a negative */
 }
 
 void ef_txn_set_field(ef_txn *t, unsigned k, uint64_t v)

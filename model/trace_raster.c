@@ -18,12 +18,12 @@ typedef struct raster {
     ef_image *img;
     int nz, ns;
     int32_t w;
-    uint64_t t;             /* the sequencer's cursor: its next free cycle */
-    uint64_t cov_free;      /* COV accepts the next span from this cycle */
-    uint64_t drained;       /* one past the shape's last transfer */
-    const uint8_t *premul;  /* colour P, premultiplied, bytes R G B A */
+    uint64_t t;            /* the sequencer's cursor: its next free cycle */
+    uint64_t cov_free;     /* COV accepts the next span from this cycle */
+    uint64_t drained;      /* one past the shape's last transfer */
+    const uint8_t *premul; /* colour P, premultiplied, bytes R G B A */
     uint8_t alpha;
-    int pending;            /* a plot waits for its `last` bit */
+    int pending; /* a plot waits for its `last` bit */
     uint64_t pend[5];
 } raster;
 
@@ -68,7 +68,7 @@ static void mark(raster *r, int32_t q, int s, int32_t dir)
     uint64_t *word = &ctx->nz_cells[(size_t)q * (size_t)(r->ns / 8) + (size_t)(s / 8)];
     const unsigned lane = 8u * (unsigned)(s % 8);
     const int32_t old = (int32_t)((*word >> lane) & 0x7Fu);
-    const int32_t v = (old ^ 0x40) - 0x40;                 /* the lane as a signed 7-bit number */
+    const int32_t v = (old ^ 0x40) - 0x40; /* the lane as a signed 7-bit number */
     if (v + dir < -64 || v + dir > 63)
         ctx->diag.winding_overflows++;
     const uint64_t nv = (uint64_t)((uint32_t)(v + dir) & 0x7Fu);
@@ -88,7 +88,7 @@ static void plot_edge(raster *r, ef_edge *E, int32_t row, int s0, int s1, int32_
         if (q > *xmax)
             *xmax = q;
         plot_out(r, row, s, q, E->dir);
-        E->e += E->rs;                                     /* the exact DDA step */
+        E->e += E->rs; /* the exact DDA step */
         E->x += E->qs;
         if (E->e >= E->dy) {
             E->e -= E->dy;
@@ -106,12 +106,12 @@ static uint64_t span_out(raster *r, int32_t y, int32_t x, int32_t len, uint32_t 
     const uint64_t a = closed + 1 > r->cov_free ? closed + 1 : r->cov_free;
     const uint64_t vs[4] = { (uint64_t)y, (uint64_t)x, (uint64_t)len, mask };
     transfer(r, EF_IF_SPAN, a, vs);
-    const uint8_t cov = ef_coverage_alpha(mask, r->ns);     /* spec 7.3 */
+    const uint8_t cov = ef_coverage_alpha(mask, r->ns); /* spec 7.3 */
     const uint8_t sa = ef_mul255(r->alpha, cov);
     uint8_t *d = r->img->px + (size_t)y * r->img->stride + (size_t)x * 4;
     for (int32_t i = 0; i < len; i++, d += 4) {
         uint64_t rgba = 0;
-        for (int ch = 0; ch < 4; ch++) {                   /* spec 8: d' = d + s - mul(d, sa) mod 256 */
+        for (int ch = 0; ch < 4; ch++) { /* spec 8: d' = d + s - mul(d, sa) mod 256 */
             const uint32_t s = ef_mul255(r->premul[ch], cov);
             d[ch] = (uint8_t)(d[ch] + s - ef_mul255(d[ch], sa));
             rgba = rgba << 8 | d[ch];
@@ -139,15 +139,15 @@ static int accumulate_nz(raster *r, int32_t p, int64_t *acc, uint32_t *mask)
     uint32_t m = 0;
     for (int s = 0; s < r->ns; s++) {
         const int64_t c = (int64_t)((cell[s / 8] >> (8 * (s % 8))) & 0x7Fu);
-        int64_t v = acc[s] + ((c ^ 0x40) - 0x40);          /* 7-bit signed add */
+        int64_t v = acc[s] + ((c ^ 0x40) - 0x40); /* 7-bit signed add */
         if (v < -64 || v > 63)
             r->ctx->diag.winding_overflows++;
-        v = ((v + 64) & 0x7F) - 64;                        /* wraps as the packed lanes do */
+        v = ((v + 64) & 0x7F) - 64; /* wraps as the packed lanes do */
         acc[s] = v;
         m |= (uint32_t)(v != 0) << s;
     }
     for (int w = 0; w < r->ns / 8; w++)
-        cell[w] = 0;                                       /* clear-on-read */
+        cell[w] = 0; /* clear-on-read */
     *mask = m;
     return 1;
 }
@@ -173,7 +173,7 @@ static void scan(raster *r, int32_t y, int32_t xmin, int32_t xmax)
         }
         if (marked) {
             if (mask && p > start)
-                next = span_out(r, y, start, p - start, mask, t);   /* p <= W */
+                next = span_out(r, y, start, p - start, mask, t); /* p <= W */
             mask = m;
             start = p;
         }
@@ -193,14 +193,23 @@ static void scan(raster *r, int32_t y, int32_t xmin, int32_t xmax)
 uint64_t ef_trace_rows(ef_ctx *ctx, ef_image *img, ef_rule rule, const uint8_t premul[4], uint8_t alpha,
                        int32_t row_min, int32_t row_max, uint64_t t0)
 {
-    raster r = { .ctx = ctx, .tr = ctx->trace, .img = img, .nz = rule == EF_RULE_NONZERO, .ns = ctx->samples,
-                 .w = ctx->width, .t = t0, .cov_free = 0, .drained = t0, .premul = premul, .alpha = alpha };
+    raster r = { .ctx = ctx,
+                 .tr = ctx->trace,
+                 .img = img,
+                 .nz = rule == EF_RULE_NONZERO,
+                 .ns = ctx->samples,
+                 .w = ctx->width,
+                 .t = t0,
+                 .cov_free = 0,
+                 .drained = t0,
+                 .premul = premul,
+                 .alpha = alpha };
     const int32_t ns = ctx->samples, h = ctx->h, c = ctx->c, w256 = ctx->width * EF_DEV_ONE;
     for (int32_t row = row_min; row <= row_max; row++) {
         uint32_t nnew;
         const int32_t head = ef_et_take(ctx, row, &nnew);
         if (ctx->naet == 0 && head < 0)
-            continue;                                      /* costs no cycle */
+            continue; /* costs no cycle */
         for (int32_t idx = head; idx >= 0; idx = ctx->edges[idx].next) {
             const uint64_t v[2] = { (uint64_t)row, (uint64_t)(ctx->nedges - 1u - (uint32_t)idx) };
             transfer(&r, EF_IF_ET_RD, r.t++, v);
@@ -208,14 +217,14 @@ uint64_t ef_trace_rows(ef_ctx *ctx, ef_image *img, ef_rule rule, const uint8_t p
         const int32_t base = row * ns, end = base + ns - 1;
         int32_t xmin = INT32_MAX, xmax = -1;
         uint32_t kept = 0;
-        for (uint32_t k = 0; k < ctx->naet; k++) {         /* active from earlier rows, AET order */
+        for (uint32_t k = 0; k < ctx->naet; k++) { /* active from earlier rows, AET order */
             const int32_t idx = ctx->aet[k];
             ef_edge *E = &ctx->edges[idx];
             plot_edge(&r, E, row, 0, (E->r1 < end ? E->r1 : end) - base, &xmin, &xmax);
             if (E->r1 > end)
                 ctx->aet[kept++] = idx;
         }
-        for (int32_t idx = head; idx >= 0; idx = ctx->edges[idx].next) {   /* new, input order */
+        for (int32_t idx = head; idx >= 0; idx = ctx->edges[idx].next) { /* new, input order */
             ef_edge *E = &ctx->edges[idx];
             ef_dda_start(E, h, c, w256, ns - 1, 0);
             plot_edge(&r, E, row, E->r0 - base, (E->r1 < end ? E->r1 : end) - base, &xmin, &xmax);

@@ -54,7 +54,7 @@ static void sb_printf(sb *b, const char *fmt, ...)
             b->n += (size_t)k;
             return;
         }
-        if (k < 0 && b->p) {   /* an output error, not a short buffer: growing would not help */
+        if (k < 0 && b->p) { /* an output error, not a short buffer: growing would not help */
             b->oom = 1;
             return;
         }
@@ -92,7 +92,7 @@ static void put_value(sb *b, const ef_iface_desc *d, const ef_txn *t, unsigned k
     const ef_field_desc *f = &d->field[k];
     if (f->is_signed)
         sb_printf(b, "%" PRId64, ef_txn_field_value(t, k));
-    else if (f->width >= 32)    /* masks and colours read best in hex */
+    else if (f->width >= 32) /* masks and colours read best in hex */
         sb_printf(b, "0x%0*" PRIx64, (f->width + 3) / 4, ef_txn_field(t, k));
     else
         sb_printf(b, "%" PRIu64, ef_txn_field(t, k));
@@ -181,7 +181,7 @@ static void report(cmp *c, int kind, size_t i, size_t j)
             chk_mark_txn(r, &ta);
     }
     if (r->a->errors && r->reported >= (uint64_t)r->a->errors)
-        return;   /* counted, not shown (--errors) */
+        return; /* counted, not shown (--errors) */
     r->reported++;
 
     sb b = { 0 };
@@ -286,10 +286,10 @@ void chk_compare(chk_run *r, chk_case *tc, int iface, const ef_vec_dump *e, cons
             report(&c, M_DIFF, i++, j++);
             continue;
         }
-        size_t da = find_ahead(E, i, A, j);   /* E[i] further on in A: A has extras */
-        size_t de = find_ahead(A, j, E, i);   /* A[j] further on in E: A lacks some */
+        size_t da = find_ahead(E, i, A, j); /* E[i] further on in A: A has extras */
+        size_t de = find_ahead(A, j, E, i); /* A[j] further on in E: A lacks some */
         if (da && (!de || da <= de)) {
-            for (; da > 0; da--)   /* not `da--`: no unsigned wrap at the end */
+            for (; da > 0; da--) /* not `da--`: no unsigned wrap at the end */
                 report(&c, M_EXTRA, i, j++);
         } else if (de) {
             for (; de > 0; de--)

@@ -42,7 +42,7 @@ static char *counterpart(const char *adir, const char *name)
 {
     size_t stem = strlen(name);
     const ef_vec_format *fm = expected_format(name, &stem);
-    if (!fm)   /* a manifest's expected file of another name: NAME.actual.EXT */
+    if (!fm) /* a manifest's expected file of another name: NAME.actual.EXT */
         fm = ef_vec_format_of_path(name);
     if (!fm)
         return NULL;
@@ -71,10 +71,7 @@ static int scanned(const char *name)
     return fm && (fm->per_iface || (stem == strlen("vectors") && strncmp(name, "vectors", stem) == 0));
 }
 
-static int cmp_names(const void *x, const void *y)
-{
-    return strcmp(*(char *const *)x, *(char *const *)y);
-}
+static int cmp_names(const void *x, const void *y) { return strcmp(*(char *const *)x, *(char *const *)y); }
 
 /* Without a manifest: EXPECTED's *.expected.hex and vectors.bin, sorted. */
 static int scan_dir(const char *dir, char ***names, size_t *n)
@@ -93,7 +90,7 @@ static int scan_dir(const char *dir, char ***names, size_t *n)
         char *nm = nn ? malloc(strlen(de->d_name) + 1) : NULL;
         if (nn)
             *names = nn;
-        if (!nm) {   /* out of memory: no partial list (a missed file would pass silently) */
+        if (!nm) { /* out of memory: no partial list (a missed file would pass silently) */
             closedir(d);
             while (*n > 0)
                 free((*names)[--*n]);
@@ -123,8 +120,8 @@ static int dir_entry(chk_run *r, const char *name, const ef_vec_manifest_file *m
     }
     if (mf && !chk_is_file(ep)) {
         char buf[1024];
-        snprintf(buf, sizeof buf, "%s: files[%zu].name: the manifest names '%s', which is not in %s", mname,
-                 mf->index, name, E);
+        snprintf(buf, sizeof buf, "%s: files[%zu].name: the manifest names '%s', which is not in %s", mname, mf->index,
+                 name, E);
         rc = chk_input_error(r, EF_ERR_SYNTAX, buf, ep, "-");
     } else if (ap) {
         rc = chk_pair(r, ep, ap, mf, mname);
@@ -166,16 +163,18 @@ int chk_dirs(chk_run *r)
             const ef_vec_format *fm = f->format ? ef_vec_format_named(f->format) : ef_vec_format_of_path(f->name);
             size_t stem;
             int read = fm && fm->reader &&
-                       (!fm->per_iface || (f->role ? strcmp(f->role, "expected") == 0
-                                                   : expected_format(f->name, &stem) != NULL));
+                       (!fm->per_iface ||
+                        (f->role ? strcmp(f->role, "expected") == 0 : expected_format(f->name, &stem) != NULL));
             if (read)
                 rc = dir_entry(r, f->name, f, mpath, &compared);
         }
     } else {
         char **names;
         size_t n;
-        chk_status(r, "edgeflag: warning: %s has no manifest.json (an incomplete `edgeflag vectors` run?): "
-                        "comparing its *.expected.hex and vectors.bin\n", E);
+        chk_status(r,
+                   "edgeflag: warning: %s has no manifest.json (an incomplete `edgeflag vectors` run?): "
+                   "comparing its *.expected.hex and vectors.bin\n",
+                   E);
         if (scan_dir(E, &names, &n) != 0) {
             char buf[1024];
             int saved = errno;
@@ -191,10 +190,13 @@ int chk_dirs(chk_run *r)
     }
     if (rc == 0 && compared == 0) {
         char buf[1024], *pix = chk_join(r->a->actual, "pix.expected.hex");
-        snprintf(buf, sizeof buf, "%s: nothing to compare: no IFACE.actual.hex or vectors.actual.bin matching an "
-                 "expected file of %s%s", r->a->actual, E,
+        snprintf(buf, sizeof buf,
+                 "%s: nothing to compare: no IFACE.actual.hex or vectors.actual.bin matching an "
+                 "expected file of %s%s",
+                 r->a->actual, E,
                  pix && chk_is_file(pix) ? " (it holds expected files: the DUT's dumps are named IFACE.actual.hex, "
-                                           "and an expected file is never taken for one)" : "");
+                                           "and an expected file is never taken for one)"
+                                         : "");
         free(pix);
         rc = chk_input_error(r, EF_ERR_SYNTAX, buf, E, r->a->actual);
     }

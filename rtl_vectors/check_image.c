@@ -13,7 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const uint8_t MARK[4] = { 255, 0, 255, 255 };   /* premultiplied opaque magenta */
+static const uint8_t MARK[4] = { 255, 0, 255, 255 }; /* premultiplied opaque magenta */
 
 /* Field k of the interface called name, or -1 (meanings come from the
  * interface table, not from knowing the layouts). */
@@ -30,7 +30,7 @@ void chk_mark_txn(chk_run *r, const ef_txn *t)
     const ef_iface_desc *d = ef_iface_get(t->iface);
     int fy = field_named(d, "y"), fx = field_named(d, "x"), fl = field_named(d, "len");
     if (fy < 0 || fx < 0)
-        return;   /* not a pixel interface */
+        return; /* not a pixel interface */
     if (r->nmarks == r->capmarks) {
         size_t cap = r->capmarks ? r->capmarks * 2 : 256;
         chk_mark *nm = cap < SIZE_MAX / sizeof *nm ? realloc(r->marks, cap * sizeof *nm) : NULL;
@@ -42,7 +42,7 @@ void chk_mark_txn(chk_run *r, const ef_txn *t)
         r->capmarks = cap;
     }
     chk_mark *m = &r->marks[r->nmarks++];
-    m->y = (int32_t)ef_txn_field(t, (unsigned)fy);   /* 14-bit fields: no truncation */
+    m->y = (int32_t)ef_txn_field(t, (unsigned)fy); /* 14-bit fields: no truncation */
     m->x = (int32_t)ef_txn_field(t, (unsigned)fx);
     m->len = fl >= 0 ? (int32_t)ef_txn_field(t, (unsigned)fl) : 1;
 }
@@ -73,7 +73,7 @@ static void bounding_size(const chk_run *r, int32_t *w, int32_t *h)
 static void paint(ef_image *img, int64_t x, int64_t y, const uint8_t rgba[4])
 {
     if (x < 0 || y < 0 || x >= img->width || y >= img->height)
-        return;   /* a wrong coordinate from the RTL: nothing to draw */
+        return; /* a wrong coordinate from the RTL: nothing to draw */
     memcpy(img->px + (size_t)y * img->stride + (size_t)x * 4u, rgba, 4);
 }
 
@@ -110,7 +110,7 @@ int ef_check_diff_image(const ef_check_result *res, ef_image *out, char *err, si
         for (size_t k = 0; k < r->bg.seq[EF_IF_PIX].n; k++) {
             ef_txn t;
             ef_vec_dump_txn(&r->bg, EF_IF_PIX, k, &t);
-            uint64_t c = ef_txn_field(&t, (unsigned)fc);   /* R in bits 31:24, then G, B, A */
+            uint64_t c = ef_txn_field(&t, (unsigned)fc); /* R in bits 31:24, then G, B, A */
             uint8_t px[4] = { (uint8_t)(c >> 24), (uint8_t)(c >> 16 & 0xffu), (uint8_t)(c >> 8 & 0xffu),
                               (uint8_t)(c & 0xffu) };
             paint(&img, (int64_t)ef_txn_field(&t, (unsigned)fx), (int64_t)ef_txn_field(&t, (unsigned)fy), px);
@@ -118,7 +118,7 @@ int ef_check_diff_image(const ef_check_result *res, ef_image *out, char *err, si
     }
     for (size_t k = 0; k < r->nmarks; k++) {
         const chk_mark *m = &r->marks[k];
-        int64_t len = m->len > 0 ? m->len : 1;   /* a zero-length span still marks its place */
+        int64_t len = m->len > 0 ? m->len : 1; /* a zero-length span still marks its place */
         for (int64_t x = m->x; x < (int64_t)m->x + len && x < w; x++)
             paint(&img, x, m->y, MARK);
     }

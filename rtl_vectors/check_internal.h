@@ -14,21 +14,21 @@
 #include <stdio.h>
 
 #include "ef_check.h"
-#include "ef_vec.h"        /* the format table */
+#include "ef_vec.h" /* the format table */
 #include "ef_vec_read.h"
 
 /* One JUnit test case: one interface of one pair of files. */
 typedef struct chk_case {
-    char *classname;        /* "EXPECTED vs ACTUAL" */
-    char *name;             /* the interface */
-    uint64_t expected, actual;  /* transactions on each side */
+    char *classname;           /* "EXPECTED vs ACTUAL" */
+    char *name;                /* the interface */
+    uint64_t expected, actual; /* transactions on each side */
     uint64_t mismatches;
-    char *text;             /* the reported mismatch lines (a failure's body) */
+    char *text; /* the reported mismatch lines (a failure's body) */
     size_t text_len, text_cap;
-    char *error;            /* malformed or unreadable input (an <error>), or NULL */
-    int missing;            /* a required interface without an actual dump (a <failure>) */
-    int skipped;            /* an interface left out by --interfaces or --allow-missing */
-    uint64_t ns;            /* time taken */
+    char *error; /* malformed or unreadable input (an <error>), or NULL */
+    int missing; /* a required interface without an actual dump (a <failure>) */
+    int skipped; /* an interface left out by --interfaces or --allow-missing */
+    uint64_t ns; /* time taken */
 } chk_case;
 
 /* A run of pixels to mark in the diff image. */
@@ -44,15 +44,15 @@ typedef struct ef_check_run_state {
     int oom;                /* an allocation failed: exit 70 */
     chk_case *cases;
     size_t ncases, capcases;
-    uint32_t held;          /* interfaces the EXPECTED side holds */
-    uint32_t compared;      /* interfaces compared at least once */
-    uint64_t seed;          /* the expected vectors' seed (JUnit's default name), 0 if none */
-    uint64_t missing;       /* required interfaces without a dump */
+    uint32_t held;     /* interfaces the EXPECTED side holds */
+    uint32_t compared; /* interfaces compared at least once */
+    uint64_t seed;     /* the expected vectors' seed (JUnit's default name), 0 if none */
+    uint64_t missing;  /* required interfaces without a dump */
     /* --diff-image */
-    int32_t width, height;  /* frame size from a header or the manifest, 0 if none yet */
+    int32_t width, height; /* frame size from a header or the manifest, 0 if none yet */
     chk_mark *marks;
     size_t nmarks, capmarks;
-    ef_vec_dump bg;         /* the expected pix (the picture under the marks) */
+    ef_vec_dump bg; /* the expected pix (the picture under the marks) */
     int have_bg;
 } chk_run;
 
@@ -79,8 +79,8 @@ typedef struct chk_async_read {
     thrd_t thr;
     int started;
     const char *path;
-    int want, hint;       /* as ef_vec_read_path's */
-    ef_status st;         /* after chk_read_wait */
+    int want, hint; /* as ef_vec_read_path's */
+    ef_status st;   /* after chk_read_wait */
     ef_vec_dump dump;
     ef_vec_read_error err;
 } chk_async_read;
@@ -107,10 +107,8 @@ chk_case *chk_case_add(chk_run *r, const char *ename, const char *aname, const c
 void chk_compare(chk_run *r, chk_case *tc, int iface, const ef_vec_dump *e, const char *ename, const ef_vec_dump *a,
                  const char *aname);
 
-
 /* Records the pixels of a pix/span transaction for the diff image. */
 void chk_mark_txn(chk_run *r, const ef_txn *t);
-
 
 /* Monotonic nanoseconds (JUnit times; integers only). */
 uint64_t chk_now_ns(void);

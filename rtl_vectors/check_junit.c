@@ -13,7 +13,7 @@
  * command writes it atomically).
  */
 #include "check_internal.h"
-#include "ef_fixed.h"   /* ef_utf8_len */
+#include "ef_fixed.h" /* ef_utf8_len */
 
 #include <errno.h>
 #include <inttypes.h>
@@ -131,8 +131,9 @@ static void write_cases(FILE *f, const chk_run *r)
             esc(f, c->error, 1);
             fputs("\"/>\n    </testcase>\n", f);
         } else if (c->mismatches) {
-            fprintf(f, "\">\n      <failure type=\"mismatch\" message=\"%" PRIu64 " mismatch%s (%" PRIu64
-                       " expected, %" PRIu64 " actual transactions)\">",
+            fprintf(f,
+                    "\">\n      <failure type=\"mismatch\" message=\"%" PRIu64 " mismatch%s (%" PRIu64
+                    " expected, %" PRIu64 " actual transactions)\">",
                     c->mismatches, c->mismatches == 1 ? "" : "es", c->expected, c->actual);
             esc(f, c->text, 0);
             fprintf(f, "(%" PRIu64 " mismatch%s in all; the lines above are those reported under --errors)\n",

@@ -32,7 +32,8 @@ void ef_check_opts_init(ef_check_opts *o)
 void chk_error(const chk_run *r, const char *fmt, ...)
 {
     va_list ap;
-    if (!r->a->status) return;
+    if (!r->a->status)
+        return;
     fputs("edgeflag: ", r->a->status);
     va_start(ap, fmt);
     vfprintf(r->a->status, fmt, ap);
@@ -43,7 +44,8 @@ void chk_error(const chk_run *r, const char *fmt, ...)
 void chk_status(const chk_run *r, const char *fmt, ...)
 {
     va_list ap;
-    if (!r->a->status) return;
+    if (!r->a->status)
+        return;
     va_start(ap, fmt);
     vfprintf(r->a->status, fmt, ap);
     va_end(ap);
@@ -76,7 +78,8 @@ int chk_input_error(chk_run *r, ef_status st, const char *msg, const char *ename
     chk_case *tc = chk_case_add(r, ename, aname, "input");
     if (tc) {
         tc->error = malloc(strlen(msg) + 1);
-        if (tc->error) strcpy(tc->error, msg);
+        if (tc->error)
+            strcpy(tc->error, msg);
     }
     return st == EF_ERR_NOMEM ? EF_CHECK_INTERNAL : EF_CHECK_INPUT;
 }
@@ -91,7 +94,8 @@ int chk_read_error(chk_run *r, ef_status st, const ef_vec_read_error *err, const
 /* The expected pix stay for --diff-image; everything else of d is freed. */
 static void keep_background(chk_run *r, ef_vec_dump *d)
 {
-    if (r->have_bg || !(d->mask >> EF_IF_PIX & 1u)) return;
+    if (r->have_bg || !(d->mask >> EF_IF_PIX & 1u))
+        return;
     r->bg = *d;
     for (int i = 0; i < EF_IF_COUNT; i++)
         if (i != EF_IF_PIX) {
@@ -143,8 +147,9 @@ int chk_pair(chk_run *r, const char *ep, const char *ap, const ef_vec_manifest_f
         return chk_read_error(r, st, &err, ep, ap ? ap : "-");
     }
     if (mf && mf->has_count && mf->count != total(&e)) {
-        snprintf(buf, sizeof buf, "%s: files[%zu].count: the manifest counts %" PRIu64
-                 " transactions in '%s', the file holds %" PRIu64, mname, mf->index, mf->count, mf->name, total(&e));
+        snprintf(buf, sizeof buf,
+                 "%s: files[%zu].count: the manifest counts %" PRIu64 " transactions in '%s', the file holds %" PRIu64,
+                 mname, mf->index, mf->count, mf->name, total(&e));
         rc = chk_input_error(r, EF_ERR_SYNTAX, buf, ep, ap ? ap : "-");
         goto out;
     }
@@ -152,14 +157,17 @@ int chk_pair(chk_run *r, const char *ep, const char *ap, const ef_vec_manifest_f
         r->width = e.width;
         r->height = e.height;
     }
-    if (!r->seed) r->seed = e.seed;
+    if (!r->seed)
+        r->seed = e.seed;
     /* Every interface the expected side holds must be compared, but for the
      * command stream: the DUT's input, compared when a bench dumps it. */
     r->held |= e.mask & ~(1u << EF_IF_CMD);
-    if (!ap) goto out;
+    if (!ap)
+        goto out;
     int want = -1;
     for (int i = 0; e.format == EF_VEC_FMT_HEX && i < EF_IF_COUNT; i++)
-        if (e.mask >> i & 1u) want = i;
+        if (e.mask >> i & 1u)
+            want = i;
     if (spec && want == guess) {
         chk_read_wait(&ar);
         spec = 0;
@@ -187,7 +195,8 @@ int chk_pair(chk_run *r, const char *ep, const char *ap, const ef_vec_manifest_f
                    (int)a.width, (int)a.height);
     for (int i = 0; i < EF_IF_COUNT; i++) {
         const char *name = ef_iface_get(i)->name;
-        if (!(e.mask >> i & 1u) || !(r->a->only >> i & 1u)) continue;
+        if (!(e.mask >> i & 1u) || !(r->a->only >> i & 1u))
+            continue;
         if (!(a.mask >> i & 1u)) {
             chk_status(r, "edgeflag check: %s: not recorded in %s\n", name, ap);
             continue;
@@ -195,7 +204,8 @@ int chk_pair(chk_run *r, const char *ep, const char *ap, const ef_vec_manifest_f
         r->compared |= 1u << i;
         const uint64_t t0 = chk_now_ns(), before = r->mismatches;
         chk_case *tc = chk_case_add(r, ep, ap, name);
-        if (!tc) break;
+        if (!tc)
+            break;
         chk_compare(r, tc, i, &e, ep, &a, ap);
         tc->ns = chk_now_ns() - t0;
         chk_status(r, "edgeflag check: %s: %s vs %s: %zu expected, %zu actual transactions, %" PRIu64 " mismatch%s\n",
@@ -205,7 +215,8 @@ int chk_pair(chk_run *r, const char *ep, const char *ap, const ef_vec_manifest_f
 out:
     if (spec)
         chk_read_drop(&ar);
-    if (r->a->keep_marks && rc == 0) keep_background(r, &e);
+    if (r->a->keep_marks && rc == 0)
+        keep_background(r, &e);
     ef_vec_dump_free(&e);
     ef_vec_dump_free(&a);
     return r->oom ? EF_CHECK_INTERNAL : rc;
@@ -232,10 +243,12 @@ static void close_unchecked(chk_run *r)
 {
     const ef_check_opts *a = r->a;
     for (int i = 0; i < EF_IF_COUNT; i++) {
-        if (!(r->held >> i & 1u) || (r->compared >> i & 1u)) continue;
+        if (!(r->held >> i & 1u) || (r->compared >> i & 1u))
+            continue;
         const char *name = ef_iface_get(i)->name;
         chk_case *tc = chk_case_add(r, a->expected, a->actual, name);
-        if (!tc) return;
+        if (!tc)
+            return;
         if (!(a->only >> i & 1u) || (a->allow_missing >> i & 1u)) {
             tc->skipped = 1;
             chk_status(r, "edgeflag check: %s: skipped (%s)\n", name,
@@ -280,7 +293,8 @@ int ef_check_run(const ef_check_opts *o, ef_check_result *res)
     chk_run *r = calloc(1, sizeof *r);
 
     memset(res, 0, sizeof *res);
-    if (!r) return EF_CHECK_INTERNAL;
+    if (!r)
+        return EF_CHECK_INTERNAL;
     res->run = r;
     r->opts = *o;
     r->a = &r->opts;
@@ -313,9 +327,12 @@ int ef_check_run(const ef_check_opts *o, ef_check_result *res)
                   S_ISDIR(se.st_mode) ? a->expected : a->actual, S_ISDIR(se.st_mode) ? a->actual : a->expected);
         rc = EF_CHECK_INPUT;
     }
-    if (rc == 0) close_unchecked(r);
-    if (r->oom) rc = EF_CHECK_INTERNAL;
-    if (a->report) fflush(a->report);
+    if (rc == 0)
+        close_unchecked(r);
+    if (r->oom)
+        rc = EF_CHECK_INTERNAL;
+    if (a->report)
+        fflush(a->report);
 
     uint64_t compared = 0, txns = 0, failing = 0;
     for (size_t k = 0; k < r->ncases; k++)
@@ -341,6 +358,7 @@ int ef_check_run(const ef_check_opts *o, ef_check_result *res)
     res->transactions = txns;
     res->missing = r->missing;
     res->marks = r->nmarks;
-    if (rc != 0) return rc;
+    if (rc != 0)
+        return rc;
     return r->mismatches || r->missing ? EF_CHECK_FAIL : EF_CHECK_PASS;
 }

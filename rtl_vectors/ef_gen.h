@@ -65,27 +65,27 @@ const char *ef_gen_category_name(ef_gen_category c);
 /* What a directed case is known to produce, at every sample count; written
  * in its header ("# expect: ...") and checked by tests/unit/test_gen.c. */
 typedef enum ef_gen_expect_kind {
-    EF_GEN_EXPECT_ANY = 0,  /* nothing simple to state */
-    EF_GEN_EXPECT_EMPTY,    /* every pixel stays (0, 0, 0, 0) */
-    EF_GEN_EXPECT_FULL,     /* every pixel has alpha 255 */
-    EF_GEN_EXPECT_PROBE     /* pixel (x, y) has the alpha given */
+    EF_GEN_EXPECT_ANY = 0, /* nothing simple to state */
+    EF_GEN_EXPECT_EMPTY,   /* every pixel stays (0, 0, 0, 0) */
+    EF_GEN_EXPECT_FULL,    /* every pixel has alpha 255 */
+    EF_GEN_EXPECT_PROBE    /* pixel (x, y) has the alpha given */
 } ef_gen_expect_kind;
 typedef struct ef_gen_expect {
     ef_gen_expect_kind kind;
-    int32_t x, y;           /* EF_GEN_EXPECT_PROBE */
-    uint8_t alpha;          /* EF_GEN_EXPECT_PROBE */
-    int8_t overflow;        /* 1: winding overflows are counted; 0: none; -1: not stated */
+    int32_t x, y;    /* EF_GEN_EXPECT_PROBE */
+    uint8_t alpha;   /* EF_GEN_EXPECT_PROBE */
+    int8_t overflow; /* 1: winding overflows are counted; 0: none; -1: not stated */
 } ef_gen_expect;
 
 /* ---------------------------------------------------------- configuration */
 typedef struct ef_gen_config {
-    uint64_t seed;          /* random cases; printed in every header */
-    int level;              /* 1 or 2 */
-    int grid;               /* grid-dependent directed cases: 8, 16 or 32, or 0 for the
+    uint64_t seed;     /* random cases; printed in every header */
+    int level;         /* 1 or 2 */
+    int grid;          /* grid-dependent directed cases: 8, 16 or 32, or 0 for the
                              * level's default (16 at level 1, all three at level 2) */
-    int rules_swapped;      /* level 2: each directed case again with evenodd <-> nonzero
+    int rules_swapped; /* level 2: each directed case again with evenodd <-> nonzero
                              * (set by ef_gen_config_init; level 1 never) */
-    uint32_t nrandom;       /* random cases: at least the level's count */
+    uint32_t nrandom;  /* random cases: at least the level's count */
 } ef_gen_config;
 
 /* Defaults for a level: seed EF_GEN_DEFAULT_SEED, grid 0, the level's
@@ -117,18 +117,18 @@ uint64_t ef_gen_case_seed(uint64_t seed, uint32_t j);
 
 /* -------------------------------------------------------------- a case */
 typedef struct ef_gen_case {
-    uint32_t number;        /* global case number k */
-    uint32_t total;         /* cases in the run */
-    int directed;           /* 1: from the table, 0: random */
-    uint32_t index;         /* directed: k; random: j = k - directed count */
+    uint32_t number; /* global case number k */
+    uint32_t total;  /* cases in the run */
+    int directed;    /* 1: from the table, 0: random */
+    uint32_t index;  /* directed: k; random: j = k - directed count */
     ef_gen_category category;
-    const char *name;       /* directed: the table's name; random: "random" */
-    int grid;               /* directed: the sample grid it was built for, 0 if none */
-    int rules_swapped;      /* a level-2 rule-swapped variant */
-    uint64_t case_seed;     /* random cases */
+    const char *name;   /* directed: the table's name; random: "random" */
+    int grid;           /* directed: the sample grid it was built for, 0 if none */
+    int rules_swapped;  /* a level-2 rule-swapped variant */
+    uint64_t case_seed; /* random cases */
     ef_gen_expect expect;
-    char desc[768];         /* one line, no tabs */
-    ef_scene scene;         /* the drawing */
+    char desc[768]; /* one line, no tabs */
+    ef_scene scene; /* the drawing */
 } ef_gen_case;
 
 /* Builds case k (0 <= k < ef_gen_total(c)) into *out (initialised here; free
@@ -139,7 +139,7 @@ void ef_gen_case_free(ef_gen_case *gc);
 
 /* ------------------------------------------------------------- text out */
 typedef struct ef_gen_text {
-    char *data;             /* NUL-terminated */
+    char *data; /* NUL-terminated */
     size_t len, cap;
 } ef_gen_text;
 void ef_gen_text_free(ef_gen_text *t);
@@ -152,8 +152,7 @@ ef_status ef_gen_format(const ef_gen_config *c, const ef_gen_case *gc, ef_gen_te
 void ef_gen_file_name(uint32_t k, char *buf, size_t size);
 /* index.tsv: its two header lines (a comment naming the run and shard, then
  * the column names), and one row per case, appended to t. */
-ef_status ef_gen_index_header(const ef_gen_config *c, uint32_t shard_index, uint32_t shard_count,
-                              ef_gen_text *t);
+ef_status ef_gen_index_header(const ef_gen_config *c, uint32_t shard_index, uint32_t shard_count, ef_gen_text *t);
 ef_status ef_gen_index_row(const ef_gen_case *gc, ef_gen_text *t);
 /* Exact decimal of v / 256 (at most 8 fraction digits, no trailing zeros),
  * appended to t. */

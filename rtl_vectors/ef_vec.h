@@ -18,8 +18,8 @@
 
 #include "ef_trace.h"
 
-#define EF_VEC_FORMAT 1             /* "format 1" of every file (docs/vectors.md) */
-#define EF_VEC_BIN_HEADER 104       /* header bytes of vectors.bin */
+#define EF_VEC_FORMAT 1       /* "format 1" of every file (docs/vectors.md) */
+#define EF_VEC_BIN_HEADER 104 /* header bytes of vectors.bin */
 #define EF_VEC_HEX_MAX_DIGITS ((EF_CYCLE_BITS + 64 * EF_TXN_WORDS + 3) / 4)
 
 /* ------------------------------------------------------------ checksums */
@@ -60,8 +60,8 @@ typedef struct ef_vec_out {
     unsigned flags;
     ef_vec_sha256 sha;
     uint32_t crc;
-    uint64_t bytes;        /* written (or counted) so far */
-    int err;               /* errno of the first failed write; later writes are dropped */
+    uint64_t bytes; /* written (or counted) so far */
+    int err;        /* errno of the first failed write; later writes are dropped */
     size_t used;
     unsigned char buf[EF_VEC_OUT_BUF];
 } ef_vec_out;
@@ -87,7 +87,7 @@ static inline void ef_vec_out_advance(ef_vec_out *o, size_t n)
     o->bytes += n;
 }
 void ef_vec_out_puts(ef_vec_out *o, const char *s);
-void ef_vec_out_u64(ef_vec_out *o, uint64_t v);      /* decimal */
+void ef_vec_out_u64(ef_vec_out *o, uint64_t v); /* decimal */
 /* Pushes the buffer out and finishes the hash (digest may be NULL).
  * Returns 0, or -1 with errno set to the first write error. */
 int ef_vec_out_finish(ef_vec_out *o, uint8_t digest[32]);
@@ -101,11 +101,11 @@ typedef struct ef_vec_info {
     const char *input;     /* the input's base name (no directory) */
     int32_t width, height; /* the canvas rendered */
     int samples;
-    int rule;              /* -1: each shape's own ("scene"); else an ef_rule */
-    uint64_t seed;         /* `# seed N` of an edgeflag gen scene, else 0 */
-    uint64_t cycles;       /* the frame's length (ef_trace_frame_end) */
-    uint32_t mask;         /* interfaces recorded, bit i = ef_iface i */
-    int dump;              /* 1: written as a DUT's dumps (role "actual"), not as expected vectors */
+    int rule;        /* -1: each shape's own ("scene"); else an ef_rule */
+    uint64_t seed;   /* `# seed N` of an edgeflag gen scene, else 0 */
+    uint64_t cycles; /* the frame's length (ef_trace_frame_end) */
+    uint32_t mask;   /* interfaces recorded, bit i = ef_iface i */
+    int dump;        /* 1: written as a DUT's dumps (role "actual"), not as expected vectors */
 } ef_vec_info;
 
 /* "nonzero", "evenodd" or "scene". */
@@ -128,16 +128,16 @@ void ef_vec_out_run_line(ef_vec_out *o, const ef_vec_info *info);
  * records of 1 + nw words: the cycle, then the payload's ceil(P/64) words. */
 typedef struct ef_vec_list {
     uint64_t *rec;
-    size_t count, cap;     /* records */
+    size_t count, cap; /* records */
     unsigned nw;
 } ef_vec_list;
 
 typedef struct ef_vec_collect {
     ef_vec_list list[EF_IF_COUNT];
-    uint64_t allowed[EF_IF_COUNT][EF_TXN_WORDS];   /* payload bits within each interface's width */
-    uint32_t mask;         /* interfaces accepted */
-    ef_status error;       /* first failure: EF_ERR_NOMEM, or EF_ERR_ARG for a broken trace */
-    char why[160];         /* what was broken, for EF_ERR_ARG */
+    uint64_t allowed[EF_IF_COUNT][EF_TXN_WORDS]; /* payload bits within each interface's width */
+    uint32_t mask;                               /* interfaces accepted */
+    ef_status error;                             /* first failure: EF_ERR_NOMEM, or EF_ERR_ARG for a broken trace */
+    char why[160];                               /* what was broken, for EF_ERR_ARG */
 } ef_vec_collect;
 
 void ef_vec_collect_init(ef_vec_collect *c, uint32_t mask);
@@ -193,8 +193,8 @@ int ef_vec_bin_write(ef_vec_out *o, const ef_vec_info *info, const ef_vec_collec
 size_t ef_vec_bin_record(const ef_txn *t, uint8_t r[EF_VEC_BIN_RECORD_MAX]);
 /* The header from per-interface counts (a receiver that counted the records
  * itself, as edgeflag-host does, has no ef_vec_collect). */
-void ef_vec_bin_header_counts(uint8_t h[EF_VEC_BIN_HEADER], const ef_vec_info *info,
-                              const uint64_t counts[EF_IF_COUNT], uint32_t records_crc);
+void ef_vec_bin_header_counts(uint8_t h[EF_VEC_BIN_HEADER], const ef_vec_info *info, const uint64_t counts[EF_IF_COUNT],
+                              uint32_t records_crc);
 void ef_vec_bin_header(uint8_t h[EF_VEC_BIN_HEADER], const ef_vec_info *info, const ef_vec_collect *c,
                        uint32_t records_crc);
 
@@ -208,13 +208,13 @@ enum { EF_VEC_F_HEX = 1, EF_VEC_F_VCD = 2, EF_VEC_F_BIN = 4, EF_VEC_F_ALL = 7 };
  * only place that knows them all; the writers of `vectors`, the manifest,
  * --formats and the readers of `check` go through it. */
 typedef struct ef_vec_format {
-    const char *name;      /* "hex": --formats and the manifest's "format" */
-    unsigned bit;          /* EF_VEC_F_* */
-    int per_iface;         /* 1: one file per interface (IFACE.ROLE.hex); 0: one for all (vectors.EXT) */
-    const char *ext;       /* ".hex" */
+    const char *name; /* "hex": --formats and the manifest's "format" */
+    unsigned bit;     /* EF_VEC_F_* */
+    int per_iface;    /* 1: one file per interface (IFACE.ROLE.hex); 0: one for all (vectors.EXT) */
+    const char *ext;  /* ".hex" */
     /* Writes the file (iface: the interface of a per-interface file, else ignored); 0, or -1 out of memory. */
     int (*write)(ef_vec_out *o, const ef_vec_info *info, const ef_vec_collect *c, int iface);
-    int reader;            /* EF_VEC_FMT_* of ef_vec_read.h that reads it back; 0: none (VCD: GTKWave's) */
+    int reader; /* EF_VEC_FMT_* of ef_vec_read.h that reads it back; 0: none (VCD: GTKWave's) */
 } ef_vec_format;
 extern const ef_vec_format ef_vec_formats[EF_VEC_NFORMATS];
 /* The format called name, or NULL. */
@@ -225,17 +225,17 @@ const ef_vec_format *ef_vec_format_of_path(const char *path);
 /* One file written, as the manifest lists it. */
 typedef struct ef_vec_file {
     char name[32];
-    const char *format;    /* "hex", "vcd", "bin", "png", "pam" */
-    int iface;             /* -1: not one interface */
-    const char *role;      /* "stim", "expected", "all" */
+    const char *format; /* "hex", "vcd", "bin", "png", "pam" */
+    int iface;          /* -1: not one interface */
+    const char *role;   /* "stim", "expected", "all" */
     uint64_t count, bytes;
     char sha256[65];
 } ef_vec_file;
 #ifndef EF_NO_MANIFEST
 /* manifest.json, by json-c (docs/vectors.md section 6).  0, or -1 when out
  * of memory (nothing written then). */
-int ef_vec_manifest_write(ef_vec_out *o, const ef_vec_info *info, const ef_vec_collect *c,
-                          const ef_vec_file *files, size_t nfiles);
+int ef_vec_manifest_write(ef_vec_out *o, const ef_vec_info *info, const ef_vec_collect *c, const ef_vec_file *files,
+                          size_t nfiles);
 #endif
 
 /* ----------------------------------------------------------------- seed */

@@ -40,20 +40,20 @@ extern const uint8_t ef_vec_bin_magic[8];
 
 /* Where a reader error is.  Records are numbered from 1, like lines. */
 typedef enum ef_vec_at {
-    EF_VEC_AT_FILE = 0,   /* "FILE: msg" (cannot open, read error, ...) */
-    EF_VEC_AT_LINE,       /* "FILE:LINE:COL: msg" */
-    EF_VEC_AT_HEADER,     /* "FILE: header (byte offset O): msg" */
-    EF_VEC_AT_RECORD,     /* "FILE: record N (byte offset O): msg" */
-    EF_VEC_AT_END         /* "FILE: end of stream (byte offset O, after N records): msg" */
+    EF_VEC_AT_FILE = 0, /* "FILE: msg" (cannot open, read error, ...) */
+    EF_VEC_AT_LINE,     /* "FILE:LINE:COL: msg" */
+    EF_VEC_AT_HEADER,   /* "FILE: header (byte offset O): msg" */
+    EF_VEC_AT_RECORD,   /* "FILE: record N (byte offset O): msg" */
+    EF_VEC_AT_END       /* "FILE: end of stream (byte offset O, after N records): msg" */
 } ef_vec_at;
 
 typedef struct ef_vec_read_error {
-    ef_status status;     /* EF_ERR_SYNTAX, _RANGE, _IO, _NOMEM, _UNSUPPORTED */
+    ef_status status; /* EF_ERR_SYNTAX, _RANGE, _IO, _NOMEM, _UNSUPPORTED */
     ef_vec_at at;
     char file[512];
-    uint64_t line, col;   /* EF_VEC_AT_LINE, 1-based; col counts characters */
-    uint64_t record;      /* EF_VEC_AT_RECORD, EF_VEC_AT_END */
-    uint64_t offset;      /* EF_VEC_AT_HEADER, _RECORD, _END */
+    uint64_t line, col; /* EF_VEC_AT_LINE, 1-based; col counts characters */
+    uint64_t record;    /* EF_VEC_AT_RECORD, EF_VEC_AT_END */
+    uint64_t offset;    /* EF_VEC_AT_HEADER, _RECORD, _END */
     char msg[256];
 } ef_vec_read_error;
 
@@ -63,24 +63,24 @@ void ef_vec_read_error_format(const ef_vec_read_error *e, char *buf, size_t size
 /* One interface's transactions in file order. */
 typedef struct ef_vec_seq {
     size_t n, cap;
-    unsigned nw;          /* payload words per transaction: ceil(P / 64) */
-    uint64_t *cycle;      /* [n] */
-    uint64_t *pay;        /* [n * nw], least significant word first */
-    uint64_t *loc;        /* [n] hex: line; binary: record number */
-    uint64_t *off;        /* [n] binary: the record's byte offset; NULL for hex */
+    unsigned nw;     /* payload words per transaction: ceil(P / 64) */
+    uint64_t *cycle; /* [n] */
+    uint64_t *pay;   /* [n * nw], least significant word first */
+    uint64_t *loc;   /* [n] hex: line; binary: record number */
+    uint64_t *off;   /* [n] binary: the record's byte offset; NULL for hex */
 } ef_vec_seq;
 
 enum { EF_VEC_FMT_HEX = 1, EF_VEC_FMT_BIN = 2 };
 
 /* What one file holds. */
 typedef struct ef_vec_dump {
-    int format;           /* EF_VEC_FMT_* */
-    uint32_t mask;        /* interfaces the file records (bit i = ef_iface i) */
+    int format;    /* EF_VEC_FMT_* */
+    uint32_t mask; /* interfaces the file records (bit i = ef_iface i) */
     ef_vec_seq seq[EF_IF_COUNT];
-    int has_header;       /* hex: a `// edgeflag vectors format` line was read */
-    int32_t width, height;   /* frame size, 0 x 0 when the file does not say */
-    int samples;          /* 8/16/32, 0 when unknown */
-    int rule;             /* binary: 0 nonzero, 1 evenodd, 2 each shape's own; -1 unknown */
+    int has_header;        /* hex: a `// edgeflag vectors format` line was read */
+    int32_t width, height; /* frame size, 0 x 0 when the file does not say */
+    int samples;           /* 8/16/32, 0 when unknown */
+    int rule;              /* binary: 0 nonzero, 1 evenodd, 2 each shape's own; -1 unknown */
     uint64_t seed;
 } ef_vec_dump;
 
@@ -99,15 +99,14 @@ int ef_vec_iface_from_name(const char *path);
  * says which, or, when there is none, `hint` (-1: then the file is refused).
  * An empty file (0 bytes) is an error: even a dump of no transactions should
  * say so with a comment. */
-ef_status ef_vec_read_hex(const char *name, const uint8_t *data, size_t len, int want, int hint,
-                          ef_vec_dump *out, ef_vec_read_error *err);
+ef_status ef_vec_read_hex(const char *name, const uint8_t *data, size_t len, int want, int hint, ef_vec_dump *out,
+                          ef_vec_read_error *err);
 
 /* Binary stream (docs/vectors.md section 4): magic, version, header size,
  * header fields, header CRC, records (interface in the mask, payload length
  * of the interface, 48-bit cycle, no bits above the payload), counts, CRC of
  * the records. */
-ef_status ef_vec_read_bin(const char *name, const uint8_t *data, size_t len, ef_vec_dump *out,
-                          ef_vec_read_error *err);
+ef_status ef_vec_read_bin(const char *name, const uint8_t *data, size_t len, ef_vec_dump *out, ef_vec_read_error *err);
 
 /* Reads the file at path, streaming (a chunk at a time, so a large dump
  * costs its transactions, not its text): a name ending in ".bin" is a binary
@@ -128,17 +127,17 @@ uint32_t ef_vec_read_crc32(uint32_t crc, const void *data, size_t len);
 
 /* ------------------------------------------------------------- manifest */
 typedef struct ef_vec_manifest_file {
-    char *name;           /* a plain file name (checked: no '/', no "..") */
-    char *format;         /* "hex", "vcd", "bin", ... or NULL */
-    char *role;           /* "stim", "expected", ... or NULL */
-    int iface;            /* its "interface", or -1 */
+    char *name;   /* a plain file name (checked: no '/', no "..") */
+    char *format; /* "hex", "vcd", "bin", ... or NULL */
+    char *role;   /* "stim", "expected", ... or NULL */
+    int iface;    /* its "interface", or -1 */
     int has_count;
     uint64_t count;
-    size_t index;         /* its place in "files" (from 0), for messages: files[K] */
+    size_t index; /* its place in "files" (from 0), for messages: files[K] */
 } ef_vec_manifest_file;
 
 typedef struct ef_vec_manifest {
-    int32_t width, height;    /* 0 when absent */
+    int32_t width, height; /* 0 when absent */
     size_t nfiles;
     ef_vec_manifest_file *files;
 } ef_vec_manifest;
@@ -150,8 +149,7 @@ typedef struct ef_vec_manifest {
  * name: ...").  EF_ERR_UNSUPPORTED in a build without json-c (WITH_MANIFEST=0). */
 ef_status ef_vec_read_manifest(const char *name, const uint8_t *data, size_t len, ef_vec_manifest *out,
                                ef_vec_read_error *err);
-ef_status ef_vec_read_manifest_path(const char *path, const char *name, ef_vec_manifest *out,
-                                    ef_vec_read_error *err);
+ef_status ef_vec_read_manifest_path(const char *path, const char *name, ef_vec_manifest *out, ef_vec_read_error *err);
 void ef_vec_manifest_free(ef_vec_manifest *m);
 
 #ifdef __cplusplus

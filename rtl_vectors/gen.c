@@ -41,15 +41,12 @@ uint64_t ef_gen_case_seed(uint64_t seed, uint32_t j)
 /* ------------------------------------------------------------ categories */
 
 static const char *const cat_names[EF_GEN_NCATEGORIES] = {
-    "sample-grid", "horizontal", "vertical", "zero-length", "slope",
-    "degenerate", "coincident", "cancel", "winding-overflow", "coord-limits",
-    "outside", "clip-border", "edges-per-row", "canvas", "compositing", "random",
+    "sample-grid",   "horizontal", "vertical",         "zero-length",  "slope",   "degenerate",
+    "coincident",    "cancel",     "winding-overflow", "coord-limits", "outside", "clip-border",
+    "edges-per-row", "canvas",     "compositing",      "random",
 };
 
-const char *ef_gen_category_name(ef_gen_category c)
-{
-    return (unsigned)c < EF_GEN_NCATEGORIES ? cat_names[c] : NULL;
-}
+const char *ef_gen_category_name(ef_gen_category c) { return (unsigned)c < EF_GEN_NCATEGORIES ? cat_names[c] : NULL; }
 
 /* --------------------------------------------------------- configuration */
 
@@ -143,10 +140,7 @@ ef_status ef_gen_config_check(const ef_gen_config *c)
     return EF_OK;
 }
 
-uint32_t ef_gen_total(const ef_gen_config *c)
-{
-    return ef_gen_directed_count(c) + c->nrandom;
-}
+uint32_t ef_gen_total(const ef_gen_config *c) { return ef_gen_directed_count(c) + c->nrandom; }
 
 int ef_gen_in_shard(uint32_t k, uint32_t index, uint32_t count)
 {
@@ -247,10 +241,7 @@ void ef_genb_poly(ef_genb *b, const int32_t *xy, uint32_t n)
 
 /* ------------------------------------------------------------- one case */
 
-void ef_gen_case_free(ef_gen_case *gc)
-{
-    ef_scene_free(&gc->scene);
-}
+void ef_gen_case_free(ef_gen_case *gc) { ef_scene_free(&gc->scene); }
 
 ef_status ef_gen_build(const ef_gen_config *c, uint32_t k, ef_gen_case *out)
 {
@@ -340,7 +331,8 @@ static ef_status puts_(ef_gen_text *t, const char *s) { return put(t, s, strlen(
 #if defined(__GNUC__)
 __attribute__((format(printf, 2, 3)))
 #endif
-static ef_status putf(ef_gen_text *t, const char *fmt, ...)
+static ef_status
+putf(ef_gen_text *t, const char *fmt, ...)
 {
     char buf[1024];
     va_list ap;
@@ -429,8 +421,10 @@ static ef_status put_header(const ef_gen_config *c, const ef_gen_case *gc, ef_ge
     ef_status st;
     st = putf(t, "# edgeflag gen: generator %d, edgeflag %s (docs/gen.md)\n", EF_GEN_VERSION, EF_VERSION_STRING);
     if (!st)
-        st = putf(t, "# seed %" PRIu64 ", level %d, case %" PRIu32 " of %" PRIu32 " (shard I/N holds the cases with "
-                  "case mod N = I-1)\n", c->seed, c->level, gc->number, gc->total);
+        st = putf(t,
+                  "# seed %" PRIu64 ", level %d, case %" PRIu32 " of %" PRIu32 " (shard I/N holds the cases with "
+                  "case mod N = I-1)\n",
+                  c->seed, c->level, gc->number, gc->total);
     if (!st && gc->directed) {
         st = putf(t, "# directed case %" PRIu32 " of %" PRIu32 ": %s (%s)", gc->index, ef_gen_directed_count(c),
                   gc->name, ef_gen_category_name(gc->category));
@@ -449,7 +443,8 @@ static ef_status put_header(const ef_gen_config *c, const ef_gen_case *gc, ef_ge
     if (!st)
         st = put_expect(t, &gc->expect);
     if (!st && gc->grid)
-        st = putf(t, "# grid: built for %d samples per pixel: sample row r at y = %d r + %d, sample column k of\n"
+        st = putf(t,
+                  "# grid: built for %d samples per pixel: sample row r at y = %d r + %d, sample column k of\n"
                   "# pixel i at x = 256 i + %d k + %d (Q16.8 units); any sample count renders it\n",
                   gc->grid, 256 / gc->grid, 128 / gc->grid, 256 / gc->grid, 128 / gc->grid);
     return st;
@@ -495,13 +490,9 @@ ef_status ef_gen_format(const ef_gen_config *c, const ef_gen_case *gc, ef_gen_te
     return EF_OK;
 }
 
-void ef_gen_file_name(uint32_t k, char *buf, size_t size)
-{
-    snprintf(buf, size, "case_%06" PRIu32 ".scene", k);
-}
+void ef_gen_file_name(uint32_t k, char *buf, size_t size) { snprintf(buf, size, "case_%06" PRIu32 ".scene", k); }
 
-ef_status ef_gen_index_header(const ef_gen_config *c, uint32_t shard_index, uint32_t shard_count,
-                              ef_gen_text *t)
+ef_status ef_gen_index_header(const ef_gen_config *c, uint32_t shard_index, uint32_t shard_count, ef_gen_text *t)
 {
     ef_status st;
     char grid[16];
@@ -509,7 +500,8 @@ ef_status ef_gen_index_header(const ef_gen_config *c, uint32_t shard_index, uint
         snprintf(grid, sizeof grid, "%d", c->grid);
     else
         snprintf(grid, sizeof grid, "%s", c->level == 1 ? "16" : "8,16,32");
-    st = putf(t, "# edgeflag gen: generator %d, edgeflag %s; seed %" PRIu64 ", level %d, grid %s, %" PRIu32
+    st = putf(t,
+              "# edgeflag gen: generator %d, edgeflag %s; seed %" PRIu64 ", level %d, grid %s, %" PRIu32
               " cases (%" PRIu32 " directed, %" PRIu32 " random); shard %" PRIu32 "/%" PRIu32 "\n",
               EF_GEN_VERSION, EF_VERSION_STRING, c->seed, c->level, grid, ef_gen_total(c), ef_gen_directed_count(c),
               c->nrandom, shard_index, shard_count);

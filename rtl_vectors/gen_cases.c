@@ -20,14 +20,26 @@
  */
 #include "gen_internal.h"
 
-#define PX(v) ((int32_t)(v) * EF_GEN_PX)
+#define PX(v) ((int32_t)(v)*EF_GEN_PX)
 #define LIM EF_GEN_LIM
 
 /* What each case is known to produce (checked by tests/unit/test_gen.c). */
-#define X_ANY { EF_GEN_EXPECT_ANY, 0, 0, 0, -1 }
-#define X_EMPTY { EF_GEN_EXPECT_EMPTY, 0, 0, 0, 0 }
-#define X_FULL { EF_GEN_EXPECT_FULL, 0, 0, 0, -1 }
-#define X_PROBE(x, y, a, ov) { EF_GEN_EXPECT_PROBE, x, y, a, ov }
+#define X_ANY \
+    { \
+        EF_GEN_EXPECT_ANY, 0, 0, 0, -1 \
+    }
+#define X_EMPTY \
+    { \
+        EF_GEN_EXPECT_EMPTY, 0, 0, 0, 0 \
+    }
+#define X_FULL \
+    { \
+        EF_GEN_EXPECT_FULL, 0, 0, 0, -1 \
+    }
+#define X_PROBE(x, y, a, ov) \
+    { \
+        EF_GEN_EXPECT_PROBE, x, y, a, ov \
+    }
 
 #define RECT(b, x0, y0, x1, y1) ef_genb_rect(b, x0, y0, x1, y1)
 /* The same rectangle counter-clockwise: left edge down (dir = +1). */
@@ -131,8 +143,9 @@ static void b_sample_diag(ef_genb *b, int arg)
 static void b_staircase(ef_genb *b, int arg)
 {
     /* in half pixels: every edge horizontal or vertical */
-    static const int32_t xy[] = { 2, 2, 8, 2, 8, 7, 14, 7, 14, 12, 20, 12,
-                                  20, 17, 26, 17, 26, 22, 30, 22, 30, 30, 2, 30 };
+    static const int32_t xy[] = {
+        2, 2, 8, 2, 8, 7, 14, 7, 14, 12, 20, 12, 20, 17, 26, 17, 26, 22, 30, 22, 30, 30, 2, 30
+    };
     (void)arg;
     ef_genb_canvas(b, 16, 16);
     ef_genb_shape(b, EF_RULE_NONZERO, 200, 100, 0, 255);
@@ -184,8 +197,8 @@ static void b_vertical_subpixel(ef_genb *b, int arg)
     ef_genb_shape(b, EF_RULE_NONZERO, 255, 255, 255, 255);
     for (int k = 0; k < n; k++) {
         int32_t x = col(b, k % 8, k);
-        RECT(b, x - 1, 0, x + 1, PX(2));          /* 2 units around sample column k */
-        RECT(b, x, PX(2), x + 1, PX(4));          /* exactly [X, X + 1): that column only */
+        RECT(b, x - 1, 0, x + 1, PX(2)); /* 2 units around sample column k */
+        RECT(b, x, PX(2), x + 1, PX(4)); /* exactly [X, X + 1): that column only */
     }
 }
 
@@ -202,8 +215,8 @@ static void b_vertical_long(ef_genb *b, int arg)
 
 static void b_repeated_vertices(ef_genb *b, int arg)
 {
-    static const int32_t hex[] = { 4, 1, 4, 1, 12, 1, 12, 1, 12, 1, 15, 8, 15, 8,
-                                   12, 15, 12, 15, 4, 15, 4, 15, 1, 8, 1, 8, 4, 1 };
+    static const int32_t hex[] = { 4,  1,  4,  1,  12, 1,  12, 1,  12, 1, 15, 8, 15, 8,
+                                   12, 15, 12, 15, 4,  15, 4,  15, 1,  8, 1,  8, 4,  1 };
     (void)arg;
     ef_genb_canvas(b, 24, 16);
     ef_genb_shape(b, EF_RULE_NONZERO, 255, 0, 0, 255);
@@ -332,8 +345,8 @@ static void b_long_exact(ef_genb *b, int arg)
 
 static void b_single_point(ef_genb *b, int arg)
 {
-    static const int32_t p[][2] = { { PX(2), PX(2) }, { PX(4) + 128, PX(4) + 128 }, { 0, 0 }, { PX(8), PX(8) },
-                                    { PX(3) + 26, PX(5) + 201 }, { PX(6) + 16, PX(1) + 16 } };
+    static const int32_t p[][2] = { { PX(2), PX(2) }, { PX(4) + 128, PX(4) + 128 }, { 0, 0 },
+                                    { PX(8), PX(8) }, { PX(3) + 26, PX(5) + 201 },  { PX(6) + 16, PX(1) + 16 } };
     (void)arg;
     ef_genb_canvas(b, 8, 8);
     ef_genb_shape(b, EF_RULE_NONZERO, 255, 0, 0, 255);
@@ -429,8 +442,8 @@ static void b_shared_edges(ef_genb *b, int arg)
     ef_genb_canvas(b, 16, 8);
     ef_genb_shape(b, EF_RULE_NONZERO, 0, 128, 255, 128);
     RECT(b, PX(1), PX(1), PX(4), PX(4));
-    RECT(b, PX(4), PX(1), PX(7), PX(4));   /* shares x = 4 */
-    RECT(b, PX(1), PX(4), PX(4), PX(7));   /* shares y = 4 */
+    RECT(b, PX(4), PX(1), PX(7), PX(4)); /* shares x = 4 */
+    RECT(b, PX(1), PX(4), PX(4), PX(7)); /* shares y = 4 */
     tri(b, PX(9), PX(1), PX(15), PX(1), PX(15), PX(7));
     tri(b, PX(9), PX(1), PX(15), PX(7), PX(9), PX(7)); /* shares the diagonal */
     tri(b, PX(4) + 37, PX(4) + 11, PX(7), PX(4) + 200, PX(5) + 3, PX(7));
@@ -480,7 +493,7 @@ static void b_t_junction(ef_genb *b, int arg)
     ef_genb_canvas(b, 12, 8);
     ef_genb_shape(b, EF_RULE_NONZERO, 128, 0, 255, 255);
     RECT(b, PX(1), PX(1), PX(5), PX(7));
-    RECT(b, PX(5), PX(3), PX(9), PX(5));         /* its left edge lies inside the first's right edge */
+    RECT(b, PX(5), PX(3), PX(9), PX(5));                     /* its left edge lies inside the first's right edge */
     tri(b, PX(9), PX(1), PX(11), PX(4), PX(9), PX(7) + 128); /* its edge x = 9 contains the second's right edge */
 }
 
@@ -627,11 +640,11 @@ static void b_limit_long_edges(ef_genb *b, int arg)
     (void)arg;
     ef_genb_canvas(b, 16, 16);
     ef_genb_shape(b, EF_RULE_NONZERO, 255, 255, 0, 160);
-    tri(b, -LIM, PX(8), LIM, PX(8) + 1, LIM, LIM);     /* dX = 2^24 - 2, dY = 1 */
+    tri(b, -LIM, PX(8), LIM, PX(8) + 1, LIM, LIM); /* dX = 2^24 - 2, dY = 1 */
     ef_genb_shape(b, EF_RULE_NONZERO, 0, 255, 255, 160);
-    tri(b, PX(8), -LIM, PX(8) + 1, LIM, -LIM, LIM);    /* dX = 1, dY = 2^24 - 2 */
+    tri(b, PX(8), -LIM, PX(8) + 1, LIM, -LIM, LIM); /* dX = 1, dY = 2^24 - 2 */
     ef_genb_shape(b, EF_RULE_EVENODD, 255, 0, 255, 160);
-    tri(b, -LIM, -LIM, LIM, LIM - 1, -LIM + 1, LIM);   /* both near 2^24 */
+    tri(b, -LIM, -LIM, LIM, LIM - 1, -LIM + 1, LIM); /* both near 2^24 */
 }
 
 /* ================================================================ outside */
@@ -641,10 +654,10 @@ static void b_outside_sides(ef_genb *b, int arg)
     (void)arg;
     ef_genb_canvas(b, 16, 16);
     ef_genb_shape(b, EF_RULE_NONZERO, 255, 0, 0, 255);
-    RECT(b, -LIM, PX(2), -1, PX(14));          /* left: flags clamp to cell 0 and cancel */
-    RECT(b, PX(16), PX(2), LIM, PX(14));       /* right: from x = W on, all in the sink */
-    RECT(b, PX(2), -LIM, PX(14), 0);           /* above */
-    RECT(b, PX(2), PX(16), PX(14), LIM);       /* below */
+    RECT(b, -LIM, PX(2), -1, PX(14));    /* left: flags clamp to cell 0 and cancel */
+    RECT(b, PX(16), PX(2), LIM, PX(14)); /* right: from x = W on, all in the sink */
+    RECT(b, PX(2), -LIM, PX(14), 0);     /* above */
+    RECT(b, PX(2), PX(16), PX(14), LIM); /* below */
     ef_genb_shape(b, EF_RULE_EVENODD, 0, 255, 0, 255);
     tri(b, -LIM, -LIM, -LIM + 5, -LIM, -LIM, -LIM + 5);
     tri(b, LIM, LIM, LIM - 5, LIM, LIM, LIM - 5);
@@ -729,10 +742,10 @@ static void b_right_sink(ef_genb *b, int arg)
     (void)arg;
     ef_genb_canvas(b, 8, 4);
     ef_genb_shape(b, EF_RULE_NONZERO, 0, 255, 0, 255);
-    RECT(b, PX(7) + 128, 0, PX(11), PX(1));      /* crosses x = W */
-    RECT(b, PX(8), PX(1), PX(12), PX(2));        /* starts exactly at x = W: nothing */
-    RECT(b, PX(8) - 1, PX(2), PX(8), PX(3));     /* the last unit before x = W */
-    RECT(b, -PX(3), PX(3), 128, PX(4));          /* crosses x = 0 */
+    RECT(b, PX(7) + 128, 0, PX(11), PX(1));  /* crosses x = W */
+    RECT(b, PX(8), PX(1), PX(12), PX(2));    /* starts exactly at x = W: nothing */
+    RECT(b, PX(8) - 1, PX(2), PX(8), PX(3)); /* the last unit before x = W */
+    RECT(b, -PX(3), PX(3), 128, PX(4));      /* crosses x = 0 */
 }
 
 /* ========================================================== edges per row */
@@ -780,8 +793,8 @@ static void b_canvas_max(ef_genb *b, int arg)
     tri(b, 0, 0, PX(3), 0, 0, PX(3));
     RECT(b, PX(m - 3), PX(m - 3), PX(m), PX(m));
     ef_genb_shape(b, EF_RULE_EVENODD, 0, 0, 255, 255);
-    RECT(b, PX(m / 2) - 128, 0, PX(m / 2) + 128, PX(m));  /* every row */
-    RECT(b, 0, PX(m / 2) - 128, PX(m), PX(m / 2) + 128);  /* every column */
+    RECT(b, PX(m / 2) - 128, 0, PX(m / 2) + 128, PX(m)); /* every row */
+    RECT(b, 0, PX(m / 2) - 128, PX(m), PX(m / 2) + 128); /* every column */
 }
 
 static void b_canvas_max_full(ef_genb *b, int arg)
@@ -815,9 +828,8 @@ static void b_canvas_tall(ef_genb *b, int arg)
 
 static void b_alpha_steps(ef_genb *b, int arg)
 {
-    static const uint8_t c[8][4] = { { 255, 0, 0, 0 },     { 255, 255, 255, 1 }, { 0, 0, 0, 127 },
-                                     { 255, 255, 255, 128 }, { 1, 2, 3, 129 },  { 255, 0, 255, 254 },
-                                     { 0, 0, 0, 255 },     { 255, 255, 255, 255 } };
+    static const uint8_t c[8][4] = { { 255, 0, 0, 0 }, { 255, 255, 255, 1 }, { 0, 0, 0, 127 }, { 255, 255, 255, 128 },
+                                     { 1, 2, 3, 129 }, { 255, 0, 255, 254 }, { 0, 0, 0, 255 }, { 255, 255, 255, 255 } };
     (void)arg;
     ef_genb_canvas(b, 8, 8);
     for (int i = 0; i < 8; i++) {
@@ -834,8 +846,8 @@ static void b_many_shapes(ef_genb *b, int arg)
 {
     ef_genb_canvas(b, 4, 4);
     for (int i = 0; i < arg; i++) {
-        ef_genb_shape(b, (i & 1) ? EF_RULE_EVENODD : EF_RULE_NONZERO, (uint8_t)i, (uint8_t)(255 - i),
-                      (uint8_t)(i * 7), (uint8_t)(1 + i % 254));
+        ef_genb_shape(b, (i & 1) ? EF_RULE_EVENODD : EF_RULE_NONZERO, (uint8_t)i, (uint8_t)(255 - i), (uint8_t)(i * 7),
+                      (uint8_t)(1 + i % 254));
         RECT(b, PX(1) - (i % 5), PX(1) + (i % 3), PX(3) + (i % 7), PX(3));
     }
 }
@@ -932,8 +944,7 @@ const ef_gen_dcase ef_gen_dcases[] = {
     { "empty-shapes", EF_GEN_CAT_DEGENERATE, 0, X_ANY, b_empty_shape, 0,
       "A shape with no contours before and after a shape with one triangle: empty shapes paint "
       "nothing and change nothing." },
-    { "empty-scene", EF_GEN_CAT_DEGENERATE, NS, X_EMPTY, b_empty_scene, 0,
-      "A 5 x 3 canvas with no shapes at all." },
+    { "empty-scene", EF_GEN_CAT_DEGENERATE, NS, X_EMPTY, b_empty_scene, 0, "A 5 x 3 canvas with no shapes at all." },
 
     /* ---- coincident and overlapping edges ---- */
     { "shared-edges", EF_GEN_CAT_COINCIDENT, 0, X_PROBE(12, 4, 128, 0), b_shared_edges, 0,

@@ -16,13 +16,13 @@
 
 typedef struct ef_genb {
     ef_scene *s;
-    ef_status st;           /* the first failure; later calls do nothing */
-    ef_point *pts;          /* the contour being built */
+    ef_status st;  /* the first failure; later calls do nothing */
+    ef_point *pts; /* the contour being built */
     uint32_t n, cap;
-    int grid;               /* N of the grid-dependent cases, 0 if none */
-    int h, c;               /* 256/N and h/2 (spec 4) */
-    const uint8_t *k;       /* ef_pattern(N): k_s of sub-scanline s */
-    int swap;               /* evenodd <-> nonzero in every shape */
+    int grid;         /* N of the grid-dependent cases, 0 if none */
+    int h, c;         /* 256/N and h/2 (spec 4) */
+    const uint8_t *k; /* ef_pattern(N): k_s of sub-scanline s */
+    int swap;         /* evenodd <-> nonzero in every shape */
 } ef_genb;
 
 void ef_genb_init(ef_genb *b, ef_scene *s, int grid, int swap);
@@ -48,9 +48,9 @@ static inline int32_t ef_genb_sx(const ef_genb *b, int32_t i, int s) { return ef
 
 /* ------------------------------------------------------- directed table */
 enum {
-    EF_GEN_F_GRID = 1,      /* built for a sample grid: once per grid */
-    EF_GEN_F_LEVEL2 = 2,    /* level 2 only */
-    EF_GEN_F_NOSWAP = 4     /* no rule-swapped variant (nothing to swap, or it repeats a row) */
+    EF_GEN_F_GRID = 1,   /* built for a sample grid: once per grid */
+    EF_GEN_F_LEVEL2 = 2, /* level 2 only */
+    EF_GEN_F_NOSWAP = 4  /* no rule-swapped variant (nothing to swap, or it repeats a row) */
 };
 typedef struct ef_gen_dcase {
     const char *name;

@@ -38,19 +38,25 @@ static int32_t between(rng *r, int32_t lo, int32_t hi)
 }
 static int chance(rng *r, uint32_t percent) { return below(r, 100) < percent; }
 
-static int32_t clamp_lim(int64_t v)
-{
-    return v < -EF_GEN_LIM ? -EF_GEN_LIM : v > EF_GEN_LIM ? EF_GEN_LIM : (int32_t)v;
-}
+static int32_t clamp_lim(int64_t v) { return v < -EF_GEN_LIM ? -EF_GEN_LIM : v > EF_GEN_LIM ? EF_GEN_LIM : (int32_t)v; }
 
 /* round(16384 cos(2 pi i / 32)); sin(2 pi i / 32) = cos32[(i + 24) % 32]. */
-static const int32_t cos32[32] = { 16384,  16069,  15137,  13623,  11585,  9102,   6270,   3196,
-                                   0,      -3196,  -6270,  -9102,  -11585, -13623, -15137, -16069,
-                                   -16384, -16069, -15137, -13623, -11585, -9102,  -6270,  -3196,
-                                   0,      3196,   6270,   9102,   11585,  13623,  15137,  16069 };
+static const int32_t cos32[32] = { 16384, 16069,  15137,  13623,  11585,  9102,   6270,   3196,   0,      -3196,  -6270,
+                                   -9102, -11585, -13623, -15137, -16069, -16384, -16069, -15137, -13623, -11585, -9102,
+                                   -6270, -3196,  0,      3196,   6270,   9102,   11585,  13623,  15137,  16069 };
 
 typedef enum mode {
-    M_RANDOM, M_SNAP, M_HALFPX, M_RECTI, M_STAR, M_WALK, M_FAR, M_TINY, M_SLIVER, M_REPEAT, M_COUNT
+    M_RANDOM,
+    M_SNAP,
+    M_HALFPX,
+    M_RECTI,
+    M_STAR,
+    M_WALK,
+    M_FAR,
+    M_TINY,
+    M_SLIVER,
+    M_REPEAT,
+    M_COUNT
 } mode;
 static const char *const mode_names[M_COUNT] = { "random", "snap", "half-px", "rectilinear", "star",
                                                  "walk",   "far",  "tiny",    "sliver",      "repeat" };
@@ -60,14 +66,14 @@ static const uint32_t mode_weight[M_COUNT] = { 22, 14, 8, 10, 10, 8, 8, 6, 7, 7 
 typedef struct rcase {
     rng r;
     ef_genb *b;
-    int32_t w, h;                   /* canvas, px */
-    int32_t x0, x1, y0, y1;         /* the "near" box: canvas plus a quarter each side, Q16.8 */
-    int grid, gh, gc;               /* snapping grid, h, c */
+    int32_t w, h;           /* canvas, px */
+    int32_t x0, x1, y0, y1; /* the "near" box: canvas plus a quarter each side, Q16.8 */
+    int grid, gh, gc;       /* snapping grid, h, c */
     const uint8_t *k;
-    uint32_t points;                /* so far in this case */
-    ef_point *prev;                 /* the previous contour of the current shape */
+    uint32_t points; /* so far in this case */
+    ef_point *prev;  /* the previous contour of the current shape */
     uint32_t nprev, capprev;
-    ef_point *cur;                  /* the contour being made */
+    ef_point *cur; /* the contour being made */
     uint32_t ncur, capcur;
     ef_status st;
 } rcase;
@@ -392,8 +398,9 @@ ef_status ef_gen_random_build(uint64_t case_seed, ef_scene *s, char *desc, size_
     }
     if (!c.st)
         c.st = b.st;
-    snprintf(desc, desc_size, "Random: %" PRId32 " x %" PRId32 " canvas, %" PRIu32 " shape%s, %" PRIu32
-             " contour%s, %" PRIu32 " points; contours: ",
+    snprintf(desc, desc_size,
+             "Random: %" PRId32 " x %" PRId32 " canvas, %" PRIu32 " shape%s, %" PRIu32 " contour%s, %" PRIu32
+             " points; contours: ",
              c.w, c.h, s->nshapes, s->nshapes == 1 ? "" : "s", s->ncontours, s->ncontours == 1 ? "" : "s", s->npoints);
     desc_add(desc, desc_size, modes);
     desc_add(desc, desc_size, ".");

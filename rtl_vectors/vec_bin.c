@@ -59,8 +59,8 @@ void ef_vec_bin_header(uint8_t h[EF_VEC_BIN_HEADER], const ef_vec_info *info, co
     ef_vec_bin_header_counts(h, info, counts, records_crc);
 }
 
-void ef_vec_bin_header_counts(uint8_t h[EF_VEC_BIN_HEADER], const ef_vec_info *info,
-                              const uint64_t counts[EF_IF_COUNT], uint32_t records_crc)
+void ef_vec_bin_header_counts(uint8_t h[EF_VEC_BIN_HEADER], const ef_vec_info *info, const uint64_t counts[EF_IF_COUNT],
+                              uint32_t records_crc)
 {
     static const uint8_t magic[8] = { 0x89, 'E', 'F', 'V', '\r', '\n', 0x1a, '\n' };
     memset(h, 0, EF_VEC_BIN_HEADER);
@@ -143,7 +143,7 @@ static size_t build(heads *h, const uint8_t *ord, size_t n, uint8_t *dst)
         r[0] = (uint8_t)i;
         r[1] = (uint8_t)h->len[i];
         put64(r + 2, w[0]);
-        for (unsigned j = 0; j < h->nw[i]; j++)    /* little-endian words (a plain store on such hosts) */
+        for (unsigned j = 0; j < h->nw[i]; j++) /* little-endian words (a plain store on such hosts) */
             put64(r + 10 + 8 * j, w[1 + j]);
         r += 10u + h->len[i];
         h->at[i] = w + 1 + h->nw[i];

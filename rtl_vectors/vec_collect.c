@@ -26,9 +26,7 @@ void ef_vec_collect_init(ef_vec_collect *c, uint32_t mask)
         c->list[i].nw = (width + 63u) / 64u;
         for (unsigned w = 0; w < EF_TXN_WORDS; w++) {
             const unsigned lo = 64 * w;
-            c->allowed[i][w] = width >= lo + 64 ? ~UINT64_C(0)
-                             : width <= lo      ? 0
-                                                : (UINT64_C(1) << (width - lo)) - 1u;
+            c->allowed[i][w] = width >= lo + 64 ? ~UINT64_C(0) : width <= lo ? 0 : (UINT64_C(1) << (width - lo)) - 1u;
         }
     }
 }
@@ -105,10 +103,7 @@ ef_status ef_vec_collect_add(ef_vec_collect *c, const ef_txn *t)
     return EF_OK;
 }
 
-void ef_vec_collect_sink(void *user, const ef_txn *t)
-{
-    (void)ef_vec_collect_add(user, t);
-}
+void ef_vec_collect_sink(void *user, const ef_txn *t) { (void)ef_vec_collect_add(user, t); }
 
 size_t ef_vec_collect_count(const ef_vec_collect *c, int iface)
 {

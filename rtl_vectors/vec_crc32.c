@@ -42,14 +42,14 @@ static void build_tables(void)
 uint32_t ef_vec_crc32(uint32_t crc, const void *data, size_t n)
 {
     const unsigned char *p = data;
-    uint32_t r = crc ^ UINT32_C(0xFFFFFFFF);   /* undo the previous call's final XOR */
+    uint32_t r = crc ^ UINT32_C(0xFFFFFFFF); /* undo the previous call's final XOR */
 
     call_once(&tables_once, build_tables);
     for (; n >= 16; n -= 16, p += 16) {
         const uint32_t lo = r ^ ((uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24);
         r = T[15][lo & 0xFFu] ^ T[14][lo >> 8 & 0xFFu] ^ T[13][lo >> 16 & 0xFFu] ^ T[12][lo >> 24] ^ T[11][p[4]] ^
-            T[10][p[5]] ^ T[9][p[6]] ^ T[8][p[7]] ^ T[7][p[8]] ^ T[6][p[9]] ^ T[5][p[10]] ^ T[4][p[11]] ^
-            T[3][p[12]] ^ T[2][p[13]] ^ T[1][p[14]] ^ T[0][p[15]];
+            T[10][p[5]] ^ T[9][p[6]] ^ T[8][p[7]] ^ T[7][p[8]] ^ T[6][p[9]] ^ T[5][p[10]] ^ T[4][p[11]] ^ T[3][p[12]] ^
+            T[2][p[13]] ^ T[1][p[14]] ^ T[0][p[15]];
     }
     for (; n; n--, p++)
         r = (r >> 8) ^ T[0][(r ^ *p) & 0xFFu];

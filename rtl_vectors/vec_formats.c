@@ -27,7 +27,7 @@ static int write_vcd(ef_vec_out *o, const ef_vec_info *info, const ef_vec_collec
 static int write_bin(ef_vec_out *o, const ef_vec_info *info, const ef_vec_collect *c, int iface)
 {
     (void)iface;
-    return ef_vec_bin_write(o, info, c);   /* -1: out of memory for its record block */
+    return ef_vec_bin_write(o, info, c); /* -1: out of memory for its record block */
 }
 
 /* In writing order (the files of a run, the manifest's list). */
@@ -40,7 +40,8 @@ const ef_vec_format ef_vec_formats[EF_VEC_NFORMATS] = {
 const ef_vec_format *ef_vec_format_named(const char *name)
 {
     for (int k = 0; name && k < EF_VEC_NFORMATS; k++)
-        if (strcmp(ef_vec_formats[k].name, name) == 0) return &ef_vec_formats[k];
+        if (strcmp(ef_vec_formats[k].name, name) == 0)
+            return &ef_vec_formats[k];
     return NULL;
 }
 
@@ -49,7 +50,8 @@ const ef_vec_format *ef_vec_format_of_path(const char *path)
     size_t n = strlen(path);
     for (int k = 0; k < EF_VEC_NFORMATS; k++) {
         size_t e = strlen(ef_vec_formats[k].ext);
-        if (n >= e && strcmp(path + n - e, ef_vec_formats[k].ext) == 0) return &ef_vec_formats[k];
+        if (n >= e && strcmp(path + n - e, ef_vec_formats[k].ext) == 0)
+            return &ef_vec_formats[k];
     }
     return NULL;
 }

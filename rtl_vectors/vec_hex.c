@@ -63,7 +63,7 @@ static inline void hex16(uint64_t v, unsigned char *out)
         /* Now byte k holds digit k; >= 10 gets 'a' - 10 - '0' more. */
         const uint64_t ge10 = ((y + ones * 6u) >> 4) & ones;
         y += ones * '0' + ge10 * ('a' - 10 - '0');
-        unsigned char *o = out + 8 * half;     /* eight stores that compilers merge */
+        unsigned char *o = out + 8 * half; /* eight stores that compilers merge */
         o[0] = (unsigned char)y;
         o[1] = (unsigned char)(y >> 8);
         o[2] = (unsigned char)(y >> 16);
@@ -92,7 +92,7 @@ static void hex_lines(ef_vec_out *o, const ef_vec_collect *c, int iface)
         unsigned i = nd, b = 0;
         for (unsigned w = 0; w < nw; w++)
             word[w] = r[1 + w];
-        word[pw] |= (r[0] & (UINT64_MAX >> ps)) << ps;    /* the bits that fit; the rest go above */
+        word[pw] |= (r[0] & (UINT64_MAX >> ps)) << ps; /* the bits that fit; the rest go above */
         if (ps && ps + EF_CYCLE_BITS > 64)
             word[pw + 1] |= r[0] >> (64 - ps);
         /* Whole 64-bit words (16 digits) from the right, then the rest. */

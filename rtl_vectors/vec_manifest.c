@@ -17,7 +17,7 @@
  * have no json-c and write none.
  */
 #include "ef_vec.h"
-#include "ef_fixed.h"   /* ef_utf8_len */
+#include "ef_fixed.h" /* ef_utf8_len */
 
 #ifndef EF_NO_MANIFEST
 
@@ -169,8 +169,8 @@ static json_object *manifest_tree(const ef_vec_info *info, const ef_vec_collect 
     return top;
 }
 
-int ef_vec_manifest_write(ef_vec_out *o, const ef_vec_info *info, const ef_vec_collect *c,
-                          const ef_vec_file *files, size_t nfiles)
+int ef_vec_manifest_write(ef_vec_out *o, const ef_vec_info *info, const ef_vec_collect *c, const ef_vec_file *files,
+                          size_t nfiles)
 {
     json_object *top = manifest_tree(info, c, files, nfiles);
     size_t n = 0;

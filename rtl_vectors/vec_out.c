@@ -33,7 +33,7 @@ void ef_vec_out_init(ef_vec_out *o, FILE *fp, unsigned flags)
     o->flags = flags;
     ef_vec_sha256_init(&o->sha);
 #else
-    o->flags = flags & ~(unsigned)EF_VEC_OUT_SHA;   /* no hashing in this build */
+    o->flags = flags & ~(unsigned)EF_VEC_OUT_SHA; /* no hashing in this build */
 #endif
     o->crc = 0;
     o->bytes = 0;
@@ -65,10 +65,7 @@ void ef_vec_out_write(ef_vec_out *o, const void *data, size_t n)
     o->bytes += n;
 }
 
-void ef_vec_out_puts(ef_vec_out *o, const char *s)
-{
-    ef_vec_out_write(o, s, strlen(s));
-}
+void ef_vec_out_puts(ef_vec_out *o, const char *s) { ef_vec_out_write(o, s, strlen(s)); }
 
 size_t ef_vec_u64_dec(uint64_t v, char *buf)
 {
@@ -114,10 +111,7 @@ const char *ef_vec_rule_name(int rule)
     return rule == EF_RULE_NONZERO ? "nonzero" : rule == EF_RULE_EVENODD ? "evenodd" : "scene";
 }
 
-const char *ef_vec_role(int iface)
-{
-    return iface == EF_IF_CMD ? "stim" : "expected";
-}
+const char *ef_vec_role(int iface) { return iface == EF_IF_CMD ? "stim" : "expected"; }
 
 char *ef_vec_hex_name(int iface, char *buf, size_t size)
 {

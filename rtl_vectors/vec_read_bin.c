@@ -27,8 +27,8 @@ static uint64_t le(const uint8_t *p, unsigned n)
 /* Eight little-endian bytes, in one expression (one load where it can be). */
 static uint64_t le64(const uint8_t *p)
 {
-    return (uint64_t)p[0] | (uint64_t)p[1] << 8 | (uint64_t)p[2] << 16 | (uint64_t)p[3] << 24 |
-           (uint64_t)p[4] << 32 | (uint64_t)p[5] << 40 | (uint64_t)p[6] << 48 | (uint64_t)p[7] << 56;
+    return (uint64_t)p[0] | (uint64_t)p[1] << 8 | (uint64_t)p[2] << 16 | (uint64_t)p[3] << 24 | (uint64_t)p[4] << 32 |
+           (uint64_t)p[5] << 40 | (uint64_t)p[6] << 48 | (uint64_t)p[7] << 56;
 }
 
 static ef_status bad_magic(const uint8_t *hd, size_t got, const char *name, ef_vec_read_error *err)
@@ -50,7 +50,7 @@ static ef_status read_header(ef_vr_src *s, const char *name, ef_vec_dump *out, u
     const size_t m = got < 8 ? got : 8;
 
     if (s->ioerr)
-        return EF_ERR_IO;   /* ef_vec_read_path reports it */
+        return EF_ERR_IO; /* ef_vec_read_path reports it */
     if (got == 0)
         return ef_vr_err_bin(err, EF_ERR_SYNTAX, name, EF_VEC_AT_HEADER, 0, 0,
                              "empty file: truncated header, 0 of %u bytes", EF_VEC_BIN_HEADER_SIZE);
@@ -64,8 +64,8 @@ static ef_status read_header(ef_vr_src *s, const char *name, ef_vec_dump *out, u
         return ef_vr_err_bin(err, EF_ERR_SYNTAX, name, EF_VEC_AT_HEADER, 0, 10,
                              "header size %" PRIu64 ", version 1 has %u", le(hd + 10, 2), EF_VEC_BIN_HEADER_SIZE);
     if (got < sizeof hd)
-        return ef_vr_err_bin(err, EF_ERR_SYNTAX, name, EF_VEC_AT_HEADER, 0, got,
-                             "truncated header: %zu of %u bytes", got, EF_VEC_BIN_HEADER_SIZE);
+        return ef_vr_err_bin(err, EF_ERR_SYNTAX, name, EF_VEC_AT_HEADER, 0, got, "truncated header: %zu of %u bytes",
+                             got, EF_VEC_BIN_HEADER_SIZE);
     uint32_t hcrc = ef_vec_read_crc32(0, hd, 100);
     if (hcrc != le(hd + 100, 4))
         return ef_vr_err_bin(err, EF_ERR_SYNTAX, name, EF_VEC_AT_HEADER, 0, 100,
@@ -97,8 +97,8 @@ static ef_status read_header(ef_vr_src *s, const char *name, ef_vec_dump *out, u
         counts[i] = le(hd + 40 + 8 * (unsigned)i, 8);
         if (!(mask >> i & 1u) && counts[i])
             return ef_vr_err_bin(err, EF_ERR_SYNTAX, name, EF_VEC_AT_HEADER, 0, 40 + 8 * (uint64_t)i,
-                                 "count %" PRIu64 " for interface %s, which the mask says is not recorded",
-                                 counts[i], ef_iface_get(i)->name);
+                                 "count %" PRIu64 " for interface %s, which the mask says is not recorded", counts[i],
+                                 ef_iface_get(i)->name);
         if (mask >> i & 1u)
             ef_vr_dump_add_iface(out, i);
     }
@@ -133,8 +133,8 @@ static int read_record(ef_vr_src *s, const char *name, ef_vec_dump *out, uint64_
     const ef_iface_desc *d = ef_iface_get((int)iface);
     if (!d || !(out->mask >> iface & 1u)) {
         if (!d)
-            ef_vr_err_bin(err, EF_ERR_SYNTAX, name, EF_VEC_AT_RECORD, rec, off,
-                          "unknown interface number %u (0..%d)", iface, EF_IF_COUNT - 1);
+            ef_vr_err_bin(err, EF_ERR_SYNTAX, name, EF_VEC_AT_RECORD, rec, off, "unknown interface number %u (0..%d)",
+                          iface, EF_IF_COUNT - 1);
         else
             ef_vr_err_bin(err, EF_ERR_SYNTAX, name, EF_VEC_AT_RECORD, rec, off,
                           "interface %u (%s) is not in the header's interface mask 0x%02" PRIx32, iface, d->name,
@@ -154,14 +154,14 @@ static int read_record(ef_vr_src *s, const char *name, ef_vec_dump *out, uint64_
         m = n == 10 ? ef_vr_read(s, buf + 10, want) : 0;
     }
     if (n < 10 || m < want) {
-        ef_vr_err_bin(err, EF_ERR_SYNTAX, name, EF_VEC_AT_RECORD, rec, off, "truncated record: %zu of %u bytes",
-                      n + m, 10u + want);
+        ef_vr_err_bin(err, EF_ERR_SYNTAX, name, EF_VEC_AT_RECORD, rec, off, "truncated record: %zu of %u bytes", n + m,
+                      10u + want);
         return -1;
     }
     const uint64_t cycle = le64(pre + 2);
     if (cycle >> EF_CYCLE_BITS) {
-        ef_vr_err_bin(err, EF_ERR_RANGE, name, EF_VEC_AT_RECORD, rec, off,
-                      "cycle %" PRIu64 " does not fit %u bits", cycle, EF_CYCLE_BITS);
+        ef_vr_err_bin(err, EF_ERR_RANGE, name, EF_VEC_AT_RECORD, rec, off, "cycle %" PRIu64 " does not fit %u bits",
+                      cycle, EF_CYCLE_BITS);
         return -1;
     }
     uint64_t w[EF_TXN_WORDS] = { 0 };
@@ -198,7 +198,7 @@ ef_status ef_vr_bin(ef_vr_src *s, const char *name, ef_vec_dump *out, ef_vec_rea
     for (int i = 0; i < EF_IF_COUNT; i++)
         if (out->mask >> i & 1u)
             ef_vr_reserve(out, i, counts[i], s->size, 10u + (ef_iface_get(i)->width + 7u) / 8u, 1);
-    ef_vr_crc_start(s);     /* the records' CRC: every byte after the header */
+    ef_vr_crc_start(s); /* the records' CRC: every byte after the header */
     for (;;) {
         const uint64_t off = ef_vr_tell(s);
         r = read_record(s, name, out, rec + 1, off, err);

@@ -19,10 +19,7 @@ const uint8_t ef_vec_bin_magic[8] = { 0x89, 'E', 'F', 'V', '\r', '\n', 0x1a, '\n
 /* ---------------------------------------------------------------- CRC-32 */
 
 /* The writers' CRC-32 (vec_crc32.c): one implementation for both sides. */
-uint32_t ef_vec_read_crc32(uint32_t crc, const void *data, size_t len)
-{
-    return ef_vec_crc32(crc, data, len);
-}
+uint32_t ef_vec_read_crc32(uint32_t crc, const void *data, size_t len) { return ef_vec_crc32(crc, data, len); }
 
 /* ---------------------------------------------------------------- sources */
 
@@ -53,7 +50,7 @@ int ef_vr_refill(ef_vr_src *s)
 {
     if (!s->fp || s->ioerr)
         return -1;
-    if (s->crc_on) {                /* the chunk is used up: all of it is consumed */
+    if (s->crc_on) { /* the chunk is used up: all of it is consumed */
         s->crc = ef_vec_read_crc32(s->crc, s->p + s->crc_from, s->n - s->crc_from);
         s->crc_from = 0;
     }
@@ -131,7 +128,7 @@ void ef_vr_reserve(ef_vec_dump *d, int iface, uint64_t n, uint64_t size, unsigne
         return;
     if (grow(&q->cycle, (size_t)n, sizeof *q->cycle) || grow(&q->pay, (size_t)n * q->nw, sizeof *q->pay) ||
         grow(&q->loc, (size_t)n, sizeof *q->loc) || (with_off && grow(&q->off, (size_t)n, sizeof *q->off)))
-        return;     /* the arrays that did grow are still valid at the old capacity */
+        return; /* the arrays that did grow are still valid at the old capacity */
     q->cap = (size_t)n;
 }
 
@@ -175,10 +172,7 @@ void ef_vec_dump_txn(const ef_vec_dump *d, int iface, size_t k, ef_txn *t)
     memcpy(t->w, q->pay + k * q->nw, q->nw * sizeof *t->w);
 }
 
-unsigned ef_vr_word_digits(int iface)
-{
-    return (EF_CYCLE_BITS + ef_iface_get(iface)->width + 3u) / 4u;
-}
+unsigned ef_vr_word_digits(int iface) { return (EF_CYCLE_BITS + ef_iface_get(iface)->width + 3u) / 4u; }
 
 int ef_vec_iface_from_name(const char *path)
 {
@@ -191,7 +185,7 @@ int ef_vec_iface_from_name(const char *path)
         return -1;
     memcpy(nm, base, n);
     nm[n] = '\0';
-    return ef_iface_find(nm);     /* reads the old name `edge` too */
+    return ef_iface_find(nm); /* reads the old name `edge` too */
 }
 
 /* ---------------------------------------------------------------- errors */
@@ -204,8 +198,7 @@ void ef_vr_quote_byte(int c, char out[8])
         snprintf(out, 8, "'\\x%02x'", (unsigned)c & 0xffu);
 }
 
-static void set_common(ef_vec_read_error *e, ef_status st, const char *name, ef_vec_at at, const char *fmt,
-                       va_list ap)
+static void set_common(ef_vec_read_error *e, ef_status st, const char *name, ef_vec_at at, const char *fmt, va_list ap)
 {
     memset(e, 0, sizeof *e);
     e->status = st;
@@ -252,9 +245,7 @@ void ef_vec_read_error_format(const ef_vec_read_error *e, char *buf, size_t size
     if (!size)
         return;
     switch (e->at) {
-    case EF_VEC_AT_LINE:
-        snprintf(buf, size, "%s:%" PRIu64 ":%" PRIu64 ": %s", e->file, e->line, e->col, e->msg);
-        break;
+    case EF_VEC_AT_LINE: snprintf(buf, size, "%s:%" PRIu64 ":%" PRIu64 ": %s", e->file, e->line, e->col, e->msg); break;
     case EF_VEC_AT_HEADER:
         snprintf(buf, size, "%s: header (byte offset %" PRIu64 "): %s", e->file, e->offset, e->msg);
         break;
@@ -266,24 +257,21 @@ void ef_vec_read_error_format(const ef_vec_read_error *e, char *buf, size_t size
         snprintf(buf, size, "%s: end of stream (byte offset %" PRIu64 ", after %" PRIu64 " records): %s", e->file,
                  e->offset, e->record, e->msg);
         break;
-    default:
-        snprintf(buf, size, "%s: %s", e->file, e->msg);
-        break;
+    default: snprintf(buf, size, "%s: %s", e->file, e->msg); break;
     }
 }
 
 /* ---------------------------------------------------------------- entry points */
 
-ef_status ef_vec_read_hex(const char *name, const uint8_t *data, size_t len, int want, int hint,
-                          ef_vec_dump *out, ef_vec_read_error *err)
+ef_status ef_vec_read_hex(const char *name, const uint8_t *data, size_t len, int want, int hint, ef_vec_dump *out,
+                          ef_vec_read_error *err)
 {
     ef_vr_src s;
     ef_vr_src_mem(&s, data, len);
     return ef_vr_hex(&s, name, want, hint, out, err);
 }
 
-ef_status ef_vec_read_bin(const char *name, const uint8_t *data, size_t len, ef_vec_dump *out,
-                          ef_vec_read_error *err)
+ef_status ef_vec_read_bin(const char *name, const uint8_t *data, size_t len, ef_vec_dump *out, ef_vec_read_error *err)
 {
     ef_vr_src s;
     ef_vr_src_mem(&s, data, len);

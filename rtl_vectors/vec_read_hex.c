@@ -25,34 +25,31 @@
 
 enum { S_NORMAL, S_WORD, S_SLASH, S_LINE_COMMENT, S_BLOCK, S_BLOCK_STAR };
 
-#define CBUF 1024   /* header comment text kept; longer lines are cut (only `size` can be lost) */
+#define CBUF 1024 /* header comment text kept; longer lines are cut (only `size` can be lost) */
 
 typedef struct hex_state {
     const char *name;
-    int want, hint, iface;          /* iface: -1 until the header or the first word */
+    int want, hint, iface; /* iface: -1 until the header or the first word */
     ef_vec_dump *out;
     ef_vec_read_error *err;
-    uint64_t line, col;             /* of the current character */
+    uint64_t line, col; /* of the current character */
     int state;
-    uint64_t w[4];                  /* the word being read, 256 bits (the widest is 229) */
-    unsigned nd, maxd;              /* digits read, digits allowed */
-    uint64_t wline, wcol;           /* where it started */
-    uint64_t sline, scol;           /* the '/' or the comment start */
-    int words_seen;                 /* no header lines after the first word */
+    uint64_t w[4];        /* the word being read, 256 bits (the widest is 229) */
+    unsigned nd, maxd;    /* digits read, digits allowed */
+    uint64_t wline, wcol; /* where it started */
+    uint64_t sline, scol; /* the '/' or the comment start */
+    int words_seen;       /* no header lines after the first word */
     int saw_format;
-    char cbuf[CBUF];                /* text of the current // comment */
+    char cbuf[CBUF]; /* text of the current // comment */
     size_t clen;
     int ctrunc;
     int have_count;
     uint64_t count, count_line, count_col, nwords;
-    uint64_t size;                  /* of the input, when known: bounds the count's reservation */
-    unsigned pwidth;                /* payload bits of iface, once known */
+    uint64_t size;   /* of the input, when known: bounds the count's reservation */
+    unsigned pwidth; /* payload bits of iface, once known */
 } hex_state;
 
-static int is_hex(int c)
-{
-    return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F');
-}
+static int is_hex(int c) { return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F'); }
 
 static unsigned hex_val(int c)
 {
@@ -61,15 +58,9 @@ static unsigned hex_val(int c)
     return (unsigned)((c | 0x20) - 'a' + 10);
 }
 
-static int is_unknown_digit(int c)
-{
-    return c == 'x' || c == 'X' || c == 'z' || c == 'Z' || c == '?';
-}
+static int is_unknown_digit(int c) { return c == 'x' || c == 'X' || c == 'z' || c == 'Z' || c == '?'; }
 
-static int is_space(int c)
-{
-    return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v';
-}
+static int is_space(int c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
 
 /* Bits [lsb, lsb + n) of the 256-bit w, n <= 64.  The masks keep every shift
  * from dropping bits (the integer sanitizer flags unsigned shifts that do). */
@@ -152,8 +143,7 @@ static ef_status header_format(hex_state *h, const char *t, size_t i)
                               "the header names interface '%s', expected '%s'", nm, ef_iface_get(h->want)->name);
     if (h->saw_format && f != h->iface)
         return ef_vr_err_line(h->err, EF_ERR_SYNTAX, h->name, h->sline, text_col(h, n0),
-                              "a second header names interface '%s', the first '%s'", nm,
-                              ef_iface_get(h->iface)->name);
+                              "a second header names interface '%s', the first '%s'", nm, ef_iface_get(h->iface)->name);
     h->iface = f;
     h->saw_format = 1;
     h->out->has_header = 1;
@@ -171,10 +161,10 @@ static ef_status header_generator(hex_state *h, const char *t)
         uint64_t a, b;
         if (starts(t, &k, "size ")) {
             k0 = k;
-            if (!dec_at(t, &k, &a) || t[k] != 'x' || (k++, !dec_at(t, &k, &b)) || a < 1 || b < 1 ||
-                a > EF_MAX_CANVAS || b > EF_MAX_CANVAS || (t[k] != ';' && t[k] != '\0')) {
+            if (!dec_at(t, &k, &a) || t[k] != 'x' || (k++, !dec_at(t, &k, &b)) || a < 1 || b < 1 || a > EF_MAX_CANVAS ||
+                b > EF_MAX_CANVAS || (t[k] != ';' && t[k] != '\0')) {
                 if (h->ctrunc && !strchr(t + k0, ';'))
-                    return EF_OK;   /* cut by the comment buffer, not malformed */
+                    return EF_OK; /* cut by the comment buffer, not malformed */
                 return ef_vr_err_line(h->err, EF_ERR_SYNTAX, h->name, h->sline, text_col(h, k0),
                                       "malformed header: 'size WxH' with 1 <= W, H <= %d expected", EF_MAX_CANVAS);
             }
@@ -190,7 +180,7 @@ static ef_status header_generator(hex_state *h, const char *t)
 
 static ef_status header_line(hex_state *h)
 {
-    while (h->clen > 0 && h->cbuf[h->clen - 1] == '\r')   /* CRLF files */
+    while (h->clen > 0 && h->cbuf[h->clen - 1] == '\r') /* CRLF files */
         h->clen--;
     h->cbuf[h->clen] = '\0';
     const char *t = h->cbuf;
@@ -218,7 +208,7 @@ static ef_status header_line(hex_state *h)
                                   "malformed header: 'count N' expected");
         h->have_count = 1;
         h->count = v;
-        ef_vr_reserve(h->out, h->iface, v, h->size, 2, 0);    /* a word takes a digit and a newline at least */
+        ef_vr_reserve(h->out, h->iface, v, h->size, 2, 0); /* a word takes a digit and a newline at least */
         h->count_line = h->sline;
         h->count_col = text_col(h, i0);
     }
@@ -318,7 +308,7 @@ static ef_status step(hex_state *h, int c, uint64_t offset)
         if (is_hex(c))
             return word_digit(h, c);
         if (c == '_')
-            return EF_OK;   /* IEEE 1364: underscores separate digits */
+            return EF_OK; /* IEEE 1364: underscores separate digits */
         if (is_unknown_digit(c))
             return err_here(h, EF_ERR_SYNTAX, h->line, h->col, "unknown value (the RTL drove x or z): digit ", c);
         if (is_space(c) || c == '/') {
@@ -350,11 +340,8 @@ static ef_status step(hex_state *h, int c, uint64_t offset)
         if (c == '*')
             h->state = S_BLOCK_STAR;
         return EF_OK;
-    case S_BLOCK_STAR:
-        h->state = c == '/' ? S_NORMAL : c == '*' ? S_BLOCK_STAR : S_BLOCK;
-        return EF_OK;
-    default:
-        return normal_byte(h, c, offset);
+    case S_BLOCK_STAR: h->state = c == '/' ? S_NORMAL : c == '*' ? S_BLOCK_STAR : S_BLOCK; return EF_OK;
+    default: return normal_byte(h, c, offset);
     }
 }
 
@@ -363,9 +350,7 @@ static ef_status newline(hex_state *h)
 {
     ef_status st = EF_OK;
     switch (h->state) {
-    case S_WORD:
-        st = word_end(h);
-        break;
+    case S_WORD: st = word_end(h); break;
     case S_SLASH:
         return ef_vr_err_line(h->err, EF_ERR_SYNTAX, h->name, h->sline, h->scol,
                               "invalid character '/' (comments start with // or /*)");
@@ -374,11 +359,8 @@ static ef_status newline(hex_state *h)
         if (!h->words_seen)
             st = header_line(h);
         break;
-    case S_BLOCK_STAR:
-        h->state = S_BLOCK;
-        break;
-    default:
-        break;
+    case S_BLOCK_STAR: h->state = S_BLOCK; break;
+    default: break;
     }
     h->line++;
     h->col = 0;
@@ -393,9 +375,7 @@ static ef_status at_end(hex_state *h, uint64_t size)
                               "empty file: no header and no transactions (a dump of nothing should still hold a "
                               "comment; did the simulation end before the file was flushed?)");
     switch (h->state) {
-    case S_WORD:
-        st = word_end(h);
-        break;
+    case S_WORD: st = word_end(h); break;
     case S_SLASH:
         st = ef_vr_err_line(h->err, EF_ERR_SYNTAX, h->name, h->sline, h->scol,
                             "invalid character '/' (comments start with // or /*)");
@@ -408,8 +388,7 @@ static ef_status at_end(hex_state *h, uint64_t size)
     case S_BLOCK_STAR:
         st = ef_vr_err_line(h->err, EF_ERR_SYNTAX, h->name, h->sline, h->scol, "unterminated /* comment");
         break;
-    default:
-        break;
+    default: break;
     }
     if (st != EF_OK)
         return st;
@@ -431,12 +410,14 @@ static ef_status at_end(hex_state *h, uint64_t size)
 
 /* Digit values, 0xFF for a byte that is not a hex digit (a constant table:
  * two threads of check read two files at once). */
-#define HV(c) ((c) >= '0' && (c) <= '9'   ? (c) - '0'                                                          \
-               : (c) >= 'a' && (c) <= 'f' ? (c) - 'a' + 10                                                     \
-               : (c) >= 'A' && (c) <= 'F' ? (c) - 'A' + 10                                                     \
-                                          : 0xFF)
-#define HV16(r) HV(r + 0), HV(r + 1), HV(r + 2), HV(r + 3), HV(r + 4), HV(r + 5), HV(r + 6), HV(r + 7),         \
-                HV(r + 8), HV(r + 9), HV(r + 10), HV(r + 11), HV(r + 12), HV(r + 13), HV(r + 14), HV(r + 15)
+#define HV(c) \
+    ((c) >= '0' && (c) <= '9'   ? (c) - '0' \
+     : (c) >= 'a' && (c) <= 'f' ? (c) - 'a' + 10 \
+     : (c) >= 'A' && (c) <= 'F' ? (c) - 'A' + 10 \
+                                : 0xFF)
+#define HV16(r) \
+    HV(r + 0), HV(r + 1), HV(r + 2), HV(r + 3), HV(r + 4), HV(r + 5), HV(r + 6), HV(r + 7), HV(r + 8), HV(r + 9), \
+        HV(r + 10), HV(r + 11), HV(r + 12), HV(r + 13), HV(r + 14), HV(r + 15)
 static const uint8_t hexval[256] = {
     HV16(0x00), HV16(0x10), HV16(0x20), HV16(0x30), HV16(0x40), HV16(0x50), HV16(0x60), HV16(0x70),
     HV16(0x80), HV16(0x90), HV16(0xa0), HV16(0xb0), HV16(0xc0), HV16(0xd0), HV16(0xe0), HV16(0xf0),
@@ -457,7 +438,7 @@ static int hex8(const uint8_t *p, uint32_t *out)
     /* One expression, which compilers turn into one load where they can. */
     const uint64_t x = (uint64_t)p[0] | (uint64_t)p[1] << 8 | (uint64_t)p[2] << 16 | (uint64_t)p[3] << 24 |
                        (uint64_t)p[4] << 32 | (uint64_t)p[5] << 40 | (uint64_t)p[6] << 48 | (uint64_t)p[7] << 56;
-    if (x & high)       /* first: with a byte >= 0x80 the sums below would carry */
+    if (x & high) /* first: with a byte >= 0x80 the sums below would carry */
         return 0;
     const uint64_t lower = x | ones * 0x20u;
     const uint64_t digit = (x + ones * (0x80u - '0')) & ~(x + ones * (0x7Fu - '9'));
@@ -513,7 +494,7 @@ static int fast_line(hex_state *h, ef_vr_src *s, ef_status *st)
      * P bits, the cycle the 48 above them, and nothing may be above those. */
     const unsigned pw = h->pwidth, top = EF_CYCLE_BITS + pw, cw = pw / 64, cs = pw % 64;
     if (top % 64 && w[top / 64] >> (top % 64))
-        return 0;   /* too wide: the state machine reports it */
+        return 0; /* too wide: the state machine reports it */
     for (unsigned k = (top + 63) / 64; k < 4; k++)
         if (w[k])
             return 0;
@@ -523,7 +504,7 @@ static int fast_line(hex_state *h, ef_vr_src *s, ef_status *st)
     if (cs)
         pay[cw] = w[cw] & ((UINT64_C(1) << cs) - 1u);
     uint64_t cycle = w[cw] >> cs;
-    if (cs > 64 - EF_CYCLE_BITS)   /* masked: no bit shifted out */
+    if (cs > 64 - EF_CYCLE_BITS) /* masked: no bit shifted out */
         cycle |= (w[cw + 1] & (UINT64_MAX >> (64 - cs))) << (64 - cs);
     cycle &= (UINT64_C(1) << EF_CYCLE_BITS) - 1u;
     if (ef_vr_append(h->out, h->iface, cycle, pay, h->line, 0, 0)) {
@@ -540,7 +521,7 @@ ef_status ef_vr_hex(ef_vr_src *s, const char *name, int want, int hint, ef_vec_d
 {
     hex_state h;
     ef_status st = EF_OK;
-    unsigned cont = 0;   /* continuation bytes still due in the current UTF-8 sequence */
+    unsigned cont = 0; /* continuation bytes still due in the current UTF-8 sequence */
 
     memset(&h, 0, sizeof h);
     h.name = name;

@@ -18,25 +18,22 @@
 #define EF_VR_CHUNK 65536u
 #endif
 typedef struct ef_vr_src {
-    FILE *fp;             /* NULL: memory */
-    const uint8_t *p;     /* the current chunk (the whole buffer in memory mode) */
-    size_t n, pos;        /* its length and the read position in it */
-    uint64_t base;        /* bytes of the input before the current chunk */
-    uint8_t *buf;         /* file mode: the chunk buffer */
-    int ioerr;            /* errno of a failed read, else 0 */
-    uint64_t size;        /* the whole input's bytes when known (memory, a regular file), else 0 */
-    int crc_on;           /* taking the CRC-32 of what is consumed (ef_vr_crc_start) */
-    uint32_t crc;         /* of the bytes consumed before crc_from */
-    size_t crc_from;      /* the first byte of the current chunk not in crc */
+    FILE *fp;         /* NULL: memory */
+    const uint8_t *p; /* the current chunk (the whole buffer in memory mode) */
+    size_t n, pos;    /* its length and the read position in it */
+    uint64_t base;    /* bytes of the input before the current chunk */
+    uint8_t *buf;     /* file mode: the chunk buffer */
+    int ioerr;        /* errno of a failed read, else 0 */
+    uint64_t size;    /* the whole input's bytes when known (memory, a regular file), else 0 */
+    int crc_on;       /* taking the CRC-32 of what is consumed (ef_vr_crc_start) */
+    uint32_t crc;     /* of the bytes consumed before crc_from */
+    size_t crc_from;  /* the first byte of the current chunk not in crc */
 } ef_vr_src;
 
 void ef_vr_src_mem(ef_vr_src *s, const uint8_t *data, size_t len);
 /* Loads the next chunk; its first byte, or -1 at the end or on an error. */
 int ef_vr_refill(ef_vr_src *s);
-static inline int ef_vr_getc(ef_vr_src *s)
-{
-    return s->pos < s->n ? s->p[s->pos++] : ef_vr_refill(s);
-}
+static inline int ef_vr_getc(ef_vr_src *s) { return s->pos < s->n ? s->p[s->pos++] : ef_vr_refill(s); }
 /* The CRC-32 of every byte consumed from now on, taken a chunk at a time as
  * the chunks are used up (not a record at a time: the binary reader's
  * records are 12 to 43 bytes, too short for the CRC's fast loop), and its
@@ -49,8 +46,7 @@ size_t ef_vr_read(ef_vr_src *s, uint8_t *dst, size_t n);
 static inline uint64_t ef_vr_tell(const ef_vr_src *s) { return s->base + s->pos; }
 
 /* Parsers over a source (ef_vec_read_hex/_bin/_path call these). */
-ef_status ef_vr_hex(ef_vr_src *s, const char *name, int want, int hint, ef_vec_dump *out,
-                    ef_vec_read_error *err);
+ef_status ef_vr_hex(ef_vr_src *s, const char *name, int want, int hint, ef_vec_dump *out, ef_vec_read_error *err);
 ef_status ef_vr_bin(ef_vr_src *s, const char *name, ef_vec_dump *out, ef_vec_read_error *err);
 
 /* An empty dump of the given format (no interface yet). */
@@ -75,7 +71,7 @@ static inline int ef_vr_append(ef_vec_dump *d, int iface, uint64_t cycle, const 
     if (q->n == q->cap && ef_vr_grow(q, with_off) != 0)
         return -1;
     q->cycle[q->n] = cycle;
-    for (unsigned k = 0; k < q->nw; k++)     /* 1 to 4 words: no memcpy call */
+    for (unsigned k = 0; k < q->nw; k++) /* 1 to 4 words: no memcpy call */
         q->pay[q->n * q->nw + k] = pay[k];
     q->loc[q->n] = loc;
     if (with_off)

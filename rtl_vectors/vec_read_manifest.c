@@ -278,8 +278,7 @@ void ef_vec_manifest_free(ef_vec_manifest *m)
     memset(m, 0, sizeof *m);
 }
 
-ef_status ef_vec_read_manifest_path(const char *path, const char *name, ef_vec_manifest *out,
-                                    ef_vec_read_error *err)
+ef_status ef_vec_read_manifest_path(const char *path, const char *name, ef_vec_manifest *out, ef_vec_read_error *err)
 {
     uint8_t *buf = NULL;
     size_t n = 0;

@@ -13,7 +13,7 @@ static const char *upper(const char *s, char out[32])
 {
     size_t i = 0;
     for (; s[i] && i < 31; i++)
-        out[i] = s[i] >= 'a' && s[i] <= 'z' ? (char)(s[i] - 'a' + 'A') : s[i];   /* no locale */
+        out[i] = s[i] >= 'a' && s[i] <= 'z' ? (char)(s[i] - 'a' + 'A') : s[i]; /* no locale */
     out[i] = '\0';
     return out;
 }
@@ -61,8 +61,9 @@ static void write_vh(FILE *f)
             const ef_field_desc *fd = &d->field[k];
             const unsigned lsb = lsb_of(d, k);
             upper(fd->name, b);
-            fprintf(f, "`define EF_%s_%s_LSB %u\n`define EF_%s_%s_MSB %u\n`define EF_%s_%s_W %u\n"
-                       "`define EF_%s_%s_SIGNED %u\n",
+            fprintf(f,
+                    "`define EF_%s_%s_LSB %u\n`define EF_%s_%s_MSB %u\n`define EF_%s_%s_W %u\n"
+                    "`define EF_%s_%s_SIGNED %u\n",
                     a, b, lsb, a, b, lsb + fd->width - 1u, a, b, (unsigned)fd->width, a, b, (unsigned)fd->is_signed);
         }
     }
@@ -75,9 +76,11 @@ static void write_sv(FILE *f)
     header_comment(f, "ef_ifaces_pkg.sv");
     fputs("// The same numbers as ef_ifaces.vh, without the EF_ prefix, and one packed struct per\n"
           "// interface (most significant field first, as in the hex word's payload).\n"
-          "package ef_ifaces_pkg;\n", f);
-    fprintf(f, "  localparam int CYCLE_BITS = %d;\n  localparam int L_DEC = %d;\n  localparam int L_SETUP = %d;\n"
-               "  localparam int L_COV = %d;\n\n",
+          "package ef_ifaces_pkg;\n",
+          f);
+    fprintf(f,
+            "  localparam int CYCLE_BITS = %d;\n  localparam int L_DEC = %d;\n  localparam int L_SETUP = %d;\n"
+            "  localparam int L_COV = %d;\n\n",
             EF_CYCLE_BITS, EF_L_DEC, EF_L_SETUP, EF_L_COV);
     for (int op = EF_OP_FRAME; op <= EF_OP_FRAME_END; op++)
         fprintf(f, "  localparam logic [3:0] OP_%s = 4'd%d;\n", ef_op_name(op), op);

@@ -43,7 +43,7 @@ int ef_vec_scene_seed(const char *text, size_t len, uint64_t *seed)
         while (first < end && (text[first] == ' ' || text[first] == '\t' || text[first] == '\r'))
             first++;
         if (first < end && text[first] != '#')
-            return 0;           /* the drawing starts: the header is over */
+            return 0; /* the drawing starts: the header is over */
         if (seed_line(text + pos, end - pos, seed))
             return 1;
         pos = end + 1;
@@ -68,7 +68,7 @@ int ef_vec_file_seed(const char *path, uint64_t *seed)
     }
     n = fread(buf, 1, MAX, f);
     fclose(f);
-    if (n == MAX) {             /* a line cut at the limit could be a cut number */
+    if (n == MAX) { /* a line cut at the limit could be a cut number */
         while (n && buf[n - 1] != '\n')
             n--;
     }

@@ -10,20 +10,11 @@
 
 #ifndef EF_NO_MANIFEST
 
-void ef_vec_sha256_init(ef_vec_sha256 *s)
-{
-    sha256_init(&s->ctx);
-}
+void ef_vec_sha256_init(ef_vec_sha256 *s) { sha256_init(&s->ctx); }
 
-void ef_vec_sha256_update(ef_vec_sha256 *s, const void *data, size_t n)
-{
-    sha256_update(&s->ctx, n, data);
-}
+void ef_vec_sha256_update(ef_vec_sha256 *s, const void *data, size_t n) { sha256_update(&s->ctx, n, data); }
 
-void ef_vec_sha256_final(ef_vec_sha256 *s, uint8_t digest[32])
-{
-    sha256_digest(&s->ctx, SHA256_DIGEST_SIZE, digest);
-}
+void ef_vec_sha256_final(ef_vec_sha256 *s, uint8_t digest[32]) { sha256_digest(&s->ctx, SHA256_DIGEST_SIZE, digest); }
 
 #endif
 

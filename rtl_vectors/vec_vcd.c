@@ -32,7 +32,7 @@ static unsigned make_id(unsigned n, char *id)
 }
 
 typedef struct sig {
-    char id[8];             /* NUL-padded: copied 8 bytes at a time, idlen of them kept */
+    char id[8]; /* NUL-padded: copied 8 bytes at a time, idlen of them kept */
     unsigned idlen;
     unsigned width;
 } sig;
@@ -46,19 +46,23 @@ typedef struct iface_sigs {
     unsigned word[EF_IF_MAX_FIELDS], shift[EF_IF_MAX_FIELDS];
     uint64_t mask[EF_IF_MAX_FIELDS];
     uint64_t last[EF_IF_MAX_FIELDS];
-    int on;                 /* valid in the previous cycle */
-    const uint64_t *rec;    /* the next transaction */
-    size_t left;            /* transactions from rec on */
-    unsigned stride;        /* words per record */
+    int on;              /* valid in the previous cycle */
+    const uint64_t *rec; /* the next transaction */
+    size_t left;         /* transactions from rec on */
+    unsigned stride;     /* words per record */
 } iface_sigs;
 
 /* Eight binary digits of each byte value; one row more, so that copying 8
  * bytes from inside the last row stays in the table. */
 static const char BIN8[257][8] = {
-#define B8(b) { '0' + ((b) >> 7 & 1), '0' + ((b) >> 6 & 1), '0' + ((b) >> 5 & 1), '0' + ((b) >> 4 & 1), \
-                '0' + ((b) >> 3 & 1), '0' + ((b) >> 2 & 1), '0' + ((b) >> 1 & 1), '0' + ((b) & 1) }
-#define B16(r) B8(r + 0), B8(r + 1), B8(r + 2), B8(r + 3), B8(r + 4), B8(r + 5), B8(r + 6), B8(r + 7), \
-               B8(r + 8), B8(r + 9), B8(r + 10), B8(r + 11), B8(r + 12), B8(r + 13), B8(r + 14), B8(r + 15)
+#define B8(b) \
+    { \
+        '0' + ((b) >> 7 & 1), '0' + ((b) >> 6 & 1), '0' + ((b) >> 5 & 1), '0' + ((b) >> 4 & 1), '0' + ((b) >> 3 & 1), \
+            '0' + ((b) >> 2 & 1), '0' + ((b) >> 1 & 1), '0' + ((b)&1) \
+    }
+#define B16(r) \
+    B8(r + 0), B8(r + 1), B8(r + 2), B8(r + 3), B8(r + 4), B8(r + 5), B8(r + 6), B8(r + 7), B8(r + 8), B8(r + 9), \
+        B8(r + 10), B8(r + 11), B8(r + 12), B8(r + 13), B8(r + 14), B8(r + 15)
     B16(0x00), B16(0x10), B16(0x20), B16(0x30), B16(0x40), B16(0x50), B16(0x60), B16(0x70),
     B16(0x80), B16(0x90), B16(0xa0), B16(0xb0), B16(0xc0), B16(0xd0), B16(0xe0), B16(0xf0),
 #undef B16
@@ -100,7 +104,7 @@ static inline unsigned char *put_value(unsigned char *p, const sig *s, uint64_t 
     if (s->width == 1)
         return put_bit(p, (unsigned)(v & 1u), s);
     const unsigned nb = bit_length(v);
-    unsigned g = (nb - 1) / 8, top = nb - 8 * g;     /* g whole bytes below a top group of 1..8 digits */
+    unsigned g = (nb - 1) / 8, top = nb - 8 * g; /* g whole bytes below a top group of 1..8 digits */
     *p++ = 'b';
     memcpy(p, BIN8[v >> (8 * g) & 0xFFu] + (8 - top), 8);
     p += top;
@@ -122,7 +126,7 @@ static inline unsigned char *put_value(unsigned char *p, const sig *s, uint64_t 
  * vector move, no call) and keeps n of them: a cycle < 2^48 has at most 15. */
 typedef struct counter {
     char d[24];
-    unsigned n;             /* the digits are d[0..n) */
+    unsigned n; /* the digits are d[0..n) */
 } counter;
 
 static void counter_next(counter *k)
@@ -135,7 +139,7 @@ static void counter_next(counter *k)
     } else if (k->n == 0) { /* 0 (no digits) + 1 */
         k->d[0] = '1';
         k->n = 1;
-    } else {                /* 9..9 + 1: the loop left 0..0; 10..0, one digit more */
+    } else { /* 9..9 + 1: the loop left 0..0; 10..0, one digit more */
         k->d[0] = '1';
         k->d[k->n++] = '0';
     }
@@ -202,7 +206,7 @@ static unsigned char *changes(unsigned char *p, iface_sigs *const *on, unsigned 
 {
     for (unsigned j = 0; j < n; j++) {
         iface_sigs *s = on[j];
-        const int got = s->left && s->rec[0] == cyc;    /* at most one per cycle (collector) */
+        const int got = s->left && s->rec[0] == cyc; /* at most one per cycle (collector) */
         if (all || got != s->on)
             p = put_bit(p, (unsigned)got, &s->valid);
         if (all)
@@ -215,7 +219,7 @@ static unsigned char *changes(unsigned char *p, iface_sigs *const *on, unsigned 
             if (got) {
                 const uint64_t *w = s->rec + 1 + s->word[k];
                 v = w[0] >> s->shift[k];
-                if (s->shift[k] && s->shift[k] + s->field[k].width > 64)    /* masked: no bit shifted out */
+                if (s->shift[k] && s->shift[k] + s->field[k].width > 64) /* masked: no bit shifted out */
                     v |= (w[1] & (UINT64_MAX >> (64 - s->shift[k]))) << (64 - s->shift[k]);
                 v &= s->mask[k];
             }
@@ -236,11 +240,11 @@ void ef_vec_vcd_write(ef_vec_out *o, const ef_vec_info *info, const ef_vec_colle
     iface_sigs s[EF_IF_COUNT], *on[EF_IF_COUNT];
     sig clk;
     unsigned nid = 0, non = 0;
-    size_t room = 2 * (1 + sizeof ((counter *)0)->d + 2) + 2 * (1 + 8 + 1) + sizeof "$dumpvars\n$end\n";
+    size_t room = 2 * (1 + sizeof((counter *)0)->d + 2) + 2 * (1 + 8 + 1) + sizeof "$dumpvars\n$end\n";
     counter k;
     uint64_t cycles = info->cycles, end = ef_vec_collect_end(c, info->mask);
 
-    if (end > cycles)       /* the caller checks; never cut a transfer off */
+    if (end > cycles) /* the caller checks; never cut a transfer off */
         cycles = end;
     memset(s, 0, sizeof s);
     memset(&clk, 0, sizeof clk);
@@ -263,7 +267,7 @@ void ef_vec_vcd_write(ef_vec_out *o, const ef_vec_info *info, const ef_vec_colle
             const unsigned w = d->field[f].width;
             s[i].field[f].idlen = make_id(nid++, s[i].field[f].id);
             s[i].field[f].width = w;
-            lsb -= w;                       /* fields are most significant first */
+            lsb -= w; /* fields are most significant first */
             s[i].word[f] = lsb / 64;
             s[i].shift[f] = lsb % 64;
             s[i].mask[f] = w >= 64 ? ~UINT64_C(0) : (UINT64_C(1) << w) - 1u;

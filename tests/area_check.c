@@ -36,7 +36,9 @@
 #define W 48
 #define H 48
 
-typedef struct { double x, y; } dpt;
+typedef struct {
+    double x, y;
+} dpt;
 
 static uint64_t rng_state;
 static uint64_t rng_next(void)
@@ -86,10 +88,10 @@ static double pixel_area_at(const dpt *poly, int n, double px, double py)
 static double pixel_area(const dpt *poly, int n, int px, int py)
 {
     dpt a[64], b[64];
-    int m = clip_half(poly, n, -1, 0, -px, a);          /* x >= px */
-    m = clip_half(a, m, 1, 0, px + 1, b);               /* x <= px+1 */
-    m = clip_half(b, m, 0, -1, -py, a);                 /* y >= py */
-    m = clip_half(a, m, 0, 1, py + 1, b);               /* y <= py+1 */
+    int m = clip_half(poly, n, -1, 0, -px, a); /* x >= px */
+    m = clip_half(a, m, 1, 0, px + 1, b);      /* x <= px+1 */
+    m = clip_half(b, m, 0, -1, -py, a);        /* y >= py */
+    m = clip_half(a, m, 0, 1, py + 1, b);      /* y <= py+1 */
     return m >= 3 ? area_abs(b, m) : 0;
 }
 
@@ -119,7 +121,7 @@ static int make_convex(ef_point *pts, dpt *d)
     double ang[12];
     for (int i = 0; i < n; i++)
         ang[i] = (double)(rng_next() % 1000000) / 1000000 * 6.283185307179586;
-    for (int i = 1; i < n; i++)        /* insertion sort */
+    for (int i = 1; i < n; i++) /* insertion sort */
         for (int j = i; j > 0 && ang[j] < ang[j - 1]; j--) {
             double t = ang[j];
             ang[j] = ang[j - 1];
@@ -202,7 +204,11 @@ static void put_cov(void *u, int32_t y, int32_t x, const uint32_t sum[3])
  * bias (|mean| <= 1 level), RMS below the box's bound for N, falling with N. */
 static int filter_check(int polys, uint64_t seed)
 {
-    static const struct { const char *name; ef_filter f; ef_subpixel s; } cfs[] = {
+    static const struct {
+        const char *name;
+        ef_filter f;
+        ef_subpixel s;
+    } cfs[] = {
         { "tent", EF_FILTER_TENT, EF_SUBPIXEL_NONE },
         { "tent, RGB offsets", EF_FILTER_TENT, EF_SUBPIXEL_RGB },
         { "box, RGB offsets", EF_FILTER_BOX, EF_SUBPIXEL_RGB },
@@ -251,8 +257,9 @@ static int filter_check(int polys, uint64_t seed)
             const double mean = sum / (double)count, rms = sqrt(sum2 / (double)count);
             const double bound = cfs[k].f == EF_FILTER_TENT ? rms_bound[t] / 2 : rms_bound[t];
             const int ok = fabs(mean) <= 1.0 && rms <= bound && rms < rms_prev;
-            printf("area: %-18s N=%2d  %ld partial channel values of %d convex polygons: mean %+.3f, RMS %.3f, max %.1f levels %s\n",
-                   cfs[k].name, n, count, polys, mean, rms, maxe, ok ? "ok" : "FAILED");
+            printf(
+                "area: %-18s N=%2d  %ld partial channel values of %d convex polygons: mean %+.3f, RMS %.3f, max %.1f levels %s\n",
+                cfs[k].name, n, count, polys, mean, rms, maxe, ok ? "ok" : "FAILED");
             ok ? pass++ : fail++;
             rms_prev = rms;
         }
@@ -287,7 +294,7 @@ int main(int argc, char **argv)
         int n = 8 << t;
         rng_state = seed;
         double sum = 0, sum2 = 0, maxe = 0, cov_model = 0, cov_exact = 0;
-        double side_sum[4] = { 0, 0, 0, 0 };   /* left, right, top, bottom of the centre */
+        double side_sum[4] = { 0, 0, 0, 0 }; /* left, right, top, bottom of the centre */
         long side_n[4] = { 0, 0, 0, 0 };
         long count = 0;
         ef_ctx *ctx;
@@ -314,7 +321,7 @@ int main(int argc, char **argv)
                     total_exact += a;
                     total += (double)popcount32(m) / n;
                     if (a <= 0 || a >= 1)
-                        continue;          /* interior and exterior pixels are exact */
+                        continue; /* interior and exterior pixels are exact */
                     double e = ef_coverage_alpha(m, n) - 255 * a;
                     sum += e;
                     sum2 += e * e;
@@ -340,12 +347,15 @@ int main(int argc, char **argv)
             double m = side_sum[k] / (double)side_n[k];
             side_bias = fabs(m) > side_bias ? fabs(m) : side_bias;
         }
-        printf("area: N=%2d  %ld partial pixels of %d convex polygons (seed %llu): mean %+.3f (worst side %.3f), RMS %.3f, max %.1f levels;"
-               " covered area %.1f px^2 vs exact %.1f (%.4f%%)\n", n, count, polys, (unsigned long long)seed, mean, side_bias, rms, maxe,
-               cov_model, cov_exact, 100 * total_err);
+        printf(
+            "area: N=%2d  %ld partial pixels of %d convex polygons (seed %llu): mean %+.3f (worst side %.3f), RMS %.3f, max %.1f levels;"
+            " covered area %.1f px^2 vs exact %.1f (%.4f%%)\n",
+            n, count, polys, (unsigned long long)seed, mean, side_bias, rms, maxe, cov_model, cov_exact,
+            100 * total_err);
         int ok = fabs(mean) <= 1.0 && side_bias <= 1.0 && rms <= rms_bound[t] && rms < rms_prev && total_err <= 0.001;
-        printf("area: N=%2d %s (bounds: |mean| and each side's mean <= 1, RMS <= %.0f and below the previous N, total area within 0.1%%)\n", n,
-               ok ? "ok" : "FAILED", rms_bound[t]);
+        printf(
+            "area: N=%2d %s (bounds: |mean| and each side's mean <= 1, RMS <= %.0f and below the previous N, total area within 0.1%%)\n",
+            n, ok ? "ok" : "FAILED", rms_bound[t]);
         ok ? pass++ : fail++;
         rms_prev = rms;
     }

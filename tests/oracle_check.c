@@ -58,7 +58,7 @@ static int compare_one(tally *t, const char *what, const eo_polygon *op, int sam
         exit(2);
     }
     ef_polygon mp = { (const ef_point *)op->pts, op->start, op->ncontours };
-    t->cases++;   /* one case = one polygon at one sample count, both rules */
+    t->cases++; /* one case = one polygon at one sample count, both rules */
     for (int rule = 0; rule < 2; rule++) {
         ef_ctx *ctx;
         if (ef_ctx_create(&ctx, W, H, samples) != EF_OK) {
@@ -97,13 +97,14 @@ static int compare_one(tally *t, const char *what, const eo_polygon *op, int sam
             ef_diag d;
             ef_ctx_diag(ctx, &d);
             if (st.outside_7bit > 0 && d.winding_overflows == 0) {
-                printf("MISMATCH %s: %" PRIu64 " samples have winding outside [-64,63] but the model reported no overflow\n",
+                printf("MISMATCH %s: %" PRIu64
+                       " samples have winding outside [-64,63] but the model reported no overflow\n",
                        what, st.outside_7bit);
                 bad = 1;
             }
             if (st.max_row_crossings <= 63 && d.winding_overflows != 0) {
-                printf("MISMATCH %s: at most %" PRIu64 " crossings per row, yet %" PRIu64 " overflows reported\n",
-                       what, st.max_row_crossings, d.winding_overflows);
+                printf("MISMATCH %s: at most %" PRIu64 " crossings per row, yet %" PRIu64 " overflows reported\n", what,
+                       st.max_row_crossings, d.winding_overflows);
                 bad = 1;
             }
         }
@@ -225,13 +226,15 @@ int main(int argc, char **argv)
         if (files < 0)
             return 2;
         printf("oracle: shared SVGs: %d files, %" PRIu64 " cases (shape x 3 sample counts, both rules each), %" PRIu64
-               " failed\n", files, t.cases - c0, t.failed - f0);
+               " failed\n",
+               files, t.cases - c0, t.failed - f0);
     }
     if (count) {
         uint64_t c0 = t.cases, f0 = t.failed;
         check_random(&t, count, seed);
-        printf("oracle: random scenes: %" PRIu64 " scenes (seed %" PRIu64 "), %" PRIu64 " cases (both rules each), %"
-               PRIu64 " failed\n", count, seed, t.cases - c0, t.failed - f0);
+        printf("oracle: random scenes: %" PRIu64 " scenes (seed %" PRIu64 "), %" PRIu64
+               " cases (both rules each), %" PRIu64 " failed\n",
+               count, seed, t.cases - c0, t.failed - f0);
     }
     printf("oracle: %" PRIu64 " samples compared bit for bit\n", t.samples);
     printf("oracle: %" PRIu64 " passed, %" PRIu64 " failed\n", t.cases - t.failed, t.failed);

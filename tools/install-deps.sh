@@ -14,6 +14,8 @@ pkgs=(gcc make pkg-config libexpat1-dev libpng-dev nettle-dev libjson-c-dev zlib
 optional=()
 if [ "${1:-}" = test ] || [ "${1:-}" = portability ]; then
     pkgs+=(libcmocka-dev clang gcc-multilib libclang-rt-14-dev)
+    # make test-format: the house style is stated for Debian 12's clang-format (14)
+    pkgs+=(clang-format)
     # the vectors' real readers: Icarus and Verilator ($readmemh testbenches), GTKWave's
     # vcd2fst/fst2vcd (VCD round trip), xmllint (JUnit XML well-formedness)
     pkgs+=(iverilog verilator gtkwave libxml2-utils)

@@ -25,19 +25,19 @@ typedef struct dut_model {
     ef_board *b;
     uint32_t mask;
     int samples;
-    ef_ctx *ctx;                /* NULL outside FRAME .. FRAME_END */
+    ef_ctx *ctx; /* NULL outside FRAME .. FRAME_END */
     ef_image img;
-    ef_vec_collect col;         /* the frame's transactions (mask + cmd) */
-    uint64_t (*rx)[2];          /* the frame's received commands, as payload words */
+    ef_vec_collect col; /* the frame's transactions (mask + cmd) */
+    uint64_t (*rx)[2];  /* the frame's received commands, as payload words */
     size_t nrx, rx_cap;
     int in_shape;
     ef_rule rule;
     ef_rgba8 color;
-    ef_point *pts;              /* the shape's contours */
+    ef_point *pts; /* the shape's contours */
     uint32_t *start;
     size_t npts, pts_cap, ncont, cont_cap;
-    int open;                   /* the last contour is not closed yet */
-    ef_point last;              /* where the last edge ended */
+    int open;      /* the last contour is not closed yet */
+    ef_point last; /* where the last edge ended */
     uint64_t frames;
 } dut_model;
 
@@ -47,10 +47,7 @@ static int fail(dut_model *d, const char *why)
     return -1;
 }
 
-static int32_t s24(uint64_t v)
-{
-    return (int32_t)((uint32_t)(v & 0xffffffu) ^ 0x800000u) - 0x800000;
-}
+static int32_t s24(uint64_t v) { return (int32_t)((uint32_t)(v & 0xffffffu) ^ 0x800000u) - 0x800000; }
 
 static void end_frame_state(dut_model *d)
 {
@@ -121,7 +118,7 @@ static int edge(dut_model *d, ef_point a, ef_point z)
     }
     const ef_point first = d->pts[d->start[d->ncont - 1]];
     if (z.x == first.x && z.y == first.y)
-        d->open = 0;                     /* the closing edge */
+        d->open = 0; /* the closing edge */
     else if (add_point(d, z) != 0)
         return -1;
     d->last = z;
@@ -210,7 +207,7 @@ static int push(void *self, const uint8_t c[EF_BOARD_CMD_BYTES])
     const uint64_t fd = w0 & 0xffffff, fc = w0 >> 24 & 0xffffff;
     const uint64_t fb = (w0 >> 48 | w1 << 16) & 0xffffff, fa = w1 >> 8 & 0xffffff;
 
-    if (d->ctx && remember(d, w0, w1) != 0)   /* for the self-check */
+    if (d->ctx && remember(d, w0, w1) != 0) /* for the self-check */
         return -1;
     switch (op) {
     case EF_OP_FRAME: {
@@ -252,8 +249,7 @@ static int push(void *self, const uint8_t c[EF_BOARD_CMD_BYTES])
         if (!d->ctx || d->in_shape)
             return fail(d, "FRAME_END outside a frame or inside a shape");
         return frame_end(d);
-    default:
-        return fail(d, "unknown command op");
+    default: return fail(d, "unknown command op");
     }
 }
 
@@ -265,10 +261,7 @@ static int finish(void *self)
     return 0;
 }
 
-static void stop(void *self)
-{
-    end_frame_state(self);
-}
+static void stop(void *self) { end_frame_state(self); }
 
 static void destroy(void *self)
 {

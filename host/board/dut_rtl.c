@@ -36,39 +36,30 @@ ef_board_dut ef_board_dut_rtl(void)
     memset(&none, 0, sizeof none);
     return none;
 }
-int ef_board_dut_rtl_built(void)
-{
-    return 0;
-}
-void ef_board_dut_rtl_limits(uint32_t *w, uint32_t *h, uint32_t *e, uint32_t *s)
-{
-    *w = *h = *e = *s = 0;
-}
-const char *ef_board_dut_rtl_describe(void)
-{
-    return "not built in (`make host-rtl` builds it; it needs Verilator)";
-}
+int ef_board_dut_rtl_built(void) { return 0; }
+void ef_board_dut_rtl_limits(uint32_t *w, uint32_t *h, uint32_t *e, uint32_t *s) { *w = *h = *e = *s = 0; }
+const char *ef_board_dut_rtl_describe(void) { return "not built in (`make host-rtl` builds it; it needs Verilator)"; }
 
 #else
 
 #include "ef_trace.h"
 #include "ef_vec.h"
 
-#define HANG_CYCLES 10000000u   /* a command not taken, or a frame not drained, this long: the RTL hangs */
+#define HANG_CYCLES 10000000u /* a command not taken, or a frame not drained, this long: the RTL hangs */
 
 typedef struct dut_rtl {
     ef_board *b;
     uint32_t mask;
     int samples;
-    ef_rtl_sim *sim;            /* the model of `samples` samples */
+    ef_rtl_sim *sim; /* the model of `samples` samples */
     ef_rtl_in in;
     ef_rtl_out out;
-    uint64_t t;                 /* cycle from the frame's start */
+    uint64_t t; /* cycle from the frame's start */
     int in_frame, frame_end_seen;
-    uint32_t edges;             /* EDGE commands of the current shape */
+    uint32_t edges; /* EDGE commands of the current shape */
     uint32_t w, h;
-    uint32_t *fb;               /* the frame memory, w * h words */
-    uint8_t *rec;               /* the frame's records */
+    uint32_t *fb; /* the frame memory, w * h words */
+    uint8_t *rec; /* the frame's records */
     size_t nrec, rec_cap;
     uint64_t cycles_total;
 } dut_rtl;
@@ -122,7 +113,7 @@ static int observe(dut_rtl *d)
     }
     if (o->et_wr_valid && o->et_wr_ready) {
         const uint64_t f[] = { o->et_wr_eos, o->et_wr_slot, o->et_wr_r0, o->et_wr_r1, o->et_wr_x,
-                               o->et_wr_e, o->et_wr_qs, o->et_wr_rs, o->et_wr_dy, o->et_wr_dir };
+                               o->et_wr_e,   o->et_wr_qs,   o->et_wr_rs, o->et_wr_dy, o->et_wr_dir };
         r |= record(d, EF_IF_ET_WR, f, 10);
     }
     if (o->et_rd_valid && o->et_rd_ready) {
@@ -171,7 +162,7 @@ static int cycle(dut_rtl *d)
     if (observe(d) != 0)
         return -1;
     if (taken)
-        d->in.cmd_valid = 0;        /* the next command is offered by the next push */
+        d->in.cmd_valid = 0; /* the next command is offered by the next push */
     ef_rtl_sim_tick(d->sim);
     d->t++;
     d->cycles_total++;
@@ -316,10 +307,7 @@ static int finish(void *self)
     return 0;
 }
 
-static void stop(void *self)
-{
-    end_frame_state(self);
-}
+static void stop(void *self) { end_frame_state(self); }
 
 static void destroy(void *self)
 {
@@ -339,10 +327,7 @@ ef_board_dut ef_board_dut_rtl(void)
     return dut;
 }
 
-int ef_board_dut_rtl_built(void)
-{
-    return 1;
-}
+int ef_board_dut_rtl_built(void) { return 1; }
 
 void ef_board_dut_rtl_limits(uint32_t *w, uint32_t *h, uint32_t *e, uint32_t *s)
 {

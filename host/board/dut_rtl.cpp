@@ -30,13 +30,23 @@ struct ef_rtl_sim {
     virtual void tick() = 0;
 };
 
-namespace {
+namespace
+{
 
 template <class V> struct model : ef_rtl_sim {
     VerilatedContext ctx;
     V *v;
-    model() : v(new V(&ctx)) { v->clk = 0; v->rst = 1; v->eval(); }
-    ~model() override { v->final(); delete v; }
+    model() : v(new V(&ctx))
+    {
+        v->clk = 0;
+        v->rst = 1;
+        v->eval();
+    }
+    ~model() override
+    {
+        v->final();
+        delete v;
+    }
     void eval(const ef_rtl_in *in, ef_rtl_out *o) override
     {
         v->rst = in->rst;
@@ -79,12 +89,9 @@ template <class V> struct model : ef_rtl_sim {
     }
 };
 
-template <class V> ef_rtl_sim *make()
-{
-    return new (std::nothrow) model<V>();
-}
+template <class V> ef_rtl_sim *make() { return new (std::nothrow) model<V>(); }
 
-} // namespace
+}   // namespace
 
 extern "C" ef_rtl_sim *ef_rtl_sim_new(int ns)
 {
@@ -102,24 +109,15 @@ extern "C" ef_rtl_sim *ef_rtl_sim_new(int ns)
         default: return nullptr;
         }
     } catch (...) {
-        return nullptr;                /* std::bad_alloc from inside the model */
+        return nullptr; /* std::bad_alloc from inside the model */
     }
 }
 
-extern "C" void ef_rtl_sim_free(ef_rtl_sim *s)
-{
-    delete s;
-}
+extern "C" void ef_rtl_sim_free(ef_rtl_sim *s) { delete s; }
 
-extern "C" void ef_rtl_sim_eval(ef_rtl_sim *s, const ef_rtl_in *in, ef_rtl_out *out)
-{
-    s->eval(in, out);
-}
+extern "C" void ef_rtl_sim_eval(ef_rtl_sim *s, const ef_rtl_in *in, ef_rtl_out *out) { s->eval(in, out); }
 
-extern "C" void ef_rtl_sim_tick(ef_rtl_sim *s)
-{
-    s->tick();
-}
+extern "C" void ef_rtl_sim_tick(ef_rtl_sim *s) { s->tick(); }
 
 extern "C" uint32_t ef_rtl_sim_samples_mask(void)
 {

@@ -26,8 +26,7 @@ ef_board_dut ef_board_dut_rtl(void);
 int ef_board_dut_rtl_built(void);
 /* What identify says with the RTL DUT: its parameters (W_MAX, H_MAX,
  * E_MAX) and the sample counts it was built for (samples_mask bits). */
-void ef_board_dut_rtl_limits(uint32_t *width_max, uint32_t *height_max, uint32_t *edges_max,
-                             uint32_t *samples_mask);
+void ef_board_dut_rtl_limits(uint32_t *width_max, uint32_t *height_max, uint32_t *edges_max, uint32_t *samples_mask);
 /* "NS 8/16/32, W_MAX 1024, ..." for --version. */
 const char *ef_board_dut_rtl_describe(void);
 

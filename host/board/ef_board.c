@@ -22,9 +22,9 @@
 
 #include "ef_frame.h"
 
-#define RESULT_PAYLOAD 32768u   /* RESULT frames are cut at this payload size */
+#define RESULT_PAYLOAD 32768u /* RESULT frames are cut at this payload size */
 
-typedef struct rframe {         /* a numbered board -> host frame */
+typedef struct rframe { /* a numbered board -> host frame */
     uint8_t *bytes;
     size_t size;
 } rframe;
@@ -34,22 +34,22 @@ struct ef_board {
     ef_board_dut dut;
     int dut_started;
 
-    uint8_t *rx;                /* received bytes not yet parsed */
+    uint8_t *rx; /* received bytes not yet parsed */
     size_t rx_len, rx_cap;
-    int nak_pending;            /* a NAK was sent for rx_seq; no more until progress */
+    int nak_pending; /* a NAK was sent for rx_seq; no more until progress */
 
-    uint8_t *tx;                /* bytes for the host, from tx_head */
+    uint8_t *tx; /* bytes for the host, from tx_head */
     size_t tx_head, tx_len, tx_cap;
 
-    rframe *res;                /* numbered frames res_acked .. res_next-1 */
+    rframe *res; /* numbered frames res_acked .. res_next-1 */
     size_t res_cap;
     uint32_t res_acked, res_sent, res_next;
-    uint8_t *cur;               /* RESULT payload being filled */
+    uint8_t *cur; /* RESULT payload being filled */
     size_t cur_len;
 
     uint32_t mode, iface_mask, samples;
     uint64_t source_left;
-    int source_end;             /* source mode: 1 END taken, 2 its DONE made */
+    int source_end; /* source mode: 1 END taken, 2 its DONE made */
     uint64_t cmd_count;
     uint64_t result_bytes;
     uint32_t results_crc;
@@ -62,7 +62,7 @@ static int tx_append(ef_board *b, const uint8_t *p, size_t n)
     if (b->tx_head && b->tx_head == b->tx_len)
         b->tx_head = b->tx_len = 0;
     if (b->tx_len + n > b->tx_cap) {
-        if (b->tx_head) {       /* compact first */
+        if (b->tx_head) { /* compact first */
             memmove(b->tx, b->tx + b->tx_head, b->tx_len - b->tx_head);
             b->tx_len -= b->tx_head;
             b->tx_head = 0;
@@ -91,9 +91,9 @@ static void send_small(ef_board *b, uint8_t type, uint32_t seq, const uint8_t *p
 static void send_ack(ef_board *b)
 {
     uint8_t p[12];
-    ef_put32(p, b->st.rx_seq);         /* next expected: all below are taken */
-    ef_put32(p + 4, b->info.window);   /* credits */
-    ef_put32(p + 8, b->res_next);      /* result frames made so far */
+    ef_put32(p, b->st.rx_seq);       /* next expected: all below are taken */
+    ef_put32(p + 4, b->info.window); /* credits */
+    ef_put32(p + 8, b->res_next);    /* result frames made so far */
     send_small(b, EF_FT_ACK, 0, p, sizeof p);
 }
 
@@ -126,7 +126,7 @@ static int res_push(ef_board *b, uint8_t type, const uint8_t *payload, uint32_t 
     b->res[k].bytes = f;
     uint32_t cp;
     b->res[k].size = ef_frame_put_crc(f, type, 0, b->res_next, payload, len, &cp);
-    if (type == EF_FT_RESULT) {        /* the results' CRC for DONE, from the same pass */
+    if (type == EF_FT_RESULT) { /* the results' CRC for DONE, from the same pass */
         b->results_crc = ef_frame_crc32_combine(b->results_crc, cp, len);
         b->result_bytes += len;
     }
@@ -145,7 +145,7 @@ static void res_pump(ef_board *b)
                 const uint32_t n = b->source_left < RESULT_PAYLOAD ? (uint32_t)b->source_left : RESULT_PAYLOAD;
                 memset(b->cur, (int)(b->res_next & 0xff), n);
                 b->source_left -= n;
-                (void)res_push(b, EF_FT_RESULT, b->cur, n);   /* counts its bytes and CRC */
+                (void)res_push(b, EF_FT_RESULT, b->cur, n); /* counts its bytes and CRC */
             } else if (b->source_end == 1) {
                 uint8_t d[EF_BOARD_DONE_LEN] = { 0 };
                 ef_put64(d + 8, b->result_bytes);
@@ -235,13 +235,9 @@ static void take_data(ef_board *b, const ef_frame *f)
     b->st.input_crc = ef_frame_crc32(b->st.input_crc, f->payload, f->len);
     switch (b->mode) {
     case EF_MODE_SINK:
-    case EF_MODE_SOURCE:
-        return;
-    case EF_MODE_LOOPBACK:
-        (void)res_push(b, EF_FT_RESULT, f->payload, f->len);
-        return;
-    default:
-        break;
+    case EF_MODE_SOURCE: return;
+    case EF_MODE_LOOPBACK: (void)res_push(b, EF_FT_RESULT, f->payload, f->len); return;
+    default: break;
     }
     if (f->len % EF_BOARD_CMD_BYTES) {
         ef_board_fail(b, 3, "DATA payload is not a whole number of 13-byte commands");
@@ -257,7 +253,7 @@ static void take_data(ef_board *b, const ef_frame *f)
 static void take_end(ef_board *b)
 {
     if (b->mode == EF_MODE_SOURCE) {
-        b->source_end = 1;                /* its DONE follows the last RESULT it makes */
+        b->source_end = 1; /* its DONE follows the last RESULT it makes */
         return;
     }
     if (b->mode == EF_MODE_DUT && b->dut.finish && b->dut.finish(b->dut.self) != 0)
@@ -285,7 +281,7 @@ static void take_ackr(ef_board *b, const ef_frame *f)
     if (f->len != 4)
         return;
     uint32_t next = ef_get32(f->payload);
-    if (next > b->res_sent)      /* cannot acknowledge what was never sent */
+    if (next > b->res_sent) /* cannot acknowledge what was never sent */
         next = b->res_sent;
     while (b->res_acked < next) {
         free(b->res[0].bytes);
@@ -306,7 +302,7 @@ static int take_control(ef_board *b, const ef_frame *f, int *ack)
     if (f->type < EF_FT_IDENTIFY || f->type > EF_FT_RESET || f->len != 0)
         return 0;
     uint8_t p[EF_BOARD_IDENTIFY_LEN];
-    if (*ack)                          /* the frames before it are acknowledged before its reply */
+    if (*ack) /* the frames before it are acknowledged before its reply */
         send_ack(b), *ack = 0;
     if (f->type == EF_FT_IDENTIFY) {
         ef_board_identify(b, p);
@@ -315,7 +311,7 @@ static int take_control(ef_board *b, const ef_frame *f, int *ack)
         ef_board_status(b, p);
         send_small(b, EF_FT_STATUS | EF_FT_REPLY, f->seq, p, EF_BOARD_STATUS_LEN);
     } else {
-        clear_run(b, 1);               /* the bytes after it in rx[] belong to the new state */
+        clear_run(b, 1); /* the bytes after it in rx[] belong to the new state */
         send_small(b, EF_FT_RESET | EF_FT_REPLY, f->seq, NULL, 0);
     }
     return 1;
@@ -326,7 +322,7 @@ static void take(ef_board *b, const ef_frame *f, int *ack)
 {
     if (take_control(b, f, ack))
         return;
-    if (f->type == EF_FT_ACKR) {       /* unnumbered */
+    if (f->type == EF_FT_ACKR) { /* unnumbered */
         take_ackr(b, f);
         return;
     }
@@ -334,18 +330,18 @@ static void take(ef_board *b, const ef_frame *f, int *ack)
         send_nak(b, 2);
         return;
     }
-    if (f->seq < b->st.rx_seq) {       /* already taken: say so again */
+    if (f->seq < b->st.rx_seq) { /* already taken: say so again */
         b->st.frames_dup++;
         *ack = 1;
         return;
     }
-    if (f->seq > b->st.rx_seq) {       /* one before it is missing */
+    if (f->seq > b->st.rx_seq) { /* one before it is missing */
         b->st.frames_gap++;
         send_nak(b, 1);
         return;
     }
     if ((f->seq == 0) != (f->type == EF_FT_START) || (b->st.state != EF_BS_RUNNING && f->type != EF_FT_START)) {
-        send_nak(b, 3);                /* out of place: START first, DATA/END only while running */
+        send_nak(b, 3); /* out of place: START first, DATA/END only while running */
         return;
     }
     b->st.rx_seq++;
@@ -403,10 +399,7 @@ int ef_board_rx(ef_board *b, const uint8_t *buf, size_t len)
     return 0;
 }
 
-size_t ef_board_tx_pending(const ef_board *b)
-{
-    return b->tx_len - b->tx_head;
-}
+size_t ef_board_tx_pending(const ef_board *b) { return b->tx_len - b->tx_head; }
 
 size_t ef_board_tx(ef_board *b, uint8_t *buf, size_t cap)
 {
@@ -471,16 +464,13 @@ static void clear_run(ef_board *b, int keep_rx)
     memset(&b->st, 0, sizeof b->st);
 }
 
-void ef_board_reset(ef_board *b)
-{
-    clear_run(b, 0);
-}
+void ef_board_reset(ef_board *b) { clear_run(b, 0); }
 
 void ef_board_link_lost(ef_board *b)
 {
-    b->rx_len = 0;                     /* a frame only partly received */
-    b->tx_head = b->tx_len = 0;        /* bytes queued and not sent */
-    b->res_sent = b->res_acked;        /* unacknowledged results go out again on the next link */
+    b->rx_len = 0;              /* a frame only partly received */
+    b->tx_head = b->tx_len = 0; /* bytes queued and not sent */
+    b->res_sent = b->res_acked; /* unacknowledged results go out again on the next link */
 }
 
 void ef_board_get_stats(const ef_board *b, ef_board_stats *s)

@@ -18,15 +18,15 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#define EF_BOARD_PROTOCOL 1            /* protocol version in identify */
-#define EF_BOARD_MAGIC "EFB1"          /* first 4 bytes of every frame */
-#define EF_BOARD_HEADER 16             /* frame header bytes */
-#define EF_BOARD_TRAILER 4             /* CRC-32 after the payload */
-#define EF_BOARD_PAYLOAD_MAX 65536     /* largest payload a board must take */
+#define EF_BOARD_PROTOCOL 1        /* protocol version in identify */
+#define EF_BOARD_MAGIC "EFB1"      /* first 4 bytes of every frame */
+#define EF_BOARD_HEADER 16         /* frame header bytes */
+#define EF_BOARD_TRAILER 4         /* CRC-32 after the payload */
+#define EF_BOARD_PAYLOAD_MAX 65536 /* largest payload a board must take */
 #define EF_BOARD_FRAME_MAX (EF_BOARD_HEADER + EF_BOARD_PAYLOAD_MAX + EF_BOARD_TRAILER)
 #define EF_BOARD_IDENTIFY_LEN 48
 #define EF_BOARD_STATUS_LEN 40
-#define EF_BOARD_CMD_BYTES 13          /* one 100-bit cmd word, little-endian */
+#define EF_BOARD_CMD_BYTES 13 /* one 100-bit cmd word, little-endian */
 
 /* Frame types (docs/board.md section 2). */
 enum {
@@ -50,10 +50,7 @@ enum {
 typedef struct ef_board ef_board;
 
 /* Bit of a sample count in samples_mask: 8 -> 3, 16 -> 4, 32 -> 5, other -> 31 (never set). */
-static inline unsigned ef_board_samples_bit(unsigned n)
-{
-    return n == 8 ? 3u : n == 16 ? 4u : n == 32 ? 5u : 31u;
-}
+static inline unsigned ef_board_samples_bit(unsigned n) { return n == 8 ? 3u : n == 16 ? 4u : n == 32 ? 5u : 31u; }
 
 /* START payload (docs/board.md section 3.2), EF_BOARD_START_LEN bytes:
  * iface_mask u32, samples u32, mode u32, source_kib u32, cmd_count u64. */
@@ -74,12 +71,12 @@ enum { EF_BS_IDLE = 0, EF_BS_RUNNING = 1, EF_BS_DONE = 2, EF_BS_ERROR = 3 };
 
 /* What the board reports in identify (docs/board.md section 3). */
 typedef struct ef_board_info {
-    char serial[17];         /* NUL-terminated, at most 16 characters */
-    uint32_t capabilities;   /* EF_BOARD_CAP_* */
-    uint32_t samples_mask;   /* bit k: 2^k samples supported (bits 3, 4, 5: 8, 16, 32) */
+    char serial[17];       /* NUL-terminated, at most 16 characters */
+    uint32_t capabilities; /* EF_BOARD_CAP_* */
+    uint32_t samples_mask; /* bit k: 2^k samples supported (bits 3, 4, 5: 8, 16, 32) */
     uint32_t width_max, height_max, edges_max;
-    uint32_t window;         /* frames the host may have unacknowledged */
-    uint32_t iface_mask;     /* interfaces the board can return */
+    uint32_t window;     /* frames the host may have unacknowledged */
+    uint32_t iface_mask; /* interfaces the board can return */
 } ef_board_info;
 
 enum { EF_BOARD_CAP_RESULTS = 1, EF_BOARD_CAP_RESUME = 2, EF_BOARD_CAP_INTERNAL = 4 };
@@ -92,7 +89,7 @@ typedef struct ef_board_dut {
     int (*start)(void *self, ef_board *b, uint32_t iface_mask, int samples);
     int (*push)(void *self, const uint8_t cmd[EF_BOARD_CMD_BYTES]);
     int (*finish)(void *self);
-    void (*stop)(void *self);       /* ends the run (reset, or after DONE/ERROR is acknowledged) */
+    void (*stop)(void *self); /* ends the run (reset, or after DONE/ERROR is acknowledged) */
     void (*destroy)(void *self);
 } ef_board_dut;
 
@@ -126,7 +123,7 @@ ef_board_dut ef_board_dut_model(void);
 /* Counters for tests and the simulated board's --sim-state. */
 typedef struct ef_board_stats {
     uint64_t frames_ok, frames_bad, frames_dup, frames_gap, naks, cmds, records;
-    uint32_t input_crc;        /* CRC-32 of every accepted DATA payload, in order */
+    uint32_t input_crc; /* CRC-32 of every accepted DATA payload, in order */
     uint32_t rx_seq, res_next, res_acked;
     int state;
 } ef_board_stats;

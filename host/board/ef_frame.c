@@ -16,7 +16,7 @@
  * the host and the board engine are built natively only. */
 uint32_t ef_frame_crc32(uint32_t crc, const void *data, size_t n)
 {
-    while (n > 0) {                       /* zlib takes uInt lengths */
+    while (n > 0) { /* zlib takes uInt lengths */
         const uInt k = n > 0x40000000u ? 0x40000000u : (uInt)n;
         crc = (uint32_t)crc32(crc, data, k);
         data = (const uint8_t *)data + k;

@@ -24,14 +24,14 @@
 typedef struct ef_frame {
     uint8_t type, flags;
     uint32_t seq, len;
-    const uint8_t *payload;  /* points into the parsed buffer */
-    uint32_t payload_crc;    /* CRC-32 of the payload alone, derived from the frame's */
+    const uint8_t *payload; /* points into the parsed buffer */
+    uint32_t payload_crc;   /* CRC-32 of the payload alone, derived from the frame's */
 } ef_frame;
 
 enum {
-    EF_FRAME_OK = 0,        /* *used = the frame's size */
-    EF_FRAME_MORE = 1,      /* a frame may start here: need more bytes */
-    EF_FRAME_BAD = -1       /* not a frame here (magic, reserved, length or CRC): skip a byte */
+    EF_FRAME_OK = 0,   /* *used = the frame's size */
+    EF_FRAME_MORE = 1, /* a frame may start here: need more bytes */
+    EF_FRAME_BAD = -1  /* not a frame here (magic, reserved, length or CRC): skip a byte */
 };
 
 /* Writes a frame into out (room for EF_BOARD_HEADER + len + EF_BOARD_TRAILER
@@ -61,13 +61,7 @@ static inline uint32_t ef_get32(const uint8_t *p)
 {
     return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
 }
-static inline void ef_put64(uint8_t *p, uint64_t v)
-{
-    ef_put32(p, (uint32_t)v), ef_put32(p + 4, (uint32_t)(v >> 32));
-}
-static inline uint64_t ef_get64(const uint8_t *p)
-{
-    return (uint64_t)ef_get32(p) | (uint64_t)ef_get32(p + 4) << 32;
-}
+static inline void ef_put64(uint8_t *p, uint64_t v) { ef_put32(p, (uint32_t)v), ef_put32(p + 4, (uint32_t)(v >> 32)); }
+static inline uint64_t ef_get64(const uint8_t *p) { return (uint64_t)ef_get32(p) | (uint64_t)ef_get32(p + 4) << 32; }
 
 #endif /* EF_FRAME_H */

@@ -16,14 +16,14 @@
 
 struct ef_gpio_bus {
     ef_board *b;
-    int ctl_mode;                    /* ctl as sampled at the last edge */
-    uint8_t reply[64];               /* control view: the last request's reply */
+    int ctl_mode;      /* ctl as sampled at the last edge */
+    uint8_t reply[64]; /* control view: the last request's reply */
     size_t reply_len, reply_pos;
-    uint8_t tx[4096];                /* stream view: engine bytes not yet taken */
+    uint8_t tx[4096]; /* stream view: engine bytes not yet taken */
     size_t tx_len, tx_pos;
-    int rx_hold;                     /* a byte the engine refused waits in rx_byte */
+    int rx_hold; /* a byte the engine refused waits in rx_byte */
     uint8_t rx_byte;
-    int err;                         /* latched EF_GB_ERR_* (bus causes) */
+    int err; /* latched EF_GB_ERR_* (bus causes) */
     uint32_t rx_count, tx_count;
 };
 
@@ -35,10 +35,7 @@ ef_gpio_bus *ef_gpio_bus_new(ef_board *b)
     return g;
 }
 
-void ef_gpio_bus_free(ef_gpio_bus *g)
-{
-    free(g);
-}
+void ef_gpio_bus_free(ef_gpio_bus *g) { free(g); }
 
 static void refill(ef_gpio_bus *g)
 {
@@ -90,15 +87,13 @@ static void request(ef_gpio_bus *g, uint8_t code)
         put32(g->reply + 8, g->tx_count);
         g->reply_len = EF_GB_BUS_STATUS_LEN;
         break;
-    default:
-        g->err = g->err ? g->err : EF_GB_ERR_CONTROL;
-        break;
+    default: g->err = g->err ? g->err : EF_GB_ERR_CONTROL; break;
     }
 }
 
 static void fail(ef_gpio_bus *g, int cause)
 {
-    if (!g->err)                     /* the first cause is the one worth reporting */
+    if (!g->err) /* the first cause is the one worth reporting */
         g->err = cause;
 }
 
@@ -137,7 +132,7 @@ void ef_gpio_bus_edge(ef_gpio_bus *g, uint8_t d, unsigned ctrl)
     }
     if (valid) {
         if (g->rx_hold) {
-            fail(g, EF_GB_ERR_OVERRUN);   /* the byte is dropped: ready was low */
+            fail(g, EF_GB_ERR_OVERRUN); /* the byte is dropped: ready was low */
         } else {
             g->rx_count++;
             if (ef_board_rx(g->b, &d, 1) != 0)
@@ -164,15 +159,9 @@ void ef_gpio_bus_outputs(ef_gpio_bus *g, ef_gpio_bus_lines *out)
     out->err = g->err != EF_GB_ERR_NONE || s.state == EF_BS_ERROR;
 }
 
-uint32_t ef_gpio_bus_rx_count(const ef_gpio_bus *g)
-{
-    return g->rx_count;
-}
+uint32_t ef_gpio_bus_rx_count(const ef_gpio_bus *g) { return g->rx_count; }
 
-uint32_t ef_gpio_bus_tx_count(const ef_gpio_bus *g)
-{
-    return g->tx_count;
-}
+uint32_t ef_gpio_bus_tx_count(const ef_gpio_bus *g) { return g->tx_count; }
 
 int ef_gpio_bus_error(const ef_gpio_bus *g)
 {

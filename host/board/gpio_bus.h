@@ -22,25 +22,25 @@ enum { EF_GB_VALID = 1, EF_GB_TAKE = 2, EF_GB_CTL = 4 };
 
 /* Control request codes, sent on d0..d7 with ctl and valid high. */
 enum {
-    EF_GB_REQ_IDENTIFY = 0x01,   /* reply: EF_BOARD_IDENTIFY_LEN bytes */
-    EF_GB_REQ_STATUS = 0x02,     /* reply: EF_BOARD_STATUS_LEN bytes */
-    EF_GB_REQ_RESET = 0x03,      /* no reply: engine and bus reset */
-    EF_GB_REQ_BUS_STATUS = 0x04  /* reply: EF_GB_BUS_STATUS_LEN bytes */
+    EF_GB_REQ_IDENTIFY = 0x01,  /* reply: EF_BOARD_IDENTIFY_LEN bytes */
+    EF_GB_REQ_STATUS = 0x02,    /* reply: EF_BOARD_STATUS_LEN bytes */
+    EF_GB_REQ_RESET = 0x03,     /* no reply: engine and bus reset */
+    EF_GB_REQ_BUS_STATUS = 0x04 /* reply: EF_GB_BUS_STATUS_LEN bytes */
 };
 #define EF_GB_BUS_STATUS_LEN 12
 
 /* Latched error causes (BUS_STATUS byte 0; err high while non-zero). */
 enum {
     EF_GB_ERR_NONE = 0,
-    EF_GB_ERR_OVERRUN = 1,   /* valid at an edge while ready was low */
-    EF_GB_ERR_UNDERRUN = 2,  /* take at an edge while avail was low */
-    EF_GB_ERR_CONTROL = 3,   /* unknown request code, or valid/take on a ctl-changing edge */
-    EF_GB_ERR_ENGINE = 4     /* the engine failed (its state is ERROR) */
+    EF_GB_ERR_OVERRUN = 1,  /* valid at an edge while ready was low */
+    EF_GB_ERR_UNDERRUN = 2, /* take at an edge while avail was low */
+    EF_GB_ERR_CONTROL = 3,  /* unknown request code, or valid/take on a ctl-changing edge */
+    EF_GB_ERR_ENGINE = 4    /* the engine failed (its state is ERROR) */
 };
 
 /* What the board drives between edges. */
 typedef struct ef_gpio_bus_lines {
-    uint8_t q;                 /* q0..q7 */
+    uint8_t q; /* q0..q7 */
     uint8_t ready, avail, done, err;
 } ef_gpio_bus_lines;
 

@@ -30,21 +30,21 @@ extern "C" {
 /* ---------------------------------------------------------------- status */
 typedef enum ef_status {
     EF_OK = 0,
-    EF_ERR_NOMEM = -1,        /* allocation failed */
-    EF_ERR_ARG = -2,          /* a parameter outside its documented domain */
-    EF_ERR_LIMIT = -3,        /* a documented limit exceeded (docs/limits.md) */
-    EF_ERR_SYNTAX = -4,       /* malformed input text */
-    EF_ERR_RANGE = -5,        /* a number outside the accepted range */
-    EF_ERR_IO = -6,           /* reading or writing a file failed */
-    EF_ERR_UNSUPPORTED = -7   /* valid input using a feature we do not model */
+    EF_ERR_NOMEM = -1,      /* allocation failed */
+    EF_ERR_ARG = -2,        /* a parameter outside its documented domain */
+    EF_ERR_LIMIT = -3,      /* a documented limit exceeded (docs/limits.md) */
+    EF_ERR_SYNTAX = -4,     /* malformed input text */
+    EF_ERR_RANGE = -5,      /* a number outside the accepted range */
+    EF_ERR_IO = -6,         /* reading or writing a file failed */
+    EF_ERR_UNSUPPORTED = -7 /* valid input using a feature we do not model */
 } ef_status;
 EF_API const char *ef_strerror(ef_status s);
 
 /* ---------------------------------------------------------------- limits */
-#define EF_MAX_CANVAS 16384                 /* width and height, pixels */
-#define EF_COORD_LIMIT (1 << 23)            /* |device coordinate| < 2^23 (Q16.8) */
-#define EF_MAX_POINTS_PER_SCENE (1u << 24)  /* vertices over all contours */
-#define EF_MAX_EDGES_PER_SHAPE (1u << 22)   /* edge store of one ef_rasterize call */
+#define EF_MAX_CANVAS 16384                /* width and height, pixels */
+#define EF_COORD_LIMIT (1 << 23)           /* |device coordinate| < 2^23 (Q16.8) */
+#define EF_MAX_POINTS_PER_SCENE (1u << 24) /* vertices over all contours */
+#define EF_MAX_EDGES_PER_SHAPE (1u << 22)  /* edge store of one ef_rasterize call */
 
 /* -------------------------------------------------------- configuration */
 typedef enum ef_rule { EF_RULE_NONZERO = 0, EF_RULE_EVENODD = 1 } ef_rule;
@@ -67,7 +67,9 @@ _Static_assert(sizeof(ef_mask) * 8 >= EF_SAMPLES_MAX, "a mask holds a bit per sa
 /* ------------------------------------------------------------ geometry */
 /* A vertex in device space, Q16.8: value = x / 256 px, y grows downward,
  * pixel (i, j) is the square [i, i+1) x [j, j+1).  |x|, |y| < EF_COORD_LIMIT. */
-typedef struct ef_point { int32_t x, y; } ef_point;
+typedef struct ef_point {
+    int32_t x, y;
+} ef_point;
 
 /* A polygon: ncontours closed contours (the last point joins the first).
  * Contour c is pts[start[c] .. start[c+1]-1]; start has ncontours+1 entries. */
@@ -78,7 +80,9 @@ typedef struct ef_polygon {
 } ef_polygon;
 
 /* Straight (not premultiplied) 8-bit colour; a is the opacity. */
-typedef struct ef_rgba8 { uint8_t r, g, b, a; } ef_rgba8;
+typedef struct ef_rgba8 {
+    uint8_t r, g, b, a;
+} ef_rgba8;
 
 /* ------------------------------------------------------------- the model */
 typedef struct ef_ctx ef_ctx;
@@ -101,14 +105,13 @@ typedef void (*ef_span_fn)(void *user, int32_t y, int32_t x, int32_t len, ef_mas
 /* Rasterizes one polygon under `rule` and reports its coverage spans.
  * Returns EF_ERR_LIMIT if the polygon has more edges than the edge store
  * holds (docs/limits.md), EF_ERR_ARG on coordinates outside the range. */
-EF_API ef_status ef_rasterize(ef_ctx *ctx, const ef_polygon *poly, ef_rule rule,
-                       ef_span_fn span, void *user);
+EF_API ef_status ef_rasterize(ef_ctx *ctx, const ef_polygon *poly, ef_rule rule, ef_span_fn span, void *user);
 
 /* Diagnostics accumulated since the context was created (never change a result). */
 typedef struct ef_diag {
-    uint64_t edges_in;            /* polygon edges seen by edge setup */
-    uint64_t edges_dropped;       /* crossing no sample row inside the clip rectangle */
-    uint64_t winding_overflows;   /* 7-bit signed winding counter left [-64, 63] (spec 6.4) */
+    uint64_t edges_in;          /* polygon edges seen by edge setup */
+    uint64_t edges_dropped;     /* crossing no sample row inside the clip rectangle */
+    uint64_t winding_overflows; /* 7-bit signed winding counter left [-64, 63] (spec 6.4) */
 } ef_diag;
 EF_API void ef_ctx_diag(const ef_ctx *ctx, ef_diag *out);
 

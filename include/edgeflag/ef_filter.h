@@ -18,14 +18,14 @@ extern "C" {
 #endif
 
 typedef enum ef_filter {
-    EF_FILTER_BOX = 0,     /* one-pixel box: popcount (spec 7.3), the default */
-    EF_FILTER_TENT = 1     /* 2x2-pixel tent, weights (2k+1)(2s+1)-style over 4N^3 (spec 10.2) */
+    EF_FILTER_BOX = 0, /* one-pixel box: popcount (spec 7.3), the default */
+    EF_FILTER_TENT = 1 /* 2x2-pixel tent, weights (2k+1)(2s+1)-style over 4N^3 (spec 10.2) */
 } ef_filter;
 
 typedef enum ef_subpixel {
-    EF_SUBPIXEL_NONE = 0,  /* one coverage for all channels, the default */
-    EF_SUBPIXEL_RGB = 1,   /* R samples 85/256 px left, B 85/256 px right (spec 10.1) */
-    EF_SUBPIXEL_BGR = 2    /* B left, R right */
+    EF_SUBPIXEL_NONE = 0, /* one coverage for all channels, the default */
+    EF_SUBPIXEL_RGB = 1,  /* R samples 85/256 px left, B 85/256 px right (spec 10.1) */
+    EF_SUBPIXEL_BGR = 2   /* B left, R right */
 } ef_subpixel;
 
 /* Selects the options (EF_ERR_ARG for values outside the enums, EF_ERR_NOMEM).

@@ -26,8 +26,8 @@ typedef struct ef_error {
 /* Formats "file:line:col: message" into buf (always NUL-terminated). */
 EF_API void ef_error_format(const ef_error *e, char *buf, size_t size);
 /* Sets e's fields (printf-style message); returns status for tail calls. */
-EF_API ef_status ef_error_set(ef_error *e, ef_status status, const char *file, uint32_t line,
-                       uint32_t col, const char *fmt, ...)
+EF_API ef_status ef_error_set(ef_error *e, ef_status status, const char *file, uint32_t line, uint32_t col,
+                              const char *fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 6, 7)))
 #endif
@@ -38,7 +38,7 @@ EF_API ef_status ef_error_set(ef_error *e, ef_status status, const char *file, u
 typedef void (*ef_note_fn)(void *user, const char *file, uint32_t line, uint32_t col, const char *msg);
 
 typedef struct ef_load_opts {
-    int32_t fit_width, fit_height;  /* 0, 0: the file's own size; else fit into WxH */
+    int32_t fit_width, fit_height; /* 0, 0: the file's own size; else fit into WxH */
     ef_note_fn note;
     void *note_user;
 } ef_load_opts;
@@ -49,9 +49,9 @@ typedef struct ef_load_opts {
  * scene is left empty. */
 EF_API ef_status ef_scene_load_file(const char *path, const ef_load_opts *opts, ef_scene *out, ef_error *err);
 EF_API ef_status ef_scene_load_svg(const char *name, const char *data, size_t len, const ef_load_opts *opts,
-                            ef_scene *out, ef_error *err);
+                                   ef_scene *out, ef_error *err);
 EF_API ef_status ef_scene_load_text(const char *name, const char *data, size_t len, const ef_load_opts *opts,
-                             ef_scene *out, ef_error *err);
+                                    ef_scene *out, ef_error *err);
 
 #ifdef __cplusplus
 }

@@ -25,25 +25,25 @@ extern "C" {
 
 /* The interfaces, in pipeline order (docs/microarch.md section 3). */
 typedef enum ef_iface {
-    EF_IF_CMD = 0,   /* host -> DEC: commands */
-    EF_IF_SEG,       /* DEC -> SETUP: polygon edges (`seg`; `edge` is a Verilog keyword) */
-    EF_IF_ET_WR,     /* SETUP -> ETM: edge records */
-    EF_IF_ET_RD,     /* ETM -> AET: activations */
-    EF_IF_PLOT,      /* PLOT -> SLB: one sample of one edge */
-    EF_IF_SPAN,      /* FILL -> COV: coverage spans */
-    EF_IF_PIX,       /* COV -> memory: blended pixels */
+    EF_IF_CMD = 0, /* host -> DEC: commands */
+    EF_IF_SEG,     /* DEC -> SETUP: polygon edges (`seg`; `edge` is a Verilog keyword) */
+    EF_IF_ET_WR,   /* SETUP -> ETM: edge records */
+    EF_IF_ET_RD,   /* ETM -> AET: activations */
+    EF_IF_PLOT,    /* PLOT -> SLB: one sample of one edge */
+    EF_IF_SPAN,    /* FILL -> COV: coverage spans */
+    EF_IF_PIX,     /* COV -> memory: blended pixels */
     EF_IF_COUNT
 } ef_iface;
 #define EF_IF_ALL ((1u << EF_IF_COUNT) - 1u)
 
 #define EF_IF_MAX_FIELDS 10
-#define EF_TXN_WORDS 4      /* payload up to 256 bits */
-#define EF_CYCLE_BITS 48    /* cycle stamps are < 2^48 */
+#define EF_TXN_WORDS 4   /* payload up to 256 bits */
+#define EF_CYCLE_BITS 48 /* cycle stamps are < 2^48 */
 
 /* Reference schedule latencies (docs/microarch.md section 4). */
-#define EF_L_DEC 1          /* cmd -> seg */
-#define EF_L_SETUP 33       /* seg -> et_wr: 2 + 30 divider stages + 1 */
-#define EF_L_COV 3          /* span accepted -> first pix */
+#define EF_L_DEC 1    /* cmd -> seg */
+#define EF_L_SETUP 33 /* seg -> et_wr: 2 + 30 divider stages + 1 */
+#define EF_L_COV 3    /* span accepted -> first pix */
 
 /* Commands (the `op` field of cmd). */
 enum { EF_OP_FRAME = 1, EF_OP_SHAPE = 2, EF_OP_EDGE = 3, EF_OP_SHAPE_END = 4, EF_OP_FRAME_END = 5 };
@@ -52,16 +52,16 @@ EF_API const char *ef_op_name(int op);
 
 typedef struct ef_field_desc {
     const char *name;
-    uint8_t width;          /* bits, 1..32 */
-    uint8_t is_signed;      /* two's complement */
+    uint8_t width;     /* bits, 1..32 */
+    uint8_t is_signed; /* two's complement */
 } ef_field_desc;
 
 typedef struct ef_iface_desc {
-    const char *name;       /* "plot" */
-    const char *from, *to;  /* producing and consuming block */
-    uint16_t width;         /* payload bits: the sum of the field widths */
+    const char *name;      /* "plot" */
+    const char *from, *to; /* producing and consuming block */
+    uint16_t width;        /* payload bits: the sum of the field widths */
     uint8_t nfields;
-    ef_field_desc field[EF_IF_MAX_FIELDS];  /* most significant first */
+    ef_field_desc field[EF_IF_MAX_FIELDS]; /* most significant first */
 } ef_iface_desc;
 
 /* NULL when iface is out of range. */

@@ -38,7 +38,8 @@
 
 bool ef_in_hypot_q32(ef_q32 a, ef_q32 b, ef_q32 *out)
 {
-    if (a.v == INT64_MIN || b.v == INT64_MIN) return false;
+    if (a.v == INT64_MIN || b.v == INT64_MIN)
+        return false;
     int64_t x = a.v < 0 ? -a.v : a.v, y = b.v < 0 ? -b.v : b.v;
     int64_t m = x > y ? x : y, s = x > y ? y : x;
     if (m == 0) {
@@ -47,7 +48,8 @@ bool ef_in_hypot_q32(ef_q32 a, ef_q32 b, ef_q32 *out)
     }
     /* m sqrt(1 + (s/m)^2): every intermediate stays in [0, 2]. */
     ef_q32 r, r2, root;
-    if (!ef_q32_div(ef_q32_raw(s), ef_q32_raw(m), &r) || !ef_q32_mul(r, r, &r2)) return false;
+    if (!ef_q32_div(ef_q32_raw(s), ef_q32_raw(m), &r) || !ef_q32_mul(r, r, &r2))
+        return false;
     root = ef_q32_sqrt(ef_q32_raw(EF_Q32_ONE + r2.v));
     return ef_q32_mul(ef_q32_raw(m), root, out);
 }
@@ -72,7 +74,8 @@ ef_status ef_in_build_ellarc(ef_in_builder *b, const ef_in_ellarc *arc, ef_error
     E.c.v = -E.c.v;
     E.e = arc->cx;
     E.f = arc->cy;
-    if (ef_in_affine_mul(&b->ctm, &E, &A) != EF_OK) return range_error(err);
+    if (ef_in_affine_mul(&b->ctm, &E, &A) != EF_OK)
+        return range_error(err);
 
     /* K / 2 (Q31.32 px) from the row sums, halved so they fit int64. */
     uint64_t kx = uabs(A.a.v) + uabs(A.c.v), ky = uabs(A.b.v) + uabs(A.d.v);
@@ -83,10 +86,12 @@ ef_status ef_in_build_ellarc(ef_in_builder *b, const ef_in_ellarc *arc, ef_error
     int64_t s2 = 2 * (ef_q32_sqrt(khalf).v + 1);
     /* theta * 2^32 <= 2 * (355/113) * delta, rounded up. */
     int64_t theta = ef_ceildiv_i64(710 * arc->delta, 113);
-    ef_i128 p = ef_mul_i64_wide(theta, s2);            /* < 2^35 * 2^50 */
+    ef_i128 p = ef_mul_i64_wide(theta, s2); /* < 2^35 * 2^50 */
     uint64_t n = (uint64_t)p.hi + (p.lo != 0 ? 1u : 0u);
-    if (n < 1) n = 1;
-    if (n > EF_IN_ARC_MAX_SEGMENTS) n = EF_IN_ARC_MAX_SEGMENTS;
+    if (n < 1)
+        n = 1;
+    if (n > EF_IN_ARC_MAX_SEGMENTS)
+        n = EF_IN_ARC_MAX_SEGMENTS;
 
     for (uint64_t i = 1; i < n; i++) {
         uint32_t step = (uint32_t)(((uint64_t)arc->delta * i + n / 2) / n);
@@ -96,7 +101,8 @@ ef_status ef_in_build_ellarc(ef_in_builder *b, const ef_in_ellarc *arc, ef_error
         ef_sincos(t, &s, &c);
         if (ef_in_affine_apply_dev(&A, ef_q32_raw(ef_shl_i64(c, 2)), ef_q32_raw(ef_shl_i64(s, 2)), &q) != EF_OK)
             return range_error(err);
-        if ((st = ef_in_build_point(b, q, err)) != EF_OK) return st;
+        if ((st = ef_in_build_point(b, q, err)) != EF_OK)
+            return st;
     }
     return ef_in_build_line(b, arc->ex, arc->ey, err);
 }
@@ -114,15 +120,18 @@ static ef_angle atan2_wide(ef_i128 py, ef_i128 px)
     return ef_atan2(ef_wrap_i64(py.lo), ef_wrap_i64(px.lo));
 }
 
-ef_status ef_in_build_svg_arc(ef_in_builder *b, ef_q32 x0, ef_q32 y0, ef_q32 rx, ef_q32 ry, ef_q32 phi_deg,
-                              bool large, bool sweep, ef_q32 x, ef_q32 y, ef_error *err)
+ef_status ef_in_build_svg_arc(ef_in_builder *b, ef_q32 x0, ef_q32 y0, ef_q32 rx, ef_q32 ry, ef_q32 phi_deg, bool large,
+                              bool sweep, ef_q32 x, ef_q32 y, ef_error *err)
 {
     const ef_q32 zero = ef_q32_raw(0), one = ef_q32_raw(EF_Q32_ONE);
-    if (x0.v == x.v && y0.v == y.v) return EF_OK;                 /* F.6.2: omitted */
-    if (rx.v == INT64_MIN || ry.v == INT64_MIN) return range_error(err);
-    rx.v = rx.v < 0 ? -rx.v : rx.v;                                /* F.6.6: signs dropped */
+    if (x0.v == x.v && y0.v == y.v)
+        return EF_OK; /* F.6.2: omitted */
+    if (rx.v == INT64_MIN || ry.v == INT64_MIN)
+        return range_error(err);
+    rx.v = rx.v < 0 ? -rx.v : rx.v; /* F.6.6: signs dropped */
     ry.v = ry.v < 0 ? -ry.v : ry.v;
-    if (rx.v == 0 || ry.v == 0) return ef_in_build_line(b, x, y, err);  /* F.6.2: a line */
+    if (rx.v == 0 || ry.v == 0)
+        return ef_in_build_line(b, x, y, err); /* F.6.2: a line */
 
     int32_t sq, cq;
     ef_sincos(ef_angle_from_deg_q32(phi_deg), &sq, &cq);
@@ -134,16 +143,16 @@ ef_status ef_in_build_svg_arc(ef_in_builder *b, ef_q32 x0, ef_q32 y0, ef_q32 rx,
         !ef_add_i64_checked(y0.v, -y.v, &dy))
         return range_error(err);
     ef_q32 hx = ef_q32_raw(ef_asr_i64(dx, 1)), hy = ef_q32_raw(ef_asr_i64(dy, 1));
-    ef_q32 mx = ef_q32_raw(x.v + hx.v), my = ef_q32_raw(y.v + hy.v);   /* between x and x0: no overflow */
-    ef_q32 x1, y1;                                                      /* rotated by -phi */
+    ef_q32 mx = ef_q32_raw(x.v + hx.v), my = ef_q32_raw(y.v + hy.v); /* between x and x0: no overflow */
+    ef_q32 x1, y1;                                                   /* rotated by -phi */
     if (!ef_in_q32_dot2(cphi, hx, sphi, hy, zero, &x1) || !ef_in_q32_dot2(ef_q32_raw(-sphi.v), hx, cphi, hy, zero, &y1))
         return range_error(err);
 
     /* Unit-space half chord length d; scaled when d >= 1 or not representable. */
     ef_q32 X, Y, d = one, e = zero;
-    bool scaled = !ef_q32_div(x1, rx, &X) || !ef_q32_div(y1, ry, &Y) || !ef_in_hypot_q32(X, Y, &d) ||
-                  d.v >= EF_Q32_ONE;
-    if (!scaled && d.v == 0) return ef_in_build_line(b, x, y, err);  /* chord below 2^-32 radius */
+    bool scaled = !ef_q32_div(x1, rx, &X) || !ef_q32_div(y1, ry, &Y) || !ef_in_hypot_q32(X, Y, &d) || d.v >= EF_Q32_ONE;
+    if (!scaled && d.v == 0)
+        return ef_in_build_line(b, x, y, err); /* chord below 2^-32 radius */
 
     ef_angle alpha = atan2_wide(ef_mul_i64_wide(y1.v, rx.v), ef_mul_i64_wide(x1.v, ry.v));
     ef_angle beta = 0;
@@ -166,10 +175,12 @@ ef_status ef_in_build_svg_arc(ef_in_builder *b, ef_q32 x0, ef_q32 y0, ef_q32 rx,
             ry = ef_q32_raw(t);
             rx = r;
         }
-        if (rx.v == 0 || ry.v == 0) return ef_in_build_line(b, x, y, err);
+        if (rx.v == 0 || ry.v == 0)
+            return ef_in_build_line(b, x, y, err);
     } else {
         ef_q32 e2;
-        if (!ef_q32_mul(ef_q32_raw(EF_Q32_ONE - d.v), ef_q32_raw(EF_Q32_ONE + d.v), &e2)) return range_error(err);
+        if (!ef_q32_mul(ef_q32_raw(EF_Q32_ONE - d.v), ef_q32_raw(EF_Q32_ONE + d.v), &e2))
+            return range_error(err);
         e = ef_q32_sqrt(e2);
         beta = ef_atan2(e.v, d.v);
     }
@@ -182,8 +193,10 @@ ef_status ef_in_build_svg_arc(ef_in_builder *b, ef_q32 x0, ef_q32 y0, ef_q32 rx,
     if (!ef_q32_mul(e, ef_q32_raw(ef_shl_i64(nsq, 2)), &ex_) || !ef_q32_mul(e, ef_q32_raw(ef_shl_i64(ncq, 2)), &ey_) ||
         !ef_q32_mul(ex_, rx, &cxr) || !ef_q32_mul(ey_, ry, &cyr))
         return range_error(err);
-    if (sgn > 0) cyr.v = -cyr.v;
-    else cxr.v = -cxr.v;
+    if (sgn > 0)
+        cyr.v = -cyr.v;
+    else
+        cxr.v = -cxr.v;
     if (!ef_in_q32_dot2(cphi, cxr, ef_q32_raw(-sphi.v), cyr, mx, &cx) || !ef_in_q32_dot2(sphi, cxr, cphi, cyr, my, &cy))
         return range_error(err);
 
@@ -195,10 +208,12 @@ ef_status ef_in_build_svg_arc(ef_in_builder *b, ef_q32 x0, ef_q32 y0, ef_q32 rx,
     arc.cos_phi = cq;
     arc.sin_phi = sq;
     arc.t0 = sgn > 0 ? alpha + beta : alpha - beta;
-    arc.delta = large ? (int64_t)EF_ANGLE_HALF_TURN + 2 * (int64_t)beta : (int64_t)EF_ANGLE_HALF_TURN - 2 * (int64_t)beta;
+    arc.delta =
+        large ? (int64_t)EF_ANGLE_HALF_TURN + 2 * (int64_t)beta : (int64_t)EF_ANGLE_HALF_TURN - 2 * (int64_t)beta;
     arc.dir = sweep ? 1 : -1;
     arc.ex = x;
     arc.ey = y;
-    if (arc.delta <= 0) return ef_in_build_line(b, x, y, err);
+    if (arc.delta <= 0)
+        return ef_in_build_line(b, x, y, err);
     return ef_in_build_ellarc(b, &arc, err);
 }

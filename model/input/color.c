@@ -184,9 +184,11 @@ static int cmp_ci(const char *s, size_t n, const char *lit)
     size_t i = 0;
     for (; i < n && lit[i] != '\0'; i++) {
         char a = lower(s[i]);
-        if (a != lit[i]) return (unsigned char)a < (unsigned char)lit[i] ? -1 : 1;
+        if (a != lit[i])
+            return (unsigned char)a < (unsigned char)lit[i] ? -1 : 1;
     }
-    if (i < n) return 1;
+    if (i < n)
+        return 1;
     return lit[i] == '\0' ? 0 : -1;
 }
 
@@ -198,18 +200,23 @@ static const named_color *find_named(const char *s, size_t n)
     while (lo < hi) {
         size_t mid = lo + (hi - lo) / 2;
         int c = cmp_ci(s, n, NAMED[mid].name);
-        if (c == 0) return &NAMED[mid];
-        if (c < 0) hi = mid;
-        else lo = mid + 1;
+        if (c == 0)
+            return &NAMED[mid];
+        if (c < 0)
+            hi = mid;
+        else
+            lo = mid + 1;
     }
     return NULL;
 }
 
 static int hexval(char c)
 {
-    if (c >= '0' && c <= '9') return c - '0';
+    if (c >= '0' && c <= '9')
+        return c - '0';
     c = lower(c);
-    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+    if (c >= 'a' && c <= 'f')
+        return c - 'a' + 10;
     return -1;
 }
 
@@ -229,16 +236,18 @@ uint8_t ef_in_alpha8(ef_q32 p)
 static ef_status num_or_pct(ef_in_lex *l, ef_q32 *v, bool *pct, ef_error *err)
 {
     ef_status st = ef_in_lex_number(l, v, err);
-    if (st != EF_OK) return st;
+    if (st != EF_OK)
+        return st;
     *pct = ef_in_lex_peek(l) == '%';
-    if (*pct) l->pos++;
+    if (*pct)
+        l->pos++;
     return EF_OK;
 }
 
 static uint8_t channel(ef_q32 v, bool pct)
 {
     if (pct) {
-        int64_t p = ef_clamp_i64(v.v, 0, 100 * EF_Q32_ONE);   /* p < 2^39: 510 p fits */
+        int64_t p = ef_clamp_i64(v.v, 0, 100 * EF_Q32_ONE); /* p < 2^39: 510 p fits */
         return (uint8_t)ef_floordiv_i64(510 * p + 100 * EF_Q32_ONE, 200 * EF_Q32_ONE);
     }
     int64_t r = ef_round_shr_i64(v.v, 32);
@@ -247,7 +256,8 @@ static uint8_t channel(ef_q32 v, bool pct)
 
 static ef_q32 unit_interval(ef_q32 v, bool pct)
 {
-    if (pct) return ef_q32_raw(ef_rounddiv_i64(ef_clamp_i64(v.v, 0, 100 * EF_Q32_ONE), 100));
+    if (pct)
+        return ef_q32_raw(ef_rounddiv_i64(ef_clamp_i64(v.v, 0, 100 * EF_Q32_ONE), 100));
     return ef_q32_raw(ef_clamp_i64(v.v, 0, EF_Q32_ONE));
 }
 
@@ -268,7 +278,8 @@ static ef_status rgb_func(const char *s, size_t len, size_t base, ef_in_paint *o
                 ef_in_lex_wsp(&l);
             }
         }
-        if (n == 4) return syntax(err, err_off, base + l.pos, "too many colour arguments in", s, len);
+        if (n == 4)
+            return syntax(err, err_off, base + l.pos, "too many colour arguments in", s, len);
         size_t at = l.pos;
         if ((st = num_or_pct(&l, &v[n], &pct[n], err)) != EF_OK) {
             *err_off = base + at;
@@ -277,7 +288,8 @@ static ef_status rgb_func(const char *s, size_t len, size_t base, ef_in_paint *o
         n++;
         ef_in_lex_wsp(&l);
     }
-    if (n < 3) return syntax(err, err_off, base + l.pos, "too few colour arguments in", s, len);
+    if (n < 3)
+        return syntax(err, err_off, base + l.pos, "too few colour arguments in", s, len);
     out->kind = EF_IN_PAINT_RGB;
     out->r = channel(v[0], pct[0]);
     out->g = channel(v[1], pct[1]);
@@ -293,7 +305,8 @@ static void trim(const char **s, size_t *len, size_t *base)
         (*len)--;
         (*base)++;
     }
-    while (*len > 0 && ef_in_is_wsp((*s)[*len - 1])) (*len)--;
+    while (*len > 0 && ef_in_is_wsp((*s)[*len - 1]))
+        (*len)--;
 }
 
 static ef_status color_at(const char *s, size_t len, size_t base, ef_in_paint *out, size_t *err_off, ef_error *err)
@@ -301,12 +314,15 @@ static ef_status color_at(const char *s, size_t len, size_t base, ef_in_paint *o
     trim(&s, &len, &base);
     memset(out, 0, sizeof *out);
     out->alpha = ef_q32_raw(EF_Q32_ONE);
-    if (len == 0) return syntax(err, err_off, base, "colour expected:", s, len);
+    if (len == 0)
+        return syntax(err, err_off, base, "colour expected:", s, len);
     if (s[0] == '#') {
         int h[6];
-        if (len != 4 && len != 7) return syntax(err, err_off, base, "bad hex colour", s, len);
+        if (len != 4 && len != 7)
+            return syntax(err, err_off, base, "bad hex colour", s, len);
         for (size_t i = 1; i < len; i++)
-            if ((h[i - 1] = hexval(s[i])) < 0) return syntax(err, err_off, base + i, "bad hex colour", s, len);
+            if ((h[i - 1] = hexval(s[i])) < 0)
+                return syntax(err, err_off, base + i, "bad hex colour", s, len);
         out->kind = EF_IN_PAINT_RGB;
         if (len == 4) {
             out->r = (uint8_t)(h[0] * 17);
@@ -320,13 +336,16 @@ static ef_status color_at(const char *s, size_t len, size_t base, ef_in_paint *o
         return EF_OK;
     }
     size_t fn = 0;
-    while (fn < len && s[fn] != '(') fn++;
+    while (fn < len && s[fn] != '(')
+        fn++;
     if (fn < len) {
         size_t name_len = fn;
-        while (name_len > 0 && ef_in_is_wsp(s[name_len - 1])) name_len--;
+        while (name_len > 0 && ef_in_is_wsp(s[name_len - 1]))
+            name_len--;
         if (!eq_ci(s, name_len, "rgb") && !eq_ci(s, name_len, "rgba"))
             return syntax(err, err_off, base, "unsupported colour function in", s, len);
-        if (s[len - 1] != ')') return syntax(err, err_off, base + len, "')' expected in", s, len);
+        if (s[len - 1] != ')')
+            return syntax(err, err_off, base + len, "')' expected in", s, len);
         return rgb_func(s + fn + 1, len - fn - 2, base + fn + 1, out, err_off, err);
     }
     if (eq_ci(s, len, "currentcolor")) {
@@ -339,7 +358,8 @@ static ef_status color_at(const char *s, size_t len, size_t base, ef_in_paint *o
         return EF_OK;
     }
     const named_color *nc = find_named(s, len);
-    if (!nc) return syntax(err, err_off, base, "unknown colour", s, len);
+    if (!nc)
+        return syntax(err, err_off, base, "unknown colour", s, len);
     out->kind = EF_IN_PAINT_RGB;
     out->r = nc->r;
     out->g = nc->g;
@@ -363,11 +383,15 @@ ef_status ef_in_paint_parse(const char *s, size_t len, ef_in_paint *out, size_t 
     }
     if (len >= 4 && eq_ci(s, 4, "url(")) {
         size_t i = 4, close = 4;
-        while (close < len && s[close] != ')') close++;
-        if (close == len) return syntax(err, err_off, base + len, "')' expected in", s, len);
+        while (close < len && s[close] != ')')
+            close++;
+        if (close == len)
+            return syntax(err, err_off, base + len, "')' expected in", s, len);
         size_t a = i, b = close;
-        while (a < b && ef_in_is_wsp(s[a])) a++;
-        while (b > a && ef_in_is_wsp(s[b - 1])) b--;
+        while (a < b && ef_in_is_wsp(s[a]))
+            a++;
+        while (b > a && ef_in_is_wsp(s[b - 1]))
+            b--;
         if (b - a >= 2 && (s[a] == '\'' || s[a] == '"') && s[b - 1] == s[a]) {
             a++;
             b--;
@@ -384,8 +408,10 @@ ef_status ef_in_paint_parse(const char *s, size_t len, ef_in_paint *out, size_t 
         trim(&r, &rest_len, &rb);
         if (rest_len > 0) {
             ef_status st;
-            if (eq_ci(r, rest_len, "none")) fb.kind = EF_IN_PAINT_NONE;
-            else if ((st = color_at(r, rest_len, rb, &fb, err_off, err)) != EF_OK) return st;
+            if (eq_ci(r, rest_len, "none"))
+                fb.kind = EF_IN_PAINT_NONE;
+            else if ((st = color_at(r, rest_len, rb, &fb, err_off, err)) != EF_OK)
+                return st;
             has_fb = true;
         }
         memset(out, 0, sizeof *out);
@@ -416,7 +442,8 @@ ef_status ef_in_opacity_parse(const char *s, size_t len, ef_q32 *out, size_t *er
         return st;
     }
     ef_in_lex_wsp(&l);
-    if (!ef_in_lex_end(&l)) return syntax(err, err_off, l.pos, "unexpected text in opacity", s, len);
+    if (!ef_in_lex_end(&l))
+        return syntax(err, err_off, l.pos, "unexpected text in opacity", s, len);
     *out = unit_interval(v, pct);
     return EF_OK;
 }

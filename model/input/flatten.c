@@ -71,7 +71,8 @@ static ef_status range_error(ef_error *err)
  * whole contour if fewer than 3 points remain. */
 void ef_in_build_close(ef_in_builder *b)
 {
-    if (!b->open) return;
+    if (!b->open)
+        return;
     b->open = false;
     uint32_t n = b->npts - b->cur;
     while (n > 1 && b->pts[b->cur + n - 1].x == b->pts[b->cur].x && b->pts[b->cur + n - 1].y == b->pts[b->cur].y)
@@ -89,13 +90,17 @@ ef_status ef_in_build_point(ef_in_builder *b, ef_point p, ef_error *err)
 {
     if (p.x <= -EF_COORD_LIMIT || p.x >= EF_COORD_LIMIT || p.y <= -EF_COORD_LIMIT || p.y >= EF_COORD_LIMIT)
         return range_error(err);
-    if (b->npts > b->cur && b->pts[b->npts - 1].x == p.x && b->pts[b->npts - 1].y == p.y) return EF_OK;
-    if (b->npts >= b->budget) return limit_error(err);
+    if (b->npts > b->cur && b->pts[b->npts - 1].x == p.x && b->pts[b->npts - 1].y == p.y)
+        return EF_OK;
+    if (b->npts >= b->budget)
+        return limit_error(err);
     if (b->npts == b->pts_cap) {
         uint32_t cap = b->pts_cap ? b->pts_cap * 2 : 256;
-        if (cap > b->budget) cap = b->budget;
+        if (cap > b->budget)
+            cap = b->budget;
         ef_point *np = realloc(b->pts, (size_t)cap * sizeof *np);
-        if (!np) return ef_error_set(err, EF_ERR_NOMEM, NULL, 0, 0, "out of memory");
+        if (!np)
+            return ef_error_set(err, EF_ERR_NOMEM, NULL, 0, 0, "out of memory");
         b->pts = np;
         b->pts_cap = cap;
     }
@@ -107,13 +112,16 @@ ef_status ef_in_build_move(ef_in_builder *b, ef_q32 x, ef_q32 y, ef_error *err)
 {
     ef_point p;
     ef_in_build_close(b);
-    if (ef_in_affine_apply_dev(&b->ctm, x, y, &p) != EF_OK) return range_error(err);
+    if (ef_in_affine_apply_dev(&b->ctm, x, y, &p) != EF_OK)
+        return range_error(err);
     /* Reserve the contour's start slot now so closing never allocates. */
     if (b->ncont + 1 >= b->start_cap) {
-        if (b->start_cap >= EF_MAX_POINTS_PER_SCENE) return limit_error(err);
+        if (b->start_cap >= EF_MAX_POINTS_PER_SCENE)
+            return limit_error(err);
         uint32_t cap = b->start_cap ? b->start_cap * 2 : 64;
         uint32_t *ns = realloc(b->start, (size_t)cap * sizeof *ns);
-        if (!ns) return ef_error_set(err, EF_ERR_NOMEM, NULL, 0, 0, "out of memory");
+        if (!ns)
+            return ef_error_set(err, EF_ERR_NOMEM, NULL, 0, 0, "out of memory");
         b->start = ns;
         b->start_cap = cap;
     }
@@ -125,7 +133,8 @@ ef_status ef_in_build_move(ef_in_builder *b, ef_q32 x, ef_q32 y, ef_error *err)
 ef_status ef_in_build_line(ef_in_builder *b, ef_q32 x, ef_q32 y, ef_error *err)
 {
     ef_point p;
-    if (ef_in_affine_apply_dev(&b->ctm, x, y, &p) != EF_OK) return range_error(err);
+    if (ef_in_affine_apply_dev(&b->ctm, x, y, &p) != EF_OK)
+        return range_error(err);
     return ef_in_build_point(b, p, err);
 }
 
@@ -135,25 +144,24 @@ static int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
  * capped.  L < 2^34, so k L < 2^36 and nothing overflows. */
 static uint32_t segments_for(int64_t L, int64_t k)
 {
-    int64_t need = k * L;                               /* n^2 * 2^14 >= need */
-    int64_t m = ef_ceildiv_i64(need, 4 * EF_IN_TOL_Q16);  /* n^2 >= m */
-    if (m <= 1) return 1;
-    uint32_t n = ef_isqrt_u64((uint64_t)(m - 1)) + 1;   /* ceil(sqrt(m)) */
+    int64_t need = k * L;                                /* n^2 * 2^14 >= need */
+    int64_t m = ef_ceildiv_i64(need, 4 * EF_IN_TOL_Q16); /* n^2 >= m */
+    if (m <= 1)
+        return 1;
+    uint32_t n = ef_isqrt_u64((uint64_t)(m - 1)) + 1; /* ceil(sqrt(m)) */
     return n > EF_IN_CURVE_MAX_SEGMENTS ? EF_IN_CURVE_MAX_SEGMENTS : n;
 }
 
 /* floor(num / den + 1/2) for den > 0 (|num| < 2^56 here). */
-static int32_t round_div(int64_t num, int64_t den)
-{
-    return (int32_t)ef_floordiv_i64(2 * num + den, 2 * den);
-}
+static int32_t round_div(int64_t num, int64_t den) { return (int32_t)ef_floordiv_i64(2 * num + den, 2 * den); }
 
 ef_status ef_in_build_quad(ef_in_builder *b, const ef_q32 p[6], ef_error *err)
 {
     int64_t X[3], Y[3];
     ef_status st;
     for (int k = 0; k < 3; k++)
-        if (ef_in_affine_apply_q16(&b->ctm, p[2 * k], p[2 * k + 1], &X[k], &Y[k]) != EF_OK) return range_error(err);
+        if (ef_in_affine_apply_q16(&b->ctm, p[2 * k], p[2 * k + 1], &X[k], &Y[k]) != EF_OK)
+            return range_error(err);
     int64_t L = abs64(X[0] - 2 * X[1] + X[2]) + abs64(Y[0] - 2 * Y[1] + Y[2]);
     int64_t n = segments_for(L, 1);
     int64_t den = n * n * EF_DEV_ONE;
@@ -162,7 +170,8 @@ ef_status ef_in_build_quad(ef_in_builder *b, const ef_q32 p[6], ef_error *err)
         int64_t c0 = u * u, c1 = 2 * u * i, c2 = i * i;
         ef_point q = { round_div(c0 * X[0] + c1 * X[1] + c2 * X[2], den),
                        round_div(c0 * Y[0] + c1 * Y[1] + c2 * Y[2], den) };
-        if ((st = ef_in_build_point(b, q, err)) != EF_OK) return st;
+        if ((st = ef_in_build_point(b, q, err)) != EF_OK)
+            return st;
     }
     return ef_in_build_line(b, p[4], p[5], err);
 }
@@ -172,7 +181,8 @@ ef_status ef_in_build_cubic(ef_in_builder *b, const ef_q32 p[8], ef_error *err)
     int64_t X[4], Y[4];
     ef_status st;
     for (int k = 0; k < 4; k++)
-        if (ef_in_affine_apply_q16(&b->ctm, p[2 * k], p[2 * k + 1], &X[k], &Y[k]) != EF_OK) return range_error(err);
+        if (ef_in_affine_apply_q16(&b->ctm, p[2 * k], p[2 * k + 1], &X[k], &Y[k]) != EF_OK)
+            return range_error(err);
     int64_t L1 = abs64(X[0] - 2 * X[1] + X[2]) + abs64(Y[0] - 2 * Y[1] + Y[2]);
     int64_t L2 = abs64(X[1] - 2 * X[2] + X[3]) + abs64(Y[1] - 2 * Y[2] + Y[3]);
     int64_t n = segments_for(L1 > L2 ? L1 : L2, 3);
@@ -182,7 +192,8 @@ ef_status ef_in_build_cubic(ef_in_builder *b, const ef_q32 p[8], ef_error *err)
         int64_t c0 = u * u * u, c1 = 3 * u * u * i, c2 = 3 * u * i * i, c3 = i * i * i;
         ef_point q = { round_div(c0 * X[0] + c1 * X[1] + c2 * X[2] + c3 * X[3], den),
                        round_div(c0 * Y[0] + c1 * Y[1] + c2 * Y[2] + c3 * Y[3], den) };
-        if ((st = ef_in_build_point(b, q, err)) != EF_OK) return st;
+        if ((st = ef_in_build_point(b, q, err)) != EF_OK)
+            return st;
     }
     return ef_in_build_line(b, p[6], p[7], err);
 }
@@ -191,7 +202,8 @@ ef_status ef_in_builder_commit(ef_in_builder *b, ef_scene *s, ef_rule rule, ef_r
 {
     ef_status st;
     ef_in_build_close(b);
-    if (b->ncont == 0) return EF_OK;
+    if (b->ncont == 0)
+        return EF_OK;
     if (b->npts > EF_MAX_EDGES_PER_SHAPE)
         return ef_error_set(err, EF_ERR_LIMIT, NULL, 0, 0,
                             "too many edges in one shape: %u (the model takes at most 2^22 = 4194304)",
@@ -201,7 +213,8 @@ ef_status ef_in_builder_commit(ef_in_builder *b, ef_scene *s, ef_rule rule, ef_r
     for (uint32_t c = 0; c < b->ncont; c++) {
         uint32_t end = c + 1 < b->ncont ? b->start[c + 1] : b->npts;
         if ((st = ef_scene_add_contour(s, b->pts + b->start[c], end - b->start[c])) != EF_OK) {
-            if (st == EF_ERR_LIMIT) return limit_error(err);
+            if (st == EF_ERR_LIMIT)
+                return limit_error(err);
             return ef_error_set(err, st, NULL, 0, 0, "out of memory");
         }
     }

@@ -25,17 +25,17 @@
 
 /* ------------------------------------------------------------------ limits
  * (docs/input.md "Limits"; every one gives EF_ERR_LIMIT when exceeded) */
-#define EF_IN_MAX_FILE_BYTES ((size_t)64 << 20)   /* ef_scene_load_file */
-#define EF_IN_MAX_DEPTH 256u                      /* XML nesting, and nesting through <use> */
-#define EF_IN_MAX_ELEMENTS (1u << 20)             /* XML elements per SVG file */
-#define EF_IN_MAX_VISITS (1u << 21)               /* element instances walked, <use> included */
-#define EF_IN_MAX_SHAPES (1u << 24)               /* shapes per scene */
-#ifndef EF_IN_MAX_WORK_LOG2                       /* SVG reading cost (svg.c, charge()); the fuzz */
-#define EF_IN_MAX_WORK_LOG2 28u                   /* build lowers it to keep every input fast */
+#define EF_IN_MAX_FILE_BYTES ((size_t)64 << 20) /* ef_scene_load_file */
+#define EF_IN_MAX_DEPTH 256u                    /* XML nesting, and nesting through <use> */
+#define EF_IN_MAX_ELEMENTS (1u << 20)           /* XML elements per SVG file */
+#define EF_IN_MAX_VISITS (1u << 21)             /* element instances walked, <use> included */
+#define EF_IN_MAX_SHAPES (1u << 24)             /* shapes per scene */
+#ifndef EF_IN_MAX_WORK_LOG2                     /* SVG reading cost (svg.c, charge()); the fuzz */
+#define EF_IN_MAX_WORK_LOG2 28u                 /* build lowers it to keep every input fast */
 #endif
 #define EF_IN_MAX_WORK ((uint64_t)1 << EF_IN_MAX_WORK_LOG2)
-#define EF_IN_CURVE_MAX_SEGMENTS 256u             /* Bezier flattening cap */
-#define EF_IN_ARC_MAX_SEGMENTS 4096u              /* arc flattening cap */
+#define EF_IN_CURVE_MAX_SEGMENTS 256u /* Bezier flattening cap */
+#define EF_IN_ARC_MAX_SEGMENTS 4096u  /* arc flattening cap */
 
 /* Flattening tolerance: 1/16 px, in Q47.16 units. */
 #define EF_IN_TOL_Q16 ((int64_t)1 << 12)
@@ -50,7 +50,7 @@ static inline ef_i128 ef_in_i128_add(ef_i128 a, ef_i128 b)
     ef_i128 r;
     r.lo = a.lo + b.lo;
     uint64_t carry = r.lo < a.lo ? 1u : 0u;
-    r.hi = ef_wrap_i64((uint64_t)a.hi + (uint64_t)b.hi + carry);  /* bounded: no wrap */
+    r.hi = ef_wrap_i64((uint64_t)a.hi + (uint64_t)b.hi + carry); /* bounded: no wrap */
     return r;
 }
 /* v * 2^s for a non-negative 64-bit shift into 128 bits (0 <= s < 64). */
@@ -132,11 +132,11 @@ typedef struct ef_in_builder {
     ef_in_affine ctm;
     ef_point *pts;
     uint32_t npts, pts_cap;
-    uint32_t *start;          /* contour c = pts[start[c] .. start[c+1]-1] */
+    uint32_t *start; /* contour c = pts[start[c] .. start[c+1]-1] */
     uint32_t ncont, start_cap;
-    uint32_t cur;             /* first point of the open contour */
-    bool open;                /* a contour is open */
-    uint32_t budget;          /* points the scene can still take */
+    uint32_t cur;    /* first point of the open contour */
+    bool open;       /* a contour is open */
+    uint32_t budget; /* points the scene can still take */
 } ef_in_builder;
 
 void ef_in_builder_init(ef_in_builder *b);
@@ -165,16 +165,16 @@ ef_status ef_in_builder_commit(ef_in_builder *b, ef_scene *s, ef_rule rule, ef_r
  * increasing), ending exactly at user point (ex, ey). */
 typedef struct ef_in_ellarc {
     ef_q32 cx, cy, rx, ry;
-    int32_t cos_phi, sin_phi;  /* Q1.30 */
+    int32_t cos_phi, sin_phi; /* Q1.30 */
     ef_angle t0;
-    int64_t delta;             /* magnitude, 1 .. 2^32 */
-    int dir;                   /* +1 or -1 */
+    int64_t delta; /* magnitude, 1 .. 2^32 */
+    int dir;       /* +1 or -1 */
     ef_q32 ex, ey;
 } ef_in_ellarc;
 ef_status ef_in_build_ellarc(ef_in_builder *b, const ef_in_ellarc *arc, ef_error *err);
 /* SVG elliptical arc command from (x0, y0) to (x, y) (SVG 1.1 F.6.5/F.6.6). */
-ef_status ef_in_build_svg_arc(ef_in_builder *b, ef_q32 x0, ef_q32 y0, ef_q32 rx, ef_q32 ry, ef_q32 phi_deg,
-                              bool large, bool sweep, ef_q32 x, ef_q32 y, ef_error *err);
+ef_status ef_in_build_svg_arc(ef_in_builder *b, ef_q32 x0, ef_q32 y0, ef_q32 rx, ef_q32 ry, ef_q32 phi_deg, bool large,
+                              bool sweep, ef_q32 x, ef_q32 y, ef_error *err);
 /* sqrt(a^2 + b^2) in Q31.32 without intermediate overflow; false past range. */
 bool ef_in_hypot_q32(ef_q32 a, ef_q32 b, ef_q32 *out);
 
@@ -188,17 +188,17 @@ ef_status ef_in_points_parse(const char *s, size_t len, ef_in_builder *b, size_t
 typedef enum ef_in_paint_kind {
     EF_IN_PAINT_NONE = 0,
     EF_IN_PAINT_RGB,
-    EF_IN_PAINT_CURRENT,       /* currentColor */
-    EF_IN_PAINT_URL            /* url(#id) [fallback] */
+    EF_IN_PAINT_CURRENT, /* currentColor */
+    EF_IN_PAINT_URL      /* url(#id) [fallback] */
 } ef_in_paint_kind;
 
 typedef struct ef_in_paint {
     ef_in_paint_kind kind;
     uint8_t r, g, b;
-    ef_q32 alpha;              /* [0, 1]: rgba() alpha, 0 for "transparent" */
+    ef_q32 alpha; /* [0, 1]: rgba() alpha, 0 for "transparent" */
     /* url: the id (offset/length into the parsed string) and the fallback */
     size_t url_off, url_len;
-    ef_in_paint_kind fallback_kind;   /* NONE when there is no fallback */
+    ef_in_paint_kind fallback_kind; /* NONE when there is no fallback */
     uint8_t fr, fg, fb;
     ef_q32 falpha;
     bool has_fallback;
@@ -220,8 +220,7 @@ static inline uint32_t ef_in_shape_points(const ef_scene *s)
     return s->nshapes ? s->npoints - s->start[s->shapes[s->nshapes - 1].first_contour] : 0;
 }
 /* Notes: one call per kind and file (ef_load_opts.note). */
-void ef_in_note(const ef_load_opts *opts, ef_scene *s, const char *file, uint32_t line, uint32_t col,
-                const char *msg);
+void ef_in_note(const ef_load_opts *opts, ef_scene *s, const char *file, uint32_t line, uint32_t col, const char *msg);
 /* Canvas size ceil(v) for a positive Q31.32 value; EF_ERR_LIMIT outside
  * 1 .. EF_MAX_CANVAS. */
 ef_status ef_in_canvas_size(ef_q32 v, int32_t *out);
@@ -235,19 +234,19 @@ uint32_t ef_in_utf8_col(const char *line_start, size_t off);
 #define EF_IN_NONE UINT32_MAX
 
 typedef struct ef_in_attr {
-    uint32_t name;            /* pool offset: "local" or "namespace-uri local" */
+    uint32_t name; /* pool offset: "local" or "namespace-uri local" */
     uint32_t value, value_len;
 } ef_in_attr;
 
 typedef struct ef_in_node {
-    uint32_t name;            /* pool offset of the local name */
+    uint32_t name; /* pool offset of the local name */
     uint32_t parent, first_child, last_child, next;
     uint32_t attr0, nattr;
-    uint32_t line, col;       /* 1-based position of the '<' */
-    size_t byte;              /* byte offset of the '<' in the input */
-    uint32_t text, text_len;  /* character data of <style> elements */
-    bool svg;                 /* SVG namespace, or no namespace */
-    bool active;              /* on the current walk path (cycle check) */
+    uint32_t line, col;      /* 1-based position of the '<' */
+    size_t byte;             /* byte offset of the '<' in the input */
+    uint32_t text, text_len; /* character data of <style> elements */
+    bool svg;                /* SVG namespace, or no namespace */
+    bool active;             /* on the current walk path (cycle check) */
 } ef_in_node;
 
 typedef struct ef_in_dom {
@@ -274,8 +273,7 @@ const char *ef_in_dom_attr(const ef_in_dom *dom, uint32_t node, const char *name
 /* Line and column of character `idx` of the value of unprefixed attribute
  * `attr` of node, from the raw input; the element's position if the
  * attribute cannot be found or the value holds references before idx. */
-void ef_in_dom_locate(const ef_in_dom *dom, uint32_t node, const char *attr, size_t idx, uint32_t *line,
-                      uint32_t *col);
+void ef_in_dom_locate(const ef_in_dom *dom, uint32_t node, const char *attr, size_t idx, uint32_t *line, uint32_t *col);
 
 /* ------------------------------------------------------------------ CSS
  * svg_css.c: declarations ("name: value; ...") and simple stylesheets.
@@ -284,7 +282,7 @@ void ef_in_dom_locate(const ef_in_dom *dom, uint32_t node, const char *attr, siz
 typedef struct ef_in_decl {
     const char *name, *value;
     size_t name_len, value_len;
-    size_t value_off;         /* offset of the value in the parsed text */
+    size_t value_off; /* offset of the value in the parsed text */
 } ef_in_decl;
 
 typedef struct ef_in_decls {
@@ -298,27 +296,26 @@ typedef struct ef_in_decls {
 ef_status ef_in_css_decls(const char *s, size_t len, ef_in_decls *out, size_t *err_off, ef_error *err);
 
 typedef struct ef_in_css_rule {
-    const char *tag, *cls, *id;   /* NULL: not part of the selector */
+    const char *tag, *cls, *id; /* NULL: not part of the selector */
     size_t tag_len, cls_len, id_len;
-    uint32_t specificity;         /* ids << 16 | classes << 8 | types */
-    uint32_t order;               /* source order */
-    uint32_t decl0, ndecl;        /* into ef_in_css.decls */
-    uint32_t node;                /* the <style> element (error positions) */
+    uint32_t specificity;  /* ids << 16 | classes << 8 | types */
+    uint32_t order;        /* source order */
+    uint32_t decl0, ndecl; /* into ef_in_css.decls */
+    uint32_t node;         /* the <style> element (error positions) */
 } ef_in_css_rule;
 
 typedef struct ef_in_css {
     ef_in_css_rule *rules;
     uint32_t nrules, rules_cap;
     ef_in_decls decls;
-    char **texts;                 /* owned copies of the style sheets */
+    char **texts; /* owned copies of the style sheets */
     uint32_t ntexts, texts_cap;
 } ef_in_css;
 
 /* Adds the rules of one style sheet.  Selectors other than type, .class,
  * #id, type.class and * are skipped and so are at-rules: *unsupported is
  * set when that happens. */
-ef_status ef_in_css_add(ef_in_css *css, const char *text, size_t len, uint32_t node, bool *unsupported,
-                        ef_error *err);
+ef_status ef_in_css_add(ef_in_css *css, const char *text, size_t len, uint32_t node, bool *unsupported, ef_error *err);
 void ef_in_css_free(ef_in_css *css);
 /* Does rule r select an element with this tag, class attribute and id? */
 bool ef_in_css_match(const ef_in_css_rule *r, const char *tag, const char *cls, size_t cls_len, const char *id,

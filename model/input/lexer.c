@@ -13,7 +13,8 @@
 size_t ef_in_lex_wsp(ef_in_lex *l)
 {
     size_t p0 = l->pos;
-    while (l->pos < l->len && ef_in_is_wsp(l->s[l->pos])) l->pos++;
+    while (l->pos < l->len && ef_in_is_wsp(l->s[l->pos]))
+        l->pos++;
     return l->pos - p0;
 }
 
@@ -41,8 +42,7 @@ ef_status ef_in_lex_number(ef_in_lex *l, ef_q32 *out, ef_error *err)
     if (st == EF_NUM_SYNTAX || used == 0)
         return ef_error_set(err, EF_ERR_SYNTAX, NULL, 0, 0, "number expected");
     if (st == EF_NUM_RANGE)
-        return ef_error_set(err, EF_ERR_RANGE, NULL, 0, 0,
-                            "number out of range (the magnitude must be below 2^31)");
+        return ef_error_set(err, EF_ERR_RANGE, NULL, 0, 0, "number out of range (the magnitude must be below 2^31)");
     l->pos += used;
     return EF_OK;
 }

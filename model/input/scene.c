@@ -45,7 +45,8 @@ static void safe_text(char *out, size_t size, const char *in)
             src = "\\uFEFF";
             len = 6;
         }
-        if (o + len >= size) break;
+        if (o + len >= size)
+            break;
         memcpy(out + o, src, len);
         o += len;
         p += n;
@@ -53,14 +54,16 @@ static void safe_text(char *out, size_t size, const char *in)
     out[o] = '\0';
 }
 
-ef_status ef_error_set(ef_error *e, ef_status status, const char *file, uint32_t line, uint32_t col,
-                       const char *fmt, ...)
+ef_status ef_error_set(ef_error *e, ef_status status, const char *file, uint32_t line, uint32_t col, const char *fmt,
+                       ...)
 {
-    if (!e) return status;
+    if (!e)
+        return status;
     e->status = status;
     if (file) {
         size_t n = strlen(file);
-        if (n >= sizeof e->file) n = sizeof e->file - 1;
+        if (n >= sizeof e->file)
+            n = sizeof e->file - 1;
         memcpy(e->file, file, n);
         e->file[n] = '\0';
     } else {
@@ -79,11 +82,15 @@ ef_status ef_error_set(ef_error *e, ef_status status, const char *file, uint32_t
 
 void ef_error_format(const ef_error *e, char *buf, size_t size)
 {
-    if (!buf || size == 0) return;
+    if (!buf || size == 0)
+        return;
     const char *file = e->file[0] ? e->file : "<input>";
-    if (e->line && e->col) snprintf(buf, size, "%s:%u:%u: %s", file, (unsigned)e->line, (unsigned)e->col, e->msg);
-    else if (e->line) snprintf(buf, size, "%s:%u: %s", file, (unsigned)e->line, e->msg);
-    else snprintf(buf, size, "%s: %s", file, e->msg);
+    if (e->line && e->col)
+        snprintf(buf, size, "%s:%u:%u: %s", file, (unsigned)e->line, (unsigned)e->col, e->msg);
+    else if (e->line)
+        snprintf(buf, size, "%s:%u: %s", file, (unsigned)e->line, e->msg);
+    else
+        snprintf(buf, size, "%s: %s", file, e->msg);
 }
 
 /* ----------------------------------------------------------------- scene */
@@ -106,13 +113,18 @@ void ef_scene_free(ef_scene *s)
 /* Grows *arr (elements of size elt) to hold need elements; caps at limit. */
 static ef_status grow(void **arr, uint32_t *cap, uint32_t need, size_t elt, uint32_t limit)
 {
-    if (need <= *cap) return EF_OK;
-    if (need > limit) return EF_ERR_LIMIT;
+    if (need <= *cap)
+        return EF_OK;
+    if (need > limit)
+        return EF_ERR_LIMIT;
     uint64_t nc = *cap ? (uint64_t)*cap * 2 : 16;
-    while (nc < need) nc *= 2;
-    if (nc > limit) nc = limit;
+    while (nc < need)
+        nc *= 2;
+    if (nc > limit)
+        nc = limit;
     void *p = realloc(*arr, (size_t)nc * elt);
-    if (!p) return EF_ERR_NOMEM;
+    if (!p)
+        return EF_ERR_NOMEM;
     *arr = p;
     *cap = (uint32_t)nc;
     return EF_OK;
@@ -121,7 +133,8 @@ static ef_status grow(void **arr, uint32_t *cap, uint32_t need, size_t elt, uint
 ef_status ef_scene_begin_shape(ef_scene *s, ef_rule rule, ef_rgba8 color)
 {
     ef_status st;
-    if (rule != EF_RULE_NONZERO && rule != EF_RULE_EVENODD) return EF_ERR_ARG;
+    if (rule != EF_RULE_NONZERO && rule != EF_RULE_EVENODD)
+        return EF_ERR_ARG;
     if ((st = grow((void **)&s->shapes, &s->shapes_cap, s->nshapes + 1, sizeof *s->shapes, EF_IN_MAX_SHAPES)))
         return st;
     if ((st = grow((void **)&s->start, &s->start_cap, s->ncontours + 1, sizeof *s->start, EF_MAX_POINTS_PER_SCENE + 1)))
@@ -138,20 +151,24 @@ ef_status ef_scene_begin_shape(ef_scene *s, ef_rule rule, ef_rgba8 color)
 ef_status ef_scene_add_contour(ef_scene *s, const ef_point *pts, uint32_t n)
 {
     ef_status st;
-    if (s->nshapes == 0 || (n > 0 && !pts)) return EF_ERR_ARG;
+    if (s->nshapes == 0 || (n > 0 && !pts))
+        return EF_ERR_ARG;
     for (uint32_t i = 0; i < n; i++)
         if (pts[i].x <= -EF_COORD_LIMIT || pts[i].x >= EF_COORD_LIMIT || pts[i].y <= -EF_COORD_LIMIT ||
             pts[i].y >= EF_COORD_LIMIT)
             return EF_ERR_RANGE;
-    if (n > EF_MAX_POINTS_PER_SCENE - s->npoints || s->ncontours >= EF_MAX_POINTS_PER_SCENE) return EF_ERR_LIMIT;
+    if (n > EF_MAX_POINTS_PER_SCENE - s->npoints || s->ncontours >= EF_MAX_POINTS_PER_SCENE)
+        return EF_ERR_LIMIT;
     /* A shape of n points has n edges: the model takes EF_MAX_EDGES_PER_SHAPE
      * (ef_rasterize), so a scene never holds a shape it cannot draw. */
-    if (n > EF_MAX_EDGES_PER_SHAPE - ef_in_shape_points(s)) return EF_ERR_LIMIT;
+    if (n > EF_MAX_EDGES_PER_SHAPE - ef_in_shape_points(s))
+        return EF_ERR_LIMIT;
     if ((st = grow((void **)&s->points, &s->points_cap, s->npoints + n, sizeof *s->points, EF_MAX_POINTS_PER_SCENE)))
         return st;
     if ((st = grow((void **)&s->start, &s->start_cap, s->ncontours + 2, sizeof *s->start, EF_MAX_POINTS_PER_SCENE + 1)))
         return st;
-    if (n > 0) memcpy(s->points + s->npoints, pts, (size_t)n * sizeof *pts);
+    if (n > 0)
+        memcpy(s->points + s->npoints, pts, (size_t)n * sizeof *pts);
     s->npoints += n;
     s->ncontours++;
     s->start[s->ncontours] = s->npoints;
@@ -162,7 +179,8 @@ ef_status ef_scene_add_contour(ef_scene *s, const ef_point *pts, uint32_t n)
 ef_polygon ef_scene_polygon(const ef_scene *s, uint32_t i)
 {
     ef_polygon p = { NULL, NULL, 0 };
-    if (i >= s->nshapes) return p;
+    if (i >= s->nshapes)
+        return p;
     const ef_shape *sh = &s->shapes[i];
     p.pts = s->points;
     p.start = s->start + sh->first_contour;
@@ -172,18 +190,20 @@ ef_polygon ef_scene_polygon(const ef_scene *s, uint32_t i)
 
 /* ------------------------------------------------------------ shared glue */
 
-void ef_in_note(const ef_load_opts *opts, ef_scene *s, const char *file, uint32_t line, uint32_t col,
-                const char *msg)
+void ef_in_note(const ef_load_opts *opts, ef_scene *s, const char *file, uint32_t line, uint32_t col, const char *msg)
 {
     s->notes++;
-    if (opts && opts->note) opts->note(opts->note_user, file, line, col, msg);
+    if (opts && opts->note)
+        opts->note(opts->note_user, file, line, col, msg);
 }
 
 ef_status ef_in_canvas_size(ef_q32 v, int32_t *out)
 {
-    if (v.v <= 0) return EF_ERR_LIMIT;
+    if (v.v <= 0)
+        return EF_ERR_LIMIT;
     int64_t c = ef_ceildiv_i64(v.v, EF_Q32_ONE);
-    if (c < 1 || c > EF_MAX_CANVAS) return EF_ERR_LIMIT;
+    if (c < 1 || c > EF_MAX_CANVAS)
+        return EF_ERR_LIMIT;
     *out = (int32_t)c;
     return EF_OK;
 }
@@ -192,7 +212,8 @@ uint32_t ef_in_utf8_col(const char *line_start, size_t off)
 {
     uint32_t col = 1;
     for (size_t i = 0; i < off; i++)
-        if (((unsigned char)line_start[i] & 0xC0u) != 0x80u) col++;
+        if (((unsigned char)line_start[i] & 0xC0u) != 0x80u)
+            col++;
     return col;
 }
 
@@ -201,11 +222,14 @@ uint32_t ef_in_utf8_col(const char *line_start, size_t off)
 static bool ends_with_ci(const char *s, const char *suffix)
 {
     size_t n = strlen(s), k = strlen(suffix);
-    if (k > n) return false;
+    if (k > n)
+        return false;
     for (size_t i = 0; i < k; i++) {
         char c = s[n - k + i];
-        if (c >= 'A' && c <= 'Z') c = (char)(c - 'A' + 'a');
-        if (c != suffix[i]) return false;
+        if (c >= 'A' && c <= 'Z')
+            c = (char)(c - 'A' + 'a');
+        if (c != suffix[i])
+            return false;
     }
     return true;
 }
@@ -213,16 +237,18 @@ static bool ends_with_ci(const char *s, const char *suffix)
 ef_status ef_scene_load_file(const char *path, const ef_load_opts *opts, ef_scene *out, ef_error *err)
 {
     ef_error local;
-    if (!err) err = &local;
+    if (!err)
+        err = &local;
     ef_scene_init(out, 0, 0);
-    if (!path) return ef_error_set(err, EF_ERR_ARG, NULL, 0, 0, "no file name");
+    if (!path)
+        return ef_error_set(err, EF_ERR_ARG, NULL, 0, 0, "no file name");
     int kind = ends_with_ci(path, ".svg") ? 1 : (ends_with_ci(path, ".scene") || ends_with_ci(path, ".txt")) ? 2 : 0;
     if (kind == 0)
-        return ef_error_set(err, EF_ERR_UNSUPPORTED, path, 0, 0,
-                            "unknown file type (expected .svg, .scene or .txt)");
+        return ef_error_set(err, EF_ERR_UNSUPPORTED, path, 0, 0, "unknown file type (expected .svg, .scene or .txt)");
 
     FILE *f = fopen(path, "rb");
-    if (!f) return ef_error_set(err, EF_ERR_IO, path, 0, 0, "cannot open: %s", strerror(errno));
+    if (!f)
+        return ef_error_set(err, EF_ERR_IO, path, 0, 0, "cannot open: %s", strerror(errno));
     size_t cap = 1 << 16, len = 0;
     char *buf = malloc(cap);
     if (!buf) {
@@ -252,7 +278,8 @@ ef_status ef_scene_load_file(const char *path, const ef_load_opts *opts, ef_scen
         }
         size_t got = fread(buf + len, 1, cap - len, f);
         len += got;
-        if (got == 0) break;
+        if (got == 0)
+            break;
     }
     bool bad = ferror(f) != 0;
     int saved = errno;

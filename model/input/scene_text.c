@@ -28,7 +28,7 @@
 
 typedef struct text_reader {
     const char *name;
-    const char *line;          /* start of the current line */
+    const char *line; /* start of the current line */
     uint32_t lineno;
     ef_error *err;
     ef_point *pts;
@@ -54,8 +54,8 @@ static ef_status fail_at(text_reader *r, const char *at, ef_status st, const cha
         }
     }
     q[k] = '\0';
-    return ef_error_set(r->err, st, r->name, r->lineno, ef_in_utf8_col(r->line, (size_t)(at - r->line)), fmt,
-                        (int)k, q);
+    return ef_error_set(r->err, st, r->name, r->lineno, ef_in_utf8_col(r->line, (size_t)(at - r->line)), fmt, (int)k,
+                        q);
 }
 
 static bool is_sep(char c) { return c == ' ' || c == '\t'; }
@@ -64,9 +64,11 @@ static bool is_sep(char c) { return c == ' ' || c == '\t'; }
 static size_t next_token(const char **p, const char *end, const char **tok)
 {
     const char *s = *p;
-    while (s < end && is_sep(*s)) s++;
+    while (s < end && is_sep(*s))
+        s++;
     const char *t = s;
-    while (s < end && !is_sep(*s)) s++;
+    while (s < end && !is_sep(*s))
+        s++;
     *tok = t;
     *p = s;
     return (size_t)(s - t);
@@ -78,14 +80,16 @@ static ef_status number(text_reader *r, const char *tok, size_t n, ef_q32 *v)
     ef_num_status ns = ef_parse_decimal_q32(tok, n, v, &used);
     if (ns == EF_NUM_RANGE)
         return fail_at(r, tok, EF_ERR_RANGE, "number out of range (|v| must be below 2^31): '%.*s'", tok, n);
-    if (ns != EF_NUM_OK || used != n) return fail_at(r, tok, EF_ERR_SYNTAX, "not a number: '%.*s'", tok, n);
+    if (ns != EF_NUM_OK || used != n)
+        return fail_at(r, tok, EF_ERR_SYNTAX, "not a number: '%.*s'", tok, n);
     return EF_OK;
 }
 
 static ef_status byte_value(text_reader *r, const char *tok, size_t n, uint8_t *v)
 {
     unsigned x = 0;
-    if (n == 0) return fail_at(r, tok, EF_ERR_SYNTAX, "integer 0..255 expected%.*s", "", 0);
+    if (n == 0)
+        return fail_at(r, tok, EF_ERR_SYNTAX, "integer 0..255 expected%.*s", "", 0);
     for (size_t i = 0; i < n; i++) {
         if (tok[i] < '0' || tok[i] > '9' || (x = x * 10 + (unsigned)(tok[i] - '0')) > 255)
             return fail_at(r, tok, EF_ERR_SYNTAX, "integer 0..255 expected: '%.*s'", tok, n);
@@ -99,7 +103,8 @@ static ef_status push_point(text_reader *r, ef_point p)
     if (r->npts == r->cap) {
         uint32_t nc = r->cap ? r->cap * 2 : 64;
         ef_point *np = realloc(r->pts, (size_t)nc * sizeof *np);
-        if (!np) return ef_error_set(r->err, EF_ERR_NOMEM, r->name, r->lineno, 0, "out of memory");
+        if (!np)
+            return ef_error_set(r->err, EF_ERR_NOMEM, r->name, r->lineno, 0, "out of memory");
         r->pts = np;
         r->cap = nc;
     }
@@ -111,9 +116,11 @@ static ef_status push_point(text_reader *r, ef_point p)
 static ef_status fit_ctm(ef_q32 w0, ef_q32 h0, int32_t W, int32_t H, ef_in_affine *m)
 {
     ef_q32 sx, sy, ws, hs;
-    if (!ef_q32_div(ef_q32_from_int(W), w0, &sx) || !ef_q32_div(ef_q32_from_int(H), h0, &sy)) return EF_ERR_RANGE;
+    if (!ef_q32_div(ef_q32_from_int(W), w0, &sx) || !ef_q32_div(ef_q32_from_int(H), h0, &sy))
+        return EF_ERR_RANGE;
     ef_q32 s = sx.v < sy.v ? sx : sy;
-    if (!ef_q32_mul(w0, s, &ws) || !ef_q32_mul(h0, s, &hs)) return EF_ERR_RANGE;
+    if (!ef_q32_mul(w0, s, &ws) || !ef_q32_mul(h0, s, &hs))
+        return EF_ERR_RANGE;
     /* (W - s w0) / 2, halving by floor on the Q31.32 value. */
     ef_q32 tx = ef_q32_raw(ef_asr_i64(ef_q32_from_int(W).v - ws.v, 1));
     ef_q32 ty = ef_q32_raw(ef_asr_i64(ef_q32_from_int(H).v - hs.v, 1));
@@ -125,17 +132,23 @@ ef_status ef_scene_load_text(const char *name, const char *data, size_t len, con
                              ef_error *err)
 {
     ef_error local;
-    if (!err) err = &local;
-    if (!name) name = "<scene>";
+    if (!err)
+        err = &local;
+    if (!name)
+        name = "<scene>";
     ef_scene_init(out, 0, 0);
-    if (!data && len > 0) return ef_error_set(err, EF_ERR_ARG, name, 0, 0, "no data");
+    if (!data && len > 0)
+        return ef_error_set(err, EF_ERR_ARG, name, 0, 0, "no data");
     if (len > EF_IN_MAX_FILE_BYTES)
         return ef_error_set(err, EF_ERR_LIMIT, name, 0, 0, "input larger than %u MiB",
                             (unsigned)(EF_IN_MAX_FILE_BYTES >> 20));
     if (opts && ((opts->fit_width != 0) != (opts->fit_height != 0) || opts->fit_width < 0 || opts->fit_height < 0 ||
                  opts->fit_width > EF_MAX_CANVAS || opts->fit_height > EF_MAX_CANVAS))
-        return ef_error_set(err, opts->fit_width < 0 || opts->fit_height < 0 || (opts->fit_width != 0) != (opts->fit_height != 0)
-                                     ? EF_ERR_ARG : EF_ERR_LIMIT,
+        return ef_error_set(err,
+                            opts->fit_width < 0 || opts->fit_height < 0 ||
+                                    (opts->fit_width != 0) != (opts->fit_height != 0)
+                                ? EF_ERR_ARG
+                                : EF_ERR_LIMIT,
                             name, 0, 0, "fit size must be two values in 1..%d", EF_MAX_CANVAS);
     bool fit = opts && opts->fit_width > 0;
 
@@ -144,18 +157,22 @@ ef_status ef_scene_load_text(const char *name, const char *data, size_t len, con
     bool have_scene = false;
     ef_status st = EF_OK;
     const char *p = data, *end = data + len;
-    if (len >= 3 && (unsigned char)p[0] == 0xEF && (unsigned char)p[1] == 0xBB && (unsigned char)p[2] == 0xBF) p += 3;
+    if (len >= 3 && (unsigned char)p[0] == 0xEF && (unsigned char)p[1] == 0xBB && (unsigned char)p[2] == 0xBF)
+        p += 3;
 
     while (p < end) {
         r.lineno++;
         r.line = p;
         const char *eol = memchr(p, '\n', (size_t)(end - p));
         const char *next = eol ? eol + 1 : end;
-        if (!eol) eol = end;
-        if (eol > p && eol[-1] == '\r') eol--;                 /* CRLF */
+        if (!eol)
+            eol = end;
+        if (eol > p && eol[-1] == '\r')
+            eol--; /* CRLF */
         /* eol >= p always; the explicit guard keeps gcc -O3's bounds analysis quiet. */
         const char *hash = eol > p ? memchr(p, '#', (size_t)(eol - p)) : NULL;
-        if (hash) eol = hash;
+        if (hash)
+            eol = hash;
 
         const char *cur = p, *tok;
         size_t n = next_token(&cur, eol, &tok);
@@ -175,7 +192,8 @@ ef_status ef_scene_load_text(const char *name, const char *data, size_t len, con
                     st = fail_at(&r, tok, EF_ERR_SYNTAX, "scene needs a width and a height%.*s", "", 0);
                     goto fail;
                 }
-                if ((st = number(&r, tok, n, &wh[i])) != EF_OK) goto fail;
+                if ((st = number(&r, tok, n, &wh[i])) != EF_OK)
+                    goto fail;
                 if (wh[i].v <= 0) {
                     st = fail_at(&r, tok, EF_ERR_RANGE, "scene size must be positive: '%.*s'", tok, n);
                     goto fail;
@@ -207,8 +225,10 @@ ef_status ef_scene_load_text(const char *name, const char *data, size_t len, con
         } else if (n == 5 && memcmp(tok, "shape", 5) == 0) {
             ef_rule rule;
             n = next_token(&cur, eol, &tok);
-            if (n == 7 && memcmp(tok, "evenodd", 7) == 0) rule = EF_RULE_EVENODD;
-            else if (n == 7 && memcmp(tok, "nonzero", 7) == 0) rule = EF_RULE_NONZERO;
+            if (n == 7 && memcmp(tok, "evenodd", 7) == 0)
+                rule = EF_RULE_EVENODD;
+            else if (n == 7 && memcmp(tok, "nonzero", 7) == 0)
+                rule = EF_RULE_NONZERO;
             else {
                 st = fail_at(&r, tok, EF_ERR_SYNTAX, "fill rule 'evenodd' or 'nonzero' expected%.*s", "", 0);
                 goto fail;
@@ -216,7 +236,8 @@ ef_status ef_scene_load_text(const char *name, const char *data, size_t len, con
             uint8_t c[4];
             for (int i = 0; i < 4; i++) {
                 n = next_token(&cur, eol, &tok);
-                if ((st = byte_value(&r, tok, n, &c[i])) != EF_OK) goto fail;
+                if ((st = byte_value(&r, tok, n, &c[i])) != EF_OK)
+                    goto fail;
             }
             if ((n = next_token(&cur, eol, &tok)) != 0) {
                 st = fail_at(&r, tok, EF_ERR_SYNTAX, "unexpected token after shape colour: '%.*s'", tok, n);
@@ -238,9 +259,11 @@ ef_status ef_scene_load_text(const char *name, const char *data, size_t len, con
             ef_q32 x = { 0 };
             for (;;) {
                 n = next_token(&cur, eol, &tok);
-                if (n == 0) break;
+                if (n == 0)
+                    break;
                 ef_q32 v;
-                if ((st = number(&r, tok, n, &v)) != EF_OK) goto fail;
+                if ((st = number(&r, tok, n, &v)) != EF_OK)
+                    goto fail;
                 if (count++ % 2 == 0) {
                     x = v;
                     continue;
@@ -260,7 +283,8 @@ ef_status ef_scene_load_text(const char *name, const char *data, size_t len, con
                                  "too many edges in one shape (the model takes at most 2^22 = 4194304)%.*s", "", 0);
                     goto fail;
                 }
-                if ((st = push_point(&r, d)) != EF_OK) goto fail;
+                if ((st = push_point(&r, d)) != EF_OK)
+                    goto fail;
             }
             if (count % 2 != 0) {
                 st = fail_at(&r, eol, EF_ERR_SYNTAX, "odd number of coordinates%.*s", "", 0);
@@ -271,8 +295,8 @@ ef_status ef_scene_load_text(const char *name, const char *data, size_t len, con
                 goto fail;
             }
             if ((st = ef_scene_add_contour(out, r.pts, r.npts)) != EF_OK) {
-                fail_at(&r, first, st, st == EF_ERR_NOMEM ? "out of memory%.*s" : "too many points or contours%.*s",
-                        "", 0);
+                fail_at(&r, first, st, st == EF_ERR_NOMEM ? "out of memory%.*s" : "too many points or contours%.*s", "",
+                        0);
                 goto fail;
             }
         } else {

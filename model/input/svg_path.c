@@ -32,11 +32,11 @@ typedef struct path_state {
     ef_in_builder *b;
     ef_error *err;
     size_t *err_off;
-    ef_q32 x, y;          /* current point */
-    ef_q32 sx, sy;        /* start of the current subpath */
-    ef_q32 cx, cy;        /* last control point (for S and T) */
-    char last;            /* previous command (upper case), '\0' at start */
-    bool open;            /* a subpath is open (no Z since the last moveto) */
+    ef_q32 x, y;   /* current point */
+    ef_q32 sx, sy; /* start of the current subpath */
+    ef_q32 cx, cy; /* last control point (for S and T) */
+    char last;     /* previous command (upper case), '\0' at start */
+    bool open;     /* a subpath is open (no Z since the last moveto) */
 } path_state;
 
 static ef_status fail(path_state *ps, size_t off, ef_status st, const char *msg)
@@ -49,7 +49,8 @@ static ef_status number(path_state *ps, ef_q32 *v)
 {
     size_t at = ps->l.pos;
     ef_status st = ef_in_lex_number(&ps->l, v, ps->err);
-    if (st != EF_OK) *ps->err_off = at;
+    if (st != EF_OK)
+        *ps->err_off = at;
     return st;
 }
 
@@ -64,7 +65,8 @@ static ef_status flag(path_state *ps, bool *f)
 {
     ef_in_lex_sep(&ps->l);
     char c = ef_in_lex_peek(&ps->l);
-    if (c != '0' && c != '1') return fail(ps, ps->l.pos, EF_ERR_SYNTAX, "arc flag (0 or 1) expected");
+    if (c != '0' && c != '1')
+        return fail(ps, ps->l.pos, EF_ERR_SYNTAX, "arc flag (0 or 1) expected");
     *f = c == '1';
     ps->l.pos++;
     return EF_OK;
@@ -73,9 +75,11 @@ static ef_status flag(path_state *ps, bool *f)
 /* v + base (relative) exactly, or v (absolute). */
 static ef_status rel(path_state *ps, size_t at, bool relative, ef_q32 base, ef_q32 *v)
 {
-    if (!relative) return EF_OK;
+    if (!relative)
+        return EF_OK;
     int64_t r;
-    if (!ef_add_i64_checked(v->v, base.v, &r)) return fail(ps, at, EF_ERR_RANGE, "coordinate out of range");
+    if (!ef_add_i64_checked(v->v, base.v, &r))
+        return fail(ps, at, EF_ERR_RANGE, "coordinate out of range");
     v->v = r;
     return EF_OK;
 }
@@ -93,16 +97,19 @@ static ef_status reflect(path_state *ps, size_t at, ef_q32 p, ef_q32 c, ef_q32 *
 /* After Z, a drawing command starts a new subpath at the start point. */
 static ef_status ensure_open(path_state *ps, size_t at)
 {
-    if (ps->open) return EF_OK;
+    if (ps->open)
+        return EF_OK;
     ef_status st = ef_in_build_move(ps->b, ps->x, ps->y, ps->err);
-    if (st != EF_OK) *ps->err_off = at;
+    if (st != EF_OK)
+        *ps->err_off = at;
     ps->open = true;
     return st;
 }
 
 static ef_status builder_status(path_state *ps, size_t at, ef_status st)
 {
-    if (st != EF_OK) *ps->err_off = at;
+    if (st != EF_OK)
+        *ps->err_off = at;
     return st;
 }
 
@@ -113,8 +120,10 @@ static ef_status group(path_state *ps, char c, bool relative, size_t at)
     ef_q32 v[7];
     switch (c) {
     case 'M':
-        if ((st = number(ps, &v[0])) || (st = sep_number(ps, &v[1]))) return st;
-        if ((st = rel(ps, at, relative, ps->x, &v[0])) || (st = rel(ps, at, relative, ps->y, &v[1]))) return st;
+        if ((st = number(ps, &v[0])) || (st = sep_number(ps, &v[1])))
+            return st;
+        if ((st = rel(ps, at, relative, ps->x, &v[0])) || (st = rel(ps, at, relative, ps->y, &v[1])))
+            return st;
         ps->x = ps->sx = v[0];
         ps->y = ps->sy = v[1];
         ps->open = true;
@@ -123,23 +132,28 @@ static ef_status group(path_state *ps, char c, bool relative, size_t at)
     case 'H':
     case 'V':
         if (c == 'L') {
-            if ((st = number(ps, &v[0])) || (st = sep_number(ps, &v[1]))) return st;
-            if ((st = rel(ps, at, relative, ps->x, &v[0])) || (st = rel(ps, at, relative, ps->y, &v[1]))) return st;
+            if ((st = number(ps, &v[0])) || (st = sep_number(ps, &v[1])))
+                return st;
+            if ((st = rel(ps, at, relative, ps->x, &v[0])) || (st = rel(ps, at, relative, ps->y, &v[1])))
+                return st;
         } else if (c == 'H') {
-            if ((st = number(ps, &v[0])) || (st = rel(ps, at, relative, ps->x, &v[0]))) return st;
+            if ((st = number(ps, &v[0])) || (st = rel(ps, at, relative, ps->x, &v[0])))
+                return st;
             v[1] = ps->y;
         } else {
-            if ((st = number(ps, &v[1])) || (st = rel(ps, at, relative, ps->y, &v[1]))) return st;
+            if ((st = number(ps, &v[1])) || (st = rel(ps, at, relative, ps->y, &v[1])))
+                return st;
             v[0] = ps->x;
         }
-        if ((st = ensure_open(ps, at))) return st;
+        if ((st = ensure_open(ps, at)))
+            return st;
         ps->x = v[0];
         ps->y = v[1];
         return builder_status(ps, at, ef_in_build_line(ps->b, v[0], v[1], ps->err));
     case 'C':
     case 'S': {
         ef_q32 p[8];
-        int first = c == 'C' ? 1 : 2;          /* first control point read from the text */
+        int first = c == 'C' ? 1 : 2; /* first control point read from the text */
         p[0] = ps->x;
         p[1] = ps->y;
         for (int i = first; i < 4; i++) {
@@ -157,7 +171,8 @@ static ef_status group(path_state *ps, char c, bool relative, size_t at)
                 p[3] = ps->y;
             }
         }
-        if ((st = ensure_open(ps, at))) return st;
+        if ((st = ensure_open(ps, at)))
+            return st;
         ps->cx = p[4];
         ps->cy = p[5];
         ps->x = p[6];
@@ -185,10 +200,13 @@ static ef_status group(path_state *ps, char c, bool relative, size_t at)
                 p[2] = ps->x;
                 p[3] = ps->y;
             }
-            if ((st = number(ps, &p[4])) || (st = sep_number(ps, &p[5]))) return st;
-            if ((st = rel(ps, at, relative, ps->x, &p[4])) || (st = rel(ps, at, relative, ps->y, &p[5]))) return st;
+            if ((st = number(ps, &p[4])) || (st = sep_number(ps, &p[5])))
+                return st;
+            if ((st = rel(ps, at, relative, ps->x, &p[4])) || (st = rel(ps, at, relative, ps->y, &p[5])))
+                return st;
         }
-        if ((st = ensure_open(ps, at))) return st;
+        if ((st = ensure_open(ps, at)))
+            return st;
         ps->cx = p[2];
         ps->cy = p[3];
         ps->x = p[4];
@@ -201,27 +219,44 @@ static ef_status group(path_state *ps, char c, bool relative, size_t at)
             (st = flag(ps, &large)) || (st = flag(ps, &sweep)) || (st = sep_number(ps, &v[3])) ||
             (st = sep_number(ps, &v[4])))
             return st;
-        if ((st = rel(ps, at, relative, ps->x, &v[3])) || (st = rel(ps, at, relative, ps->y, &v[4]))) return st;
-        if ((st = ensure_open(ps, at))) return st;
+        if ((st = rel(ps, at, relative, ps->x, &v[3])) || (st = rel(ps, at, relative, ps->y, &v[4])))
+            return st;
+        if ((st = ensure_open(ps, at)))
+            return st;
         ef_q32 x0 = ps->x, y0 = ps->y;
         ps->x = v[3];
         ps->y = v[4];
         return builder_status(ps, at,
                               ef_in_build_svg_arc(ps->b, x0, y0, v[0], v[1], v[2], large, sweep, v[3], v[4], ps->err));
     }
-    default:
-        return fail(ps, at, EF_ERR_SYNTAX, "unknown path command");
+    default: return fail(ps, at, EF_ERR_SYNTAX, "unknown path command");
     }
 }
 
 static bool is_command(char c)
 {
     switch (c) {
-    case 'M': case 'm': case 'L': case 'l': case 'H': case 'h': case 'V': case 'v': case 'C': case 'c':
-    case 'S': case 's': case 'Q': case 'q': case 'T': case 't': case 'A': case 'a': case 'Z': case 'z':
-        return true;
-    default:
-        return false;
+    case 'M':
+    case 'm':
+    case 'L':
+    case 'l':
+    case 'H':
+    case 'h':
+    case 'V':
+    case 'v':
+    case 'C':
+    case 'c':
+    case 'S':
+    case 's':
+    case 'Q':
+    case 'q':
+    case 'T':
+    case 't':
+    case 'A':
+    case 'a':
+    case 'Z':
+    case 'z': return true;
+    default: return false;
     }
 }
 
@@ -230,7 +265,8 @@ ef_status ef_in_path_parse(const char *d, size_t len, ef_in_builder *b, size_t *
     path_state ps = { { d, len, 0 }, b, err, err_off, { 0 }, { 0 }, { 0 }, { 0 }, { 0 }, { 0 }, '\0', false };
     ef_status st;
     ef_in_lex_wsp(&ps.l);
-    if (ef_in_lex_end(&ps.l)) return EF_OK;
+    if (ef_in_lex_end(&ps.l))
+        return EF_OK;
     char first = ef_in_lex_peek(&ps.l);
     if (first != 'M' && first != 'm')
         return fail(&ps, ps.l.pos, EF_ERR_SYNTAX, "path data must begin with a moveto (M or m)");
@@ -240,7 +276,8 @@ ef_status ef_in_path_parse(const char *d, size_t len, ef_in_builder *b, size_t *
         if (!is_command(c)) {
             if (ef_in_lex_at_number(&ps.l) && (ps.last == 'Z'))
                 return fail(&ps, at, EF_ERR_SYNTAX, "closepath (Z) takes no arguments");
-            if (c == ',') return fail(&ps, at, EF_ERR_SYNTAX, "unexpected ','");
+            if (c == ',')
+                return fail(&ps, at, EF_ERR_SYNTAX, "unexpected ','");
             return fail(&ps, at, EF_ERR_SYNTAX, "path command expected");
         }
         ps.l.pos++;
@@ -263,15 +300,18 @@ ef_status ef_in_path_parse(const char *d, size_t len, ef_in_builder *b, size_t *
                     return fail(&ps, at, EF_ERR_SYNTAX, "missing arguments after path command");
                 return fail(&ps, gat, EF_ERR_SYNTAX, "number expected");
             }
-            if ((st = group(&ps, C, relative, at)) != EF_OK) return st;
+            if ((st = group(&ps, C, relative, at)) != EF_OK)
+                return st;
             ps.last = C;
-            if (C == 'M') C = 'L';   /* implicit lineto after moveto, same relativity */
+            if (C == 'M')
+                C = 'L'; /* implicit lineto after moveto, same relativity */
             int sep = ef_in_lex_sep(&ps.l);
             if (ef_in_lex_at_number(&ps.l)) {
                 at = ps.l.pos;
                 continue;
             }
-            if (sep == 2) return fail(&ps, ps.l.pos, EF_ERR_SYNTAX, "number expected after ','");
+            if (sep == 2)
+                return fail(&ps, ps.l.pos, EF_ERR_SYNTAX, "number expected after ','");
             break;
         }
     }
@@ -292,7 +332,8 @@ ef_status ef_in_points_parse(const char *s, size_t len, ef_in_builder *b, size_t
             *err_off = l.pos;
             return ef_error_set(err, EF_ERR_SYNTAX, NULL, 0, 0, "number expected after ','");
         }
-        if (ef_in_lex_end(&l)) break;
+        if (ef_in_lex_end(&l))
+            break;
         at = l.pos;
         ef_q32 v;
         if ((st = ef_in_lex_number(&l, &v, err)) != EF_OK) {

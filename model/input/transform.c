@@ -25,12 +25,14 @@
 bool ef_in_i128_exceeds(ef_i128 v, unsigned bits)
 {
     uint64_t hi = (uint64_t)v.hi, lo = v.lo;
-    if (v.hi < 0) {                         /* magnitude: two's complement negate */
+    if (v.hi < 0) { /* magnitude: two's complement negate */
         lo = ~lo + 1u;
         hi = ~hi + (lo == 0 ? 1u : 0u);
-        if (hi >> 63) return true;          /* -2^127 */
+        if (hi >> 63)
+            return true; /* -2^127 */
     }
-    if (bits >= 64) return (hi >> (bits - 64)) != 0;
+    if (bits >= 64)
+        return (hi >> (bits - 64)) != 0;
     return hi != 0 || (lo >> bits) != 0;
 }
 
@@ -59,7 +61,8 @@ bool ef_in_i128_round_shr(ef_i128 v, unsigned n, int64_t *out)
         rhi = t.hi < 0 ? -1 : 0;
     }
     /* Fits int64 iff the high word is the sign extension of the low one. */
-    if (!((rhi == 0 && (rlo >> 63) == 0) || (rhi == -1 && (rlo >> 63) == 1))) return false;
+    if (!((rhi == 0 && (rlo >> 63) == 0) || (rhi == -1 && (rlo >> 63) == 1)))
+        return false;
     *out = ef_wrap_i64(rlo);
     return true;
 }
@@ -86,10 +89,12 @@ ef_in_affine ef_in_affine_scale_translate(ef_q32 sx, ef_q32 sy, ef_q32 tx, ef_q3
 bool ef_in_q32_dot2(ef_q32 p, ef_q32 q, ef_q32 r, ef_q32 s, ef_q32 t, ef_q32 *out)
 {
     ef_i128 a = ef_mul_i64_wide(p.v, q.v), b = ef_mul_i64_wide(r.v, s.v);
-    if (ef_in_i128_exceeds(a, 125) || ef_in_i128_exceeds(b, 125)) return false;
+    if (ef_in_i128_exceeds(a, 125) || ef_in_i128_exceeds(b, 125))
+        return false;
     ef_i128 sum = ef_in_i128_add(ef_in_i128_add(a, b), ef_in_i128_from_i64_shl(t.v, 32));
     int64_t v;
-    if (!ef_in_i128_round_shr(sum, 32, &v)) return false;
+    if (!ef_in_i128_round_shr(sum, 32, &v))
+        return false;
     *out = ef_q32_raw(v);
     return true;
 }
@@ -139,7 +144,8 @@ ef_status ef_in_affine_apply_q16(const ef_in_affine *m, ef_q32 x, ef_q32 y, int6
     ef_i128 ex, ey;
     if (!apply_exact(m, x, y, &ex, &ey) || !ef_in_i128_round_shr(ex, 48, X) || !ef_in_i128_round_shr(ey, 48, Y))
         return EF_ERR_RANGE;
-    if (*X <= -lim || *X >= lim || *Y <= -lim || *Y >= lim) return EF_ERR_RANGE;
+    if (*X <= -lim || *X >= lim || *Y <= -lim || *Y >= lim)
+        return EF_ERR_RANGE;
     return EF_OK;
 }
 
@@ -168,48 +174,64 @@ void ef_in_sincos_deg(ef_q32 deg, ef_q32 *s, ef_q32 *c)
 static bool name_is(const char *s, size_t n, const char *lit)
 {
     size_t k = 0;
-    while (lit[k] != '\0') k++;
-    if (k != n) return false;
+    while (lit[k] != '\0')
+        k++;
+    if (k != n)
+        return false;
     for (size_t i = 0; i < n; i++)
-        if (s[i] != lit[i]) return false;
+        if (s[i] != lit[i])
+            return false;
     return true;
 }
 
-static ef_status one_transform(const char *name, size_t nlen, const ef_q32 *v, int n, ef_in_affine *t,
-                               ef_error *err)
+static ef_status one_transform(const char *name, size_t nlen, const ef_q32 *v, int n, ef_in_affine *t, ef_error *err)
 {
     const ef_q32 zero = ef_q32_raw(0), one = ef_q32_raw(EF_Q32_ONE);
     if (name_is(name, nlen, "matrix")) {
-        if (n != 6) goto arity;
-        t->a = v[0]; t->b = v[1]; t->c = v[2]; t->d = v[3]; t->e = v[4]; t->f = v[5];
+        if (n != 6)
+            goto arity;
+        t->a = v[0];
+        t->b = v[1];
+        t->c = v[2];
+        t->d = v[3];
+        t->e = v[4];
+        t->f = v[5];
     } else if (name_is(name, nlen, "translate")) {
-        if (n != 1 && n != 2) goto arity;
+        if (n != 1 && n != 2)
+            goto arity;
         *t = ef_in_affine_scale_translate(one, one, v[0], n == 2 ? v[1] : zero);
     } else if (name_is(name, nlen, "scale")) {
-        if (n != 1 && n != 2) goto arity;
+        if (n != 1 && n != 2)
+            goto arity;
         *t = ef_in_affine_scale_translate(v[0], n == 2 ? v[1] : v[0], zero, zero);
     } else if (name_is(name, nlen, "rotate")) {
-        if (n != 1 && n != 3) goto arity;
+        if (n != 1 && n != 3)
+            goto arity;
         ef_q32 s, c;
         ef_in_sincos_deg(v[0], &s, &c);
         ef_in_affine r = { c, s, ef_q32_raw(-s.v), c, zero, zero };
         if (n == 3) {
             /* translate(cx, cy) rotate(a) translate(-cx, -cy) */
-            if (v[1].v == INT64_MIN || v[2].v == INT64_MIN) goto range;
+            if (v[1].v == INT64_MIN || v[2].v == INT64_MIN)
+                goto range;
             ef_in_affine to = ef_in_affine_scale_translate(one, one, v[1], v[2]);
             ef_in_affine back = ef_in_affine_scale_translate(one, one, ef_q32_raw(-v[1].v), ef_q32_raw(-v[2].v));
-            if (ef_in_affine_mul(&to, &r, &r) != EF_OK || ef_in_affine_mul(&r, &back, &r) != EF_OK) goto range;
+            if (ef_in_affine_mul(&to, &r, &r) != EF_OK || ef_in_affine_mul(&r, &back, &r) != EF_OK)
+                goto range;
         }
         *t = r;
     } else if (name_is(name, nlen, "skewX") || name_is(name, nlen, "skewY")) {
-        if (n != 1) goto arity;
+        if (n != 1)
+            goto arity;
         ef_q32 s, c, tn;
         ef_in_sincos_deg(v[0], &s, &c);
         if (c.v == 0 || !ef_q32_div(s, c, &tn))
             return ef_error_set(err, EF_ERR_RANGE, NULL, 0, 0, "skew angle too close to 90 degrees");
         *t = ef_in_affine_identity();
-        if (name[4] == 'X') t->c = tn;
-        else t->b = tn;
+        if (name[4] == 'X')
+            t->c = tn;
+        else
+            t->b = tn;
     } else {
         return ef_error_set(err, EF_ERR_SYNTAX, NULL, 0, 0, "unknown transform '%.*s'", (int)(nlen > 32 ? 32 : nlen),
                             name);
@@ -230,7 +252,8 @@ ef_status ef_in_transform_parse(const char *s, size_t len, ef_in_affine *out, si
     ef_in_lex_wsp(&l);
     while (!ef_in_lex_end(&l)) {
         size_t name0 = l.pos;
-        while (!ef_in_lex_end(&l) && ((l.s[l.pos] >= 'a' && l.s[l.pos] <= 'z') || (l.s[l.pos] >= 'A' && l.s[l.pos] <= 'Z')))
+        while (!ef_in_lex_end(&l) &&
+               ((l.s[l.pos] >= 'a' && l.s[l.pos] <= 'z') || (l.s[l.pos] >= 'A' && l.s[l.pos] <= 'Z')))
             l.pos++;
         size_t nlen = l.pos - name0;
         if (nlen == 0) {
@@ -267,7 +290,7 @@ ef_status ef_in_transform_parse(const char *s, size_t len, ef_in_affine *out, si
             n++;
             ef_in_lex_wsp(&l);
         }
-        l.pos++;  /* ')' */
+        l.pos++; /* ')' */
         ef_in_affine t;
         if ((st = one_transform(s + name0, nlen, v, n, &t, err)) != EF_OK) {
             *err_off = name0;

@@ -16,7 +16,7 @@
 /* Widest payload (et_wr, 181 bits) in 32-bit chunks: the package's EF_PAYLOAD_BITS. */
 #define EF_DPI_PAYLOAD_BITS 181
 #define EF_DPI_CHUNKS ((EF_DPI_PAYLOAD_BITS + 31) / 32)
-#define EF_DPI_CMD_CHUNKS 4      /* bit [99:0] */
+#define EF_DPI_CMD_CHUNKS 4 /* bit [99:0] */
 
 /* The prototypes Verilator generates (its __Dpi.h), here so that a
  * mismatch between this file and the package's imports fails to compile
@@ -60,7 +60,7 @@ int ef_dpi_cmd(void *h, const svBitVecVal *word)
     uint64_t w[2] = { 0, 0 };
     for (int i = 0; i < EF_DPI_CMD_CHUNKS; i++)
         w[i / 2] |= (uint64_t)word[i] << (32 * (i % 2));
-    w[1] &= (UINT64_C(1) << 36) - 1;     /* bit [99:0]: the chunk's upper bits are not the vector's */
+    w[1] &= (UINT64_C(1) << 36) - 1; /* bit [99:0]: the chunk's upper bits are not the vector's */
     return ef_mstream_cmd(h, w);
 }
 
@@ -88,15 +88,12 @@ static int take(void *h, int iface, long long *cycle, svBitVecVal *payload, int 
     const int st = pop ? ef_mstream_pop(h, iface, &t) : ef_mstream_peek(h, iface, &t);
     if (st != EF_MS_OK)
         memset(&t, 0, sizeof t);
-    *cycle = (long long)t.cycle;         /* < 2^48 */
+    *cycle = (long long)t.cycle; /* < 2^48 */
     to_sv(&t, payload);
     return st;
 }
 
-int ef_dpi_pop(void *h, int iface, long long *cycle, svBitVecVal *payload)
-{
-    return take(h, iface, cycle, payload, 1);
-}
+int ef_dpi_pop(void *h, int iface, long long *cycle, svBitVecVal *payload) { return take(h, iface, cycle, payload, 1); }
 
 int ef_dpi_peek(void *h, int iface, long long *cycle, svBitVecVal *payload)
 {
@@ -156,7 +153,7 @@ int ef_dpi_field_is(int iface, const char *name, const svBitVecVal *ones)
         ef_txn want = { .iface = (uint8_t)iface }, got;
         ef_txn_set_field(&want, k, ~UINT64_C(0));
         memset(&got, 0, sizeof got);
-        for (int i = 0; i < EF_DPI_CHUNKS; i++)     /* all bits, above P too: a wide field would show */
+        for (int i = 0; i < EF_DPI_CHUNKS; i++) /* all bits, above P too: a wide field would show */
             got.w[i / 2] |= (uint64_t)ones[i] << (32 * (i % 2));
         return memcmp(want.w, got.w, sizeof want.w) == 0;
     }

@@ -38,19 +38,19 @@ extern "C" {
  * while transactions queued before it can still be popped. */
 typedef enum ef_mstream_status {
     EF_MS_OK = 0,
-    EF_MS_EMPTY = 1,          /* nothing queued on the interface yet: feed more commands */
-    EF_MS_END = 2,            /* the frame has ended and the interface has nothing more */
-    EF_MS_MISMATCH = 3,       /* ef_mstream_expect: the actual transaction differs (see the message) */
-    EF_MS_ERR_ARG = -1,       /* a NULL handle, a bad interface number or parameter */
-    EF_MS_ERR_NOMEM = -2,     /* out of memory */
-    EF_MS_ERR_OP = -3,        /* a command with an op code that is not in docs/microarch.md 3.1 */
-    EF_MS_ERR_FIELD = -4,     /* a command field outside its range (a reserved field not 0, a rule not 0/1, ...) */
-    EF_MS_ERR_ORDER = -5,     /* a command out of place (EDGE outside SHAPE..SHAPE_END, a FRAME inside a frame, ...) */
-    EF_MS_ERR_LIMIT = -6,     /* over the hardware's parameters: a canvas over width_max x height_max, more than
+    EF_MS_EMPTY = 1,        /* nothing queued on the interface yet: feed more commands */
+    EF_MS_END = 2,          /* the frame has ended and the interface has nothing more */
+    EF_MS_MISMATCH = 3,     /* ef_mstream_expect: the actual transaction differs (see the message) */
+    EF_MS_ERR_ARG = -1,     /* a NULL handle, a bad interface number or parameter */
+    EF_MS_ERR_NOMEM = -2,   /* out of memory */
+    EF_MS_ERR_OP = -3,      /* a command with an op code that is not in docs/microarch.md 3.1 */
+    EF_MS_ERR_FIELD = -4,   /* a command field outside its range (a reserved field not 0, a rule not 0/1, ...) */
+    EF_MS_ERR_ORDER = -5,   /* a command out of place (EDGE outside SHAPE..SHAPE_END, a FRAME inside a frame, ...) */
+    EF_MS_ERR_LIMIT = -6,   /* over the hardware's parameters: a canvas over width_max x height_max, more than
                                  edges_max EDGE commands in one shape */
-    EF_MS_ERR_CONTOUR = -7,   /* a shape's edges do not chain into closed contours (the model takes polygons) */
-    EF_MS_ERR_MODEL = -8,     /* the model refused the shape (its ef_status is in the message) */
-    EF_MS_ERR_STOPPED = -9    /* an earlier command failed; the handle takes no more */
+    EF_MS_ERR_CONTOUR = -7, /* a shape's edges do not chain into closed contours (the model takes polygons) */
+    EF_MS_ERR_MODEL = -8,   /* the model refused the shape (its ef_status is in the message) */
+    EF_MS_ERR_STOPPED = -9  /* an earlier command failed; the handle takes no more */
 } ef_mstream_status;
 
 /* A fixed English text for a status ("out of memory"), never NULL. */
@@ -61,12 +61,12 @@ const char *ef_mstream_strerror(int status);
 #define EF_MS_RULE_CMD (-1)
 
 typedef struct ef_mstream_params {
-    int samples;              /* 8, 16 or 32 (the RTL's NS) */
-    int32_t width_max;        /* largest canvas a FRAME may set (the RTL's W_MAX), 1..16384 */
-    int32_t height_max;       /* (H_MAX), 1..16384 */
-    uint32_t edges_max;       /* most EDGE commands in one shape (E_MAX), 1..2^22 */
-    int rule;                 /* EF_MS_RULE_CMD, EF_RULE_NONZERO or EF_RULE_EVENODD */
-    uint32_t ifaces;          /* interfaces to queue, bit i = ef_iface i (EF_IF_ALL); others are not kept */
+    int samples;        /* 8, 16 or 32 (the RTL's NS) */
+    int32_t width_max;  /* largest canvas a FRAME may set (the RTL's W_MAX), 1..16384 */
+    int32_t height_max; /* (H_MAX), 1..16384 */
+    uint32_t edges_max; /* most EDGE commands in one shape (E_MAX), 1..2^22 */
+    int rule;           /* EF_MS_RULE_CMD, EF_RULE_NONZERO or EF_RULE_EVENODD */
+    uint32_t ifaces;    /* interfaces to queue, bit i = ef_iface i (EF_IF_ALL); others are not kept */
 } ef_mstream_params;
 
 /* samples 8, 16384 x 16384, 2^22 edges, each shape's own rule, all interfaces. */

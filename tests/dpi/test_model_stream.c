@@ -36,9 +36,9 @@
 typedef struct vec_set {
     char stim[512], exp[512];
     int samples, rule;
-    ef_vec_dump cmd;                  /* the stimulus */
-    ef_vec_dump want[EF_IF_COUNT];    /* EXP_DIR's files */
-    uint64_t cycles;                  /* manifest.json's "cycles" */
+    ef_vec_dump cmd;               /* the stimulus */
+    ef_vec_dump want[EF_IF_COUNT]; /* EXP_DIR's files */
+    uint64_t cycles;               /* manifest.json's "cycles" */
 } vec_set;
 
 static vec_set sets[8];
@@ -83,8 +83,9 @@ static int load_sets(int argc, char **argv)
             fprintf(stderr, "test_model_stream: bad set '%s' (STIM_DIR,EXP_DIR,SAMPLES,RULE)\n", argv[i]);
             return 0;
         }
-        s->rule = !strcmp(rule, "scene") ? EF_MS_RULE_CMD : !strcmp(rule, "evenodd") ? EF_RULE_EVENODD
-                                                                                     : EF_RULE_NONZERO;
+        s->rule = !strcmp(rule, "scene")     ? EF_MS_RULE_CMD
+                  : !strcmp(rule, "evenodd") ? EF_RULE_EVENODD
+                                             : EF_RULE_NONZERO;
         nsets++;
     }
     return nsets > 0;
@@ -173,8 +174,8 @@ static int run_bulk(const vec_set *s, char *why, size_t size)
         while (ok && (st = ef_mstream_pop(m, i, &t)) == EF_MS_OK)
             ok = same_as_file(s, i, k++, &t, why, size);
         if (ok && (st != EF_MS_END || k != s->want[i].seq[i].n)) {
-            snprintf(why, size, "%s: %zu transactions then status %d, the file has %zu", ef_iface_get(i)->name, k,
-                     st, s->want[i].seq[i].n);
+            snprintf(why, size, "%s: %zu transactions then status %d, the file has %zu", ef_iface_get(i)->name, k, st,
+                     s->want[i].seq[i].n);
             ok = 0;
         }
     }
@@ -199,8 +200,8 @@ static void test_bulk_equals_files(void **state)
         uint64_t n = 0;
         for (int i = 0; i < EF_IF_COUNT; i++)
             n += sets[k].want[i].seq[i].n;
-        printf("model stream: %s (%d samples) equals %s: %" PRIu64 " transactions, %" PRIu64 " cycles\n",
-               sets[k].stim, sets[k].samples, sets[k].exp, n, sets[k].cycles);
+        printf("model stream: %s (%d samples) equals %s: %" PRIu64 " transactions, %" PRIu64 " cycles\n", sets[k].stim,
+               sets[k].samples, sets[k].exp, n, sets[k].cycles);
     }
 }
 
@@ -326,7 +327,7 @@ static void test_expect(void **state)
 
     ef_vec_dump_txn(&s->want[EF_IF_SPAN], EF_IF_SPAN, 1, &t);
     const uint64_t len = ef_txn_field(&t, 2);
-    ef_txn_set_field(&t, 2, len - 1);                 /* a span cut one pixel short */
+    ef_txn_set_field(&t, 2, len - 1); /* a span cut one pixel short */
     assert_int_equal(ef_mstream_expect(m, &t, 1), EF_MS_MISMATCH);
     const char *msg = ef_mstream_message(m);
     char want[64];
@@ -336,21 +337,20 @@ static void test_expect(void **state)
         fail_msg("message '%s'", msg);
 
     ef_vec_dump_txn(&s->want[EF_IF_SPAN], EF_IF_SPAN, 2, &t);
-    t.cycle += 2;                                     /* two cycles late */
+    t.cycle += 2; /* two cycles late */
     assert_int_equal(ef_mstream_expect(m, &t, 1), EF_MS_MISMATCH);
     if (!strstr(ef_mstream_message(m), "cycle differs: expected") || !strstr(ef_mstream_message(m), "late by 2"))
         fail_msg("message '%s'", ef_mstream_message(m));
     ef_vec_dump_txn(&s->want[EF_IF_SPAN], EF_IF_SPAN, 3, &t);
-    t.cycle += 2;                                     /* --transactions style: the cycle is not compared */
+    t.cycle += 2; /* --transactions style: the cycle is not compared */
     assert_int_equal(ef_mstream_expect(m, &t, 0), EF_MS_OK);
 
     ef_vec_dump_txn(&s->want[EF_IF_SPAN], EF_IF_SPAN, 4, &t);
     const uint64_t c4 = t.cycle;
-    t.cycle -= 1;                                     /* one early, and the mask differs */
+    t.cycle -= 1; /* one early, and the mask differs */
     ef_txn_set_field(&t, 3, ef_txn_field(&t, 3) ^ 1u);
     assert_int_equal(ef_mstream_expect(m, &t, 1), EF_MS_MISMATCH);
-    snprintf(want, sizeof want, "*; and the cycle differs too (expected %" PRIu64 ", actual %" PRIu64 ")", c4,
-             c4 - 1);
+    snprintf(want, sizeof want, "*; and the cycle differs too (expected %" PRIu64 ", actual %" PRIu64 ")", c4, c4 - 1);
     if (!strstr(ef_mstream_message(m), want) || !strstr(ef_mstream_message(m), "mask=0x"))
         fail_msg("message '%s' (want '%s')", ef_mstream_message(m), want);
 
@@ -380,7 +380,7 @@ static ef_mstream *small_model(int32_t wmax, int32_t hmax, uint32_t emax)
     return m;
 }
 
-#define Q(v) ((v) * 256)   /* Q16.8 */
+#define Q(v) ((v)*256) /* Q16.8 */
 
 /* Feeds a frame's commands up to the failing one; checks its status, that
  * the message names the command number and says `what`, and stickiness. */
@@ -410,37 +410,48 @@ static void test_refusals(void **state)
            "canvas 65x10 over width_max x height_max 64x64");
     refuse(small_model(64, 64, 16), 1, (const int32_t[][5]){ { F, 0, 10, 0, 0 } }, EF_MS_ERR_FIELD, "canvas 0x10");
     refuse(small_model(64, 64, 16), 1, (const int32_t[][5]){ { F, 8, 8, 1, 0 } }, EF_MS_ERR_FIELD, "must be 0");
-    refuse(small_model(64, 64, 16), 2, (const int32_t[][5]){ { F, 8, 8, 0, 0 }, { E, 0, 0, 0, 0 } },
-           EF_MS_ERR_ORDER, "EDGE outside SHAPE");
-    refuse(small_model(64, 64, 16), 2, (const int32_t[][5]){ { F, 8, 8, 0, 0 }, { F, 8, 8, 0, 0 } },
-           EF_MS_ERR_ORDER, "FRAME inside a frame");
+    refuse(small_model(64, 64, 16), 2, (const int32_t[][5]){ { F, 8, 8, 0, 0 }, { E, 0, 0, 0, 0 } }, EF_MS_ERR_ORDER,
+           "EDGE outside SHAPE");
+    refuse(small_model(64, 64, 16), 2, (const int32_t[][5]){ { F, 8, 8, 0, 0 }, { F, 8, 8, 0, 0 } }, EF_MS_ERR_ORDER,
+           "FRAME inside a frame");
     refuse(small_model(64, 64, 16), 1, (const int32_t[][5]){ { S, 0, 0, 255, 0 } }, EF_MS_ERR_ORDER,
            "SHAPE outside a frame");
-    refuse(small_model(64, 64, 16), 2, (const int32_t[][5]){ { F, 8, 8, 0, 0 }, { S, 2, 0, 255, 0 } },
-           EF_MS_ERR_FIELD, "rule a=2");
-    refuse(small_model(64, 64, 16), 2, (const int32_t[][5]){ { F, 8, 8, 0, 0 }, { S, 0, 0, 256, 0 } },
-           EF_MS_ERR_FIELD, "alpha c=256");
-    refuse(small_model(64, 64, 16), 3, (const int32_t[][5]){ { F, 8, 8, 0, 0 }, { S, 0, 0, 255, 0 }, { FE, 0, 0, 0, 0 } },
-           EF_MS_ERR_ORDER, "FRAME_END inside a shape");
+    refuse(small_model(64, 64, 16), 2, (const int32_t[][5]){ { F, 8, 8, 0, 0 }, { S, 2, 0, 255, 0 } }, EF_MS_ERR_FIELD,
+           "rule a=2");
+    refuse(small_model(64, 64, 16), 2, (const int32_t[][5]){ { F, 8, 8, 0, 0 }, { S, 0, 0, 256, 0 } }, EF_MS_ERR_FIELD,
+           "alpha c=256");
+    refuse(small_model(64, 64, 16), 3,
+           (const int32_t[][5]){ { F, 8, 8, 0, 0 }, { S, 0, 0, 255, 0 }, { FE, 0, 0, 0, 0 } }, EF_MS_ERR_ORDER,
+           "FRAME_END inside a shape");
     /* Two edges of a triangle, then SHAPE_END: the contour is open. */
     refuse(small_model(64, 64, 16), 5,
-           (const int32_t[][5]){ { F, 8, 8, 0, 0 }, { S, 0, 0, 255, 0 }, { E, Q(1), Q(1), Q(5), Q(1) },
-                                 { E, Q(5), Q(1), Q(3), Q(6) }, { SE, 0, 0, 0, 0 } },
+           (const int32_t[][5]){ { F, 8, 8, 0, 0 },
+                                 { S, 0, 0, 255, 0 },
+                                 { E, Q(1), Q(1), Q(5), Q(1) },
+                                 { E, Q(5), Q(1), Q(3), Q(6) },
+                                 { SE, 0, 0, 0, 0 } },
            EF_MS_ERR_CONTOUR, "is not closed");
     /* An edge that does not start where the last one ended. */
     refuse(small_model(64, 64, 16), 4,
-           (const int32_t[][5]){ { F, 8, 8, 0, 0 }, { S, 0, 0, 255, 0 }, { E, Q(1), Q(1), Q(5), Q(1) },
-                                 { E, Q(2), Q(2), Q(3), Q(6) } },
+           (const int32_t[][5]){
+               { F, 8, 8, 0, 0 }, { S, 0, 0, 255, 0 }, { E, Q(1), Q(1), Q(5), Q(1) }, { E, Q(2), Q(2), Q(3), Q(6) } },
            EF_MS_ERR_CONTOUR, "does not start where the previous edge ended");
     /* E_MAX = 2: a triangle's third edge is one too many. */
     refuse(small_model(64, 64, 2), 5,
-           (const int32_t[][5]){ { F, 8, 8, 0, 0 }, { S, 0, 0, 255, 0 }, { E, Q(1), Q(1), Q(5), Q(1) },
-                                 { E, Q(5), Q(1), Q(3), Q(6) }, { E, Q(3), Q(6), Q(1), Q(1) } },
+           (const int32_t[][5]){ { F, 8, 8, 0, 0 },
+                                 { S, 0, 0, 255, 0 },
+                                 { E, Q(1), Q(1), Q(5), Q(1) },
+                                 { E, Q(5), Q(1), Q(3), Q(6) },
+                                 { E, Q(3), Q(6), Q(1), Q(1) } },
            EF_MS_ERR_LIMIT, "more than edges_max = 2");
     /* A coordinate of -2^23 is outside |v| < 2^23: the model refuses the shape. */
     refuse(small_model(64, 64, 16), 6,
-           (const int32_t[][5]){ { F, 8, 8, 0, 0 }, { S, 0, 0, 255, 0 }, { E, -0x800000, Q(1), Q(5), Q(1) },
-                                 { E, Q(5), Q(1), Q(3), Q(6) }, { E, Q(3), Q(6), -0x800000, Q(1) }, { SE, 0, 0, 0, 0 } },
+           (const int32_t[][5]){ { F, 8, 8, 0, 0 },
+                                 { S, 0, 0, 255, 0 },
+                                 { E, -0x800000, Q(1), Q(5), Q(1) },
+                                 { E, Q(5), Q(1), Q(3), Q(6) },
+                                 { E, Q(3), Q(6), -0x800000, Q(1) },
+                                 { SE, 0, 0, 0, 0 } },
            EF_MS_ERR_MODEL, "the model refused the shape: invalid argument");
 
     /* Bits above bit 99. */
@@ -494,21 +505,26 @@ static void test_two_frames(void **state)
     const int32_t frame1[][5] = {
         { EF_OP_FRAME, 16, 12, 0, 0 },
         { EF_OP_SHAPE, 1, 0xff0000, 255, 0 },
-        { EF_OP_EDGE, Q(1), Q(1), Q(9), Q(1) }, { EF_OP_EDGE, Q(9), Q(1), Q(9), Q(9) },
-        { EF_OP_EDGE, Q(9), Q(9), Q(1), Q(9) }, { EF_OP_EDGE, Q(1), Q(9), Q(1), Q(1) },
-        { EF_OP_EDGE, Q(3), Q(3), Q(3), Q(6) }, { EF_OP_EDGE, Q(3), Q(6), Q(6), Q(6) },
+        { EF_OP_EDGE, Q(1), Q(1), Q(9), Q(1) },
+        { EF_OP_EDGE, Q(9), Q(1), Q(9), Q(9) },
+        { EF_OP_EDGE, Q(9), Q(9), Q(1), Q(9) },
+        { EF_OP_EDGE, Q(1), Q(9), Q(1), Q(1) },
+        { EF_OP_EDGE, Q(3), Q(3), Q(3), Q(6) },
+        { EF_OP_EDGE, Q(3), Q(6), Q(6), Q(6) },
         { EF_OP_EDGE, Q(6), Q(6), Q(3), Q(3) },
         { EF_OP_SHAPE_END, 0, 0, 0, 0 },
         /* A bow tie through its first point: A->B, B->A (closes), A->C, C->A. */
         { EF_OP_SHAPE, 0, 0x00ff00, 128, 0 },
-        { EF_OP_EDGE, Q(10), Q(2), Q(15), Q(2) + 77 }, { EF_OP_EDGE, Q(15), Q(2) + 77, Q(10), Q(2) },
-        { EF_OP_EDGE, Q(10), Q(2), Q(12), Q(11) }, { EF_OP_EDGE, Q(12), Q(11), Q(10), Q(2) },
+        { EF_OP_EDGE, Q(10), Q(2), Q(15), Q(2) + 77 },
+        { EF_OP_EDGE, Q(15), Q(2) + 77, Q(10), Q(2) },
+        { EF_OP_EDGE, Q(10), Q(2), Q(12), Q(11) },
+        { EF_OP_EDGE, Q(12), Q(11), Q(10), Q(2) },
         { EF_OP_SHAPE_END, 0, 0, 0, 0 },
         { EF_OP_FRAME_END, 0, 0, 0, 0 },
     };
     for (size_t k = 0; k < sizeof frame1 / sizeof *frame1; k++)
-        if (ef_mstream_cmd_fields(m, (unsigned)frame1[k][0], frame1[k][1], frame1[k][2], frame1[k][3],
-                                  frame1[k][4]) != EF_MS_OK)
+        if (ef_mstream_cmd_fields(m, (unsigned)frame1[k][0], frame1[k][1], frame1[k][2], frame1[k][3], frame1[k][4]) !=
+            EF_MS_OK)
             fail_msg("command %zu: %s", k + 1, ef_mstream_message(m));
     uint64_t cycles;
     assert_int_equal(ef_mstream_frame_cycles(m, &cycles), 1);
@@ -527,16 +543,16 @@ static void test_two_frames(void **state)
     const ef_image *img = ef_mstream_frame(m);
     assert_non_null(img);
     assert_int_equal(img->width, 16);
-    assert_int_equal(img->px[(2 * img->stride) + 7 * 4 + 0], 255);   /* pixel (7,2): inside, red, opaque */
+    assert_int_equal(img->px[(2 * img->stride) + 7 * 4 + 0], 255); /* pixel (7,2): inside, red, opaque */
     assert_int_equal(img->px[(2 * img->stride) + 7 * 4 + 3], 255);
-    assert_int_equal(img->px[(5 * img->stride) + 3 * 4 + 3], 0);     /* (3,5): wholly in the hole */
+    assert_int_equal(img->px[(5 * img->stride) + 3 * 4 + 3], 0); /* (3,5): wholly in the hole */
 
     assert_int_equal(ef_mstream_cmd_fields(m, EF_OP_FRAME, 8, 8, 0, 0), EF_MS_OK);
     assert_int_equal(ef_mstream_frame_cycles(m, &cycles), 0);
     assert_int_equal(ef_mstream_pop(m, EF_IF_CMD, &t), EF_MS_OK);
     assert_int_equal(t.cycle, 0);
     assert_int_equal(ef_txn_field(&t, 1), 8);
-    assert_int_equal(ef_mstream_pop(m, EF_IF_PIX, &t), EF_MS_EMPTY);   /* frame open: feed more */
+    assert_int_equal(ef_mstream_pop(m, EF_IF_PIX, &t), EF_MS_EMPTY); /* frame open: feed more */
     assert_int_equal(ef_mstream_cmd_fields(m, EF_OP_FRAME_END, 0, 0, 0, 0), EF_MS_OK);
     assert_int_equal(ef_mstream_pop(m, EF_IF_PIX, &t), EF_MS_END);
     img = ef_mstream_frame(m);
@@ -552,9 +568,8 @@ int main(int argc, char **argv)
         return 2;
     }
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_bulk_equals_files), cmocka_unit_test(test_interleaved),
-        cmocka_unit_test(test_two_models),        cmocka_unit_test(test_threads),
-        cmocka_unit_test(test_expect),            cmocka_unit_test(test_refusals),
+        cmocka_unit_test(test_bulk_equals_files), cmocka_unit_test(test_interleaved), cmocka_unit_test(test_two_models),
+        cmocka_unit_test(test_threads),           cmocka_unit_test(test_expect),      cmocka_unit_test(test_refusals),
         cmocka_unit_test(test_two_frames),
     };
     return cmocka_run_group_tests(tests, setup_sets, NULL);

@@ -35,7 +35,7 @@ typedef struct config {
     int filter, subpixel;
 } config;
 static const config all_configs[] = {
-    { "box-rgb", EF_FILTER_BOX, EF_SUBPIXEL_RGB },  { "box-bgr", EF_FILTER_BOX, EF_SUBPIXEL_BGR },
+    { "box-rgb", EF_FILTER_BOX, EF_SUBPIXEL_RGB },     { "box-bgr", EF_FILTER_BOX, EF_SUBPIXEL_BGR },
     { "tent-none", EF_FILTER_TENT, EF_SUBPIXEL_NONE }, { "tent-rgb", EF_FILTER_TENT, EF_SUBPIXEL_RGB },
     { "tent-bgr", EF_FILTER_TENT, EF_SUBPIXEL_BGR },
 };
@@ -61,8 +61,8 @@ static void die(const char *what)
 
 /* One polygon, one rule, one config: model against oracle.  want (W*H*3)
  * receives the oracle's sums (for the compositing check).  Returns 0 if equal. */
-static int compare_cov(const char *what, const eo_polygon *op, int rule_eo, int samples, int W, int H,
-                       const config *cf, ef_ctx *ctx, uint32_t *want, uint32_t *got)
+static int compare_cov(const char *what, const eo_polygon *op, int rule_eo, int samples, int W, int H, const config *cf,
+                       ef_ctx *ctx, uint32_t *want, uint32_t *got)
 {
     const size_t n = (size_t)W * (size_t)H * 3;
     const int orc = eo_filter_eval(op, samples, W, H, cf->filter, cf->subpixel, rule_eo, want);
@@ -75,7 +75,7 @@ static int compare_cov(const char *what, const eo_polygon *op, int rule_eo, int 
     if (orc == EO_ERR_RANGE || st != EF_OK) {
         if (orc == EO_ERR_RANGE && st == EF_ERR_ARG) {
             refused++;
-            return 0;                                 /* both refuse it */
+            return 0; /* both refuse it */
         }
         printf("MISMATCH %s %s N=%d: oracle %s, model %s\n", what, cf->name, samples,
                orc ? "refuses (range)" : "accepts", ef_strerror(st));
@@ -160,7 +160,8 @@ static void check_shared(const char *dir, const config *cf, int ncf)
             for (int ns = 8; ns <= 32; ns *= 2) {
                 ef_ctx *ctx;
                 ef_image img;
-                if (ef_ctx_create(&ctx, W, H, ns) != EF_OK || ef_ctx_set_filter(ctx, cf[c].filter, cf[c].subpixel) != EF_OK ||
+                if (ef_ctx_create(&ctx, W, H, ns) != EF_OK ||
+                    ef_ctx_set_filter(ctx, cf[c].filter, cf[c].subpixel) != EF_OK ||
                     ef_image_alloc(&img, W, H) != EF_OK)
                     die("context");
                 memset(oimg, 0, n * 4);
@@ -183,7 +184,8 @@ static void check_shared(const char *dir, const config *cf, int ncf)
                 ef_image_free(&img);
                 ef_ctx_destroy(ctx);
             }
-        printf("filter: %-44s %4u shapes %4dx%-4d %s\n", names[f], sc.nshapes, W, H, failed == bad0 ? "agree" : "DIFFER");
+        printf("filter: %-44s %4u shapes %4dx%-4d %s\n", names[f], sc.nshapes, W, H,
+               failed == bad0 ? "agree" : "DIFFER");
         fflush(stdout);
         free(want);
         free(got);
@@ -237,9 +239,9 @@ static void check_default(void)
         die("context");
     ef_rgba8 col = { 200, 100, 50, 180 };
     int ok = ef_ctx_set_filter(b, EF_FILTER_TENT, EF_SUBPIXEL_RGB) == EF_OK &&
-             ef_ctx_set_filter(b, EF_FILTER_BOX, EF_SUBPIXEL_NONE) == EF_OK && ef_fill(a, &ia, &p, EF_RULE_NONZERO, col) == EF_OK &&
-             ef_fill(b, &ib, &p, EF_RULE_NONZERO, col) == EF_OK && memcmp(ia.px, ib.px, 400) == 0 &&
-             ef_ctx_set_filter(b, (ef_filter)2, EF_SUBPIXEL_NONE) == EF_ERR_ARG &&
+             ef_ctx_set_filter(b, EF_FILTER_BOX, EF_SUBPIXEL_NONE) == EF_OK &&
+             ef_fill(a, &ia, &p, EF_RULE_NONZERO, col) == EF_OK && ef_fill(b, &ib, &p, EF_RULE_NONZERO, col) == EF_OK &&
+             memcmp(ia.px, ib.px, 400) == 0 && ef_ctx_set_filter(b, (ef_filter)2, EF_SUBPIXEL_NONE) == EF_ERR_ARG &&
              ef_ctx_set_filter(b, EF_FILTER_BOX, (ef_subpixel)3) == EF_ERR_ARG;
     ef_ctx *big;
     if (ef_ctx_create(&big, EF_MAX_CANVAS, 1, 8) != EF_OK)
@@ -262,16 +264,17 @@ static void check_default(void)
     const uint32_t D = 4 * 16 * 16 * 16;
     /* sides exactly 7/8 (every sample row's weights sum to 2N); a corner is 49/64 of the tent's mass but
      * its samples are the pattern's in one quadrant, so only its alpha is the exact one: 195 */
-    ok = ok && ef_filter_coverage(t, &fp, EF_RULE_NONZERO, put_cov, &g) == EF_OK &&
-         (255 * got[0] + D / 2) / D == 195 && got[3 * 1] == D / 8 * 7 && got[3 * 4] == D / 8 * 7 &&
-         got[3 * 5] == D && got[3 * 6] == D && (255 * got[3 * 11] + D / 2) / D == 195;
+    ok = ok && ef_filter_coverage(t, &fp, EF_RULE_NONZERO, put_cov, &g) == EF_OK && (255 * got[0] + D / 2) / D == 195 &&
+         got[3 * 1] == D / 8 * 7 && got[3 * 4] == D / 8 * 7 && got[3 * 5] == D && got[3 * 6] == D &&
+         (255 * got[3 * 11] + D / 2) / D == 195;
     ok = ok && ef_ctx_set_filter(t, EF_FILTER_BOX, EF_SUBPIXEL_RGB) == EF_OK;
     memset(got, 0, sizeof got);
     ok = ok && ef_filter_coverage(t, &fp, EF_RULE_NONZERO, put_cov, &g) == EF_OK && got[0] == 16 - 5 && got[1] == 16 &&
          got[2] == 16 && got[3 * 3 + 2] == 16 - 5 && got[3 * 3] == 16;
     ef_ctx_destroy(t);
     printf("filter: options set back to box/none render as a fresh context; bad values and a %d-px tent refused; "
-           "canvas edges worked by hand (tent 7/8 on a side, alpha 195 in a corner, RGB stripes 11/16): %s\n", EF_MAX_CANVAS, ok ? "ok" : "FAILED");
+           "canvas edges worked by hand (tent 7/8 on a side, alpha 195 in a corner, RGB stripes 11/16): %s\n",
+           EF_MAX_CANVAS, ok ? "ok" : "FAILED");
     ok ? passed++ : failed++;
     ef_ctx_destroy(big);
     ef_ctx_destroy(a);
@@ -326,7 +329,8 @@ int main(int argc, char **argv)
         printf("filter: random scenes: %" PRIu64 " (seed %" PRIu64 ", configs in turn), %" PRIu64 " failed\n",
                passed + failed - p0 - f0, seed, failed - f0);
     }
-    printf("filter: %" PRIu64 " coverage values compared exactly; %" PRIu64 " polygons refused by both (a shifted vertex out of range)\n",
+    printf("filter: %" PRIu64 " coverage values compared exactly; %" PRIu64
+           " polygons refused by both (a shifted vertex out of range)\n",
            compared, refused);
     printf("filter: %" PRIu64 " passed, %" PRIu64 " failed\n", passed, failed);
     return failed ? 1 : 0;

@@ -62,7 +62,7 @@ static void run(const uint8_t *data, size_t size, out *o, uint64_t *fed)
                 k = size - i;
             ef_board_rx(b, data + i, k);
             i += k;
-            *fed += k / EF_BOARD_HEADER + 1;   /* at most this many frames could have ended here */
+            *fed += k / EF_BOARD_HEADER + 1; /* at most this many frames could have ended here */
             take(b, o);
         }
     } else if (size) {

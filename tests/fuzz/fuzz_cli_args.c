@@ -26,26 +26,32 @@
 #include "cli.h"
 #include "edgeflag.h"
 
-#define FAIL(...)                                                                  \
-    do {                                                                           \
-        fprintf(stderr, "fuzz_cli_args: property violated: ");                     \
-        fprintf(stderr, __VA_ARGS__);                                              \
-        fputc('\n', stderr);                                                       \
-        abort();                                                                   \
+#define FAIL(...) \
+    do { \
+        fprintf(stderr, "fuzz_cli_args: property violated: "); \
+        fprintf(stderr, __VA_ARGS__); \
+        fputc('\n', stderr); \
+        abort(); \
     } while (0)
 
 /* digits only, value in [min, max] */
 static bool ref_int(const char *s, size_t n, int64_t min, int64_t max, int64_t *out)
 {
-    if (n == 0) return false;
+    if (n == 0)
+        return false;
     for (size_t i = 0; i < n; i++)
-        if (s[i] < '0' || s[i] > '9') return false;
+        if (s[i] < '0' || s[i] > '9')
+            return false;
     size_t i = 0;
-    while (i < n && s[i] == '0') i++;
-    if (n - i > 12) return false;             /* >= 10^12: far above any max */
+    while (i < n && s[i] == '0')
+        i++;
+    if (n - i > 12)
+        return false; /* >= 10^12: far above any max */
     int64_t v = 0;
-    for (; i < n; i++) v = v * 10 + (s[i] - '0');
-    if (v < min || v > max) return false;
+    for (; i < n; i++)
+        v = v * 10 + (s[i] - '0');
+    if (v < min || v > max)
+        return false;
     *out = v;
     return true;
 }
@@ -60,16 +66,17 @@ static void check_numbers(const char *s)
         int ok = ef_cli_parse_int(s, ranges[r][0], ranges[r][1], &got);
         bool wok = ref_int(s, n, ranges[r][0], ranges[r][1], &want);
         if (ok != (int)wok || (ok && got != want))
-            FAIL("parse_int('%s', %" PRId32 ", %" PRId32 ") = %d/%" PRId32 ", reference %d/%" PRId64, s,
-                 ranges[r][0], ranges[r][1], ok, got, (int)wok, want);
-        if (!ok && got != -12345) FAIL("a refused number was stored");
+            FAIL("parse_int('%s', %" PRId32 ", %" PRId32 ") = %d/%" PRId32 ", reference %d/%" PRId64, s, ranges[r][0],
+                 ranges[r][1], ok, got, (int)wok, want);
+        if (!ok && got != -12345)
+            FAIL("a refused number was stored");
     }
     int32_t w = -1, h = -1;
     int64_t rw = 0, rh = 0;
     int ok = ef_cli_parse_size(s, EF_MAX_CANVAS, &w, &h);
     const char *x = strchr(s, 'x');
-    bool wok = x && ref_int(s, (size_t)(x - s), 1, EF_MAX_CANVAS, &rw) &&
-               ref_int(x + 1, strlen(x + 1), 1, EF_MAX_CANVAS, &rh);
+    bool wok =
+        x && ref_int(s, (size_t)(x - s), 1, EF_MAX_CANVAS, &rw) && ref_int(x + 1, strlen(x + 1), 1, EF_MAX_CANVAS, &rh);
     if (ok != (int)wok || (ok && (w != rw || h != rh)))
         FAIL("parse_size('%s') = %d %" PRId32 "x%" PRId32 ", reference %d %" PRId64 "x%" PRId64, s, ok, w, h, (int)wok,
              rw, rh);
@@ -78,7 +85,8 @@ static void check_numbers(const char *s)
 static bool has_help(int argc, char **argv)
 {
     for (int i = 1; i < argc && strcmp(argv[i], "--") != 0; i++)
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) return true;
+        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0)
+            return true;
     return false;
 }
 
@@ -91,17 +99,23 @@ static bool ref_full_names(int argc, char **argv, const char *const *valued, con
 {
     for (int i = 1; i < argc; i++) {
         const char *w = argv[i];
-        if (dashdash && strcmp(w, "--") == 0) return true;
-        if (w[0] != '-' || w[1] == '\0') continue;   /* an operand */
+        if (dashdash && strcmp(w, "--") == 0)
+            return true;
+        if (w[0] != '-' || w[1] == '\0')
+            continue; /* an operand */
         bool known = false;
         for (int k = 0; valued[k] && !known; k++) {
             size_t n = strlen(valued[k]);
-            if (strcmp(w, valued[k]) == 0) known = true, i++;
-            else if (strncmp(w, valued[k], n) == 0 && w[n] == '=') known = true;
+            if (strcmp(w, valued[k]) == 0)
+                known = true, i++;
+            else if (strncmp(w, valued[k], n) == 0 && w[n] == '=')
+                known = true;
         }
         for (int k = 0; flags[k] && !known; k++)
-            if (strcmp(w, flags[k]) == 0) known = true;
-        if (!known) return false;
+            if (strcmp(w, flags[k]) == 0)
+                known = true;
+        if (!known)
+            return false;
     }
     return true;
 }
@@ -111,22 +125,29 @@ static void check_render(int argc, char **argv)
     ef_cli_render_args a, b;
     int rc = ef_cli_render_parse(argc, argv, &a);
     int rc2 = ef_cli_render_parse(argc, argv, &b);
-    if (rc != rc2) FAIL("render: %d then %d", rc, rc2);
-    if (has_help(argc, argv) != (rc == EF_CLI_EXIT_OK)) FAIL("render: --help and exit %d disagree", rc);
+    if (rc != rc2)
+        FAIL("render: %d then %d", rc, rc2);
+    if (has_help(argc, argv) != (rc == EF_CLI_EXIT_OK))
+        FAIL("render: --help and exit %d disagree", rc);
     /* exit 4 before any work: the output names an existing directory (docs/cli.md) */
     struct stat st;
     if (rc == EF_CLI_EXIT_OUTPUT && (!a.output || stat(a.output, &st) != 0 || !S_ISDIR(st.st_mode)))
         FAIL("render: exit 4 for an output that is not a directory");
     if (rc != -1 && rc != EF_CLI_EXIT_OK && rc != EF_CLI_EXIT_USAGE && rc != EF_CLI_EXIT_OUTPUT)
         FAIL("render: exit code %d", rc);
-    if (rc != -1) return;
-    static const char *const r_valued[] = { "-o", "--output", "--samples", "--rule", "--size", "--filter", "--subpixel",
-                                            NULL };
+    if (rc != -1)
+        return;
+    static const char *const r_valued[] = { "-o",     "--output", "--samples",  "--rule",
+                                            "--size", "--filter", "--subpixel", NULL };
     static const char *const r_flags[] = { NULL };
-    if (!ref_full_names(argc, argv, r_valued, r_flags, true)) FAIL("render: accepted a word that is no option");
-    if (!a.input || !a.output || !a.output[0]) FAIL("render: accepted without input or output");
-    if (!ef_samples_valid(a.samples)) FAIL("render: accepted %" PRId32 " samples", a.samples);
-    if (a.rule != -1 && a.rule != EF_RULE_NONZERO && a.rule != EF_RULE_EVENODD) FAIL("render: rule %d", a.rule);
+    if (!ref_full_names(argc, argv, r_valued, r_flags, true))
+        FAIL("render: accepted a word that is no option");
+    if (!a.input || !a.output || !a.output[0])
+        FAIL("render: accepted without input or output");
+    if (!ef_samples_valid(a.samples))
+        FAIL("render: accepted %" PRId32 " samples", a.samples);
+    if (a.rule != -1 && a.rule != EF_RULE_NONZERO && a.rule != EF_RULE_EVENODD)
+        FAIL("render: rule %d", a.rule);
     if (!((a.fit_w == 0 && a.fit_h == 0) ||
           (a.fit_w >= 1 && a.fit_w <= EF_MAX_CANVAS && a.fit_h >= 1 && a.fit_h <= EF_MAX_CANVAS)))
         FAIL("render: size %" PRId32 "x%" PRId32, a.fit_w, a.fit_h);
@@ -142,18 +163,27 @@ static void check_patterns(int argc, char **argv)
     ef_cli_patterns_args a, b;
     int rc = ef_cli_patterns_parse(argc, argv, &a);
     int rc2 = ef_cli_patterns_parse(argc, argv, &b);
-    if (rc != rc2) FAIL("patterns: %d then %d", rc, rc2);
+    if (rc != rc2)
+        FAIL("patterns: %d then %d", rc, rc2);
     bool help = false;
     for (int i = 1; i < argc; i++)
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) help = true;
-    if (help != (rc == EF_CLI_EXIT_OK)) FAIL("patterns: --help and exit %d disagree", rc);
-    if (rc != -1 && rc != EF_CLI_EXIT_OK && rc != EF_CLI_EXIT_USAGE) FAIL("patterns: exit code %d", rc);
-    if (rc != -1) return;
+        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0)
+            help = true;
+    if (help != (rc == EF_CLI_EXIT_OK))
+        FAIL("patterns: --help and exit %d disagree", rc);
+    if (rc != -1 && rc != EF_CLI_EXIT_OK && rc != EF_CLI_EXIT_USAGE)
+        FAIL("patterns: exit code %d", rc);
+    if (rc != -1)
+        return;
     static const char *const p_valued[] = { "--samples", NULL }, *const p_flags[] = { "--emit-c", NULL };
-    if (!ref_full_names(argc, argv, p_valued, p_flags, false)) FAIL("patterns: accepted a word that is no option");
-    if (!(a.samples == 0 || ef_samples_valid(a.samples))) FAIL("patterns: %" PRId32 " samples", a.samples);
-    if (a.emit_c && a.samples) FAIL("patterns: --emit-c with --samples accepted");
-    if (a.samples != b.samples || a.emit_c != b.emit_c) FAIL("patterns: two parses differ");
+    if (!ref_full_names(argc, argv, p_valued, p_flags, false))
+        FAIL("patterns: accepted a word that is no option");
+    if (!(a.samples == 0 || ef_samples_valid(a.samples)))
+        FAIL("patterns: %" PRId32 " samples", a.samples);
+    if (a.emit_c && a.samples)
+        FAIL("patterns: --emit-c with --samples accepted");
+    if (a.samples != b.samples || a.emit_c != b.emit_c)
+        FAIL("patterns: two parses differ");
 }
 
 static void check_check(int argc, char **argv)
@@ -161,22 +191,33 @@ static void check_check(int argc, char **argv)
     ef_cli_check_args a, b;
     int rc = ef_cli_check_parse(argc, argv, &a);
     int rc2 = ef_cli_check_parse(argc, argv, &b);
-    if (rc != rc2) FAIL("check: %d then %d", rc, rc2);
-    if (has_help(argc, argv) != (rc == EF_CLI_EXIT_OK)) FAIL("check: --help and exit %d disagree", rc);
-    if (rc != -1 && rc != EF_CLI_EXIT_OK && rc != EF_CLI_EXIT_USAGE) FAIL("check: exit code %d", rc);
-    if (rc != -1) return;
-    static const char *const c_valued[] = { "--errors", "--interfaces", "--allow-missing", "--name", "--junit",
-                                            "--diff-image", NULL };
+    if (rc != rc2)
+        FAIL("check: %d then %d", rc, rc2);
+    if (has_help(argc, argv) != (rc == EF_CLI_EXIT_OK))
+        FAIL("check: --help and exit %d disagree", rc);
+    if (rc != -1 && rc != EF_CLI_EXIT_OK && rc != EF_CLI_EXIT_USAGE)
+        FAIL("check: exit code %d", rc);
+    if (rc != -1)
+        return;
+    static const char *const c_valued[] = { "--errors", "--interfaces", "--allow-missing",
+                                            "--name",   "--junit",      "--diff-image",
+                                            NULL };
     static const char *const c_flags[] = { "--cycles", "--transactions", NULL };
-    if (!ref_full_names(argc, argv, c_valued, c_flags, true)) FAIL("check: accepted a word that is no option");
-    if (!a.expected || !a.actual) FAIL("check: accepted without two files");
-    if (a.errors < 0) FAIL("check: --errors %" PRId32, a.errors);
-    if (a.cycles != 0 && a.cycles != 1) FAIL("check: cycles %d", a.cycles);
-    if (a.junit && !a.junit[0]) FAIL("check: empty --junit accepted");
+    if (!ref_full_names(argc, argv, c_valued, c_flags, true))
+        FAIL("check: accepted a word that is no option");
+    if (!a.expected || !a.actual)
+        FAIL("check: accepted without two files");
+    if (a.errors < 0)
+        FAIL("check: --errors %" PRId32, a.errors);
+    if (a.cycles != 0 && a.cycles != 1)
+        FAIL("check: cycles %d", a.cycles);
+    if (a.junit && !a.junit[0])
+        FAIL("check: empty --junit accepted");
     if (a.diff_image && (!ef_cli_format_available(a.diff_fmt) || a.diff_fmt != ef_cli_format_from_path(a.diff_image) ||
                          (a.diff_fmt != EF_CLI_FMT_PNG && a.diff_fmt != EF_CLI_FMT_PAM)))
         FAIL("check: --diff-image '%s' accepted with format %d", a.diff_image, (int)a.diff_fmt);
-    if (a.junit && a.diff_image && strcmp(a.junit, a.diff_image) == 0) FAIL("check: one file for both outputs");
+    if (a.junit && a.diff_image && strcmp(a.junit, a.diff_image) == 0)
+        FAIL("check: one file for both outputs");
     if (a.expected != b.expected || a.actual != b.actual || a.errors != b.errors || a.cycles != b.cycles ||
         a.junit != b.junit || a.diff_image != b.diff_image)
         FAIL("check: two parses differ");
@@ -186,14 +227,19 @@ static void check_check(int argc, char **argv)
  * "--", skipping the values of the options that take one; NULL if absent. */
 static const char *vec_option(int argc, char **argv, const char *name)
 {
-    static const char *const valued[] = { "-o", "--output", "--samples", "--rule", "--size", "--formats", "--interfaces",
-                                          "--filter", "--subpixel" };
+    static const char *const valued[] = { "-o",        "--output",     "--samples", "--rule",    "--size",
+                                          "--formats", "--interfaces", "--filter",  "--subpixel" };
     const size_t n = strlen(name);
     for (int i = 1; i < argc && strcmp(argv[i], "--") != 0; i++) {
-        if (strncmp(argv[i], name, n) == 0 && argv[i][n] == '=') return argv[i] + n + 1;
-        if (strcmp(argv[i], name) == 0) return i + 1 < argc ? argv[i + 1] : NULL;
+        if (strncmp(argv[i], name, n) == 0 && argv[i][n] == '=')
+            return argv[i] + n + 1;
+        if (strcmp(argv[i], name) == 0)
+            return i + 1 < argc ? argv[i + 1] : NULL;
         for (size_t k = 0; k < sizeof valued / sizeof valued[0]; k++)
-            if (strcmp(argv[i], valued[k]) == 0) { i++; break; }
+            if (strcmp(argv[i], valued[k]) == 0) {
+                i++;
+                break;
+            }
     }
     return NULL;
 }
@@ -208,11 +254,15 @@ static bool ref_list(const char *v, const char *const *names, int n, const char 
         const char *comma = strchr(v, ',');
         size_t len = comma ? (size_t)(comma - v) : strlen(v);
         int k = 0;
-        while (k < n && !(strlen(names[k]) == len && memcmp(names[k], v, len) == 0)) k++;
-        if (k == n && alias && strlen(alias) == len && memcmp(alias, v, len) == 0) k = 1;
-        if (k == n || (m >> k & 1u)) return false;
+        while (k < n && !(strlen(names[k]) == len && memcmp(names[k], v, len) == 0))
+            k++;
+        if (k == n && alias && strlen(alias) == len && memcmp(alias, v, len) == 0)
+            k = 1;
+        if (k == n || (m >> k & 1u))
+            return false;
         m |= 1u << k;
-        if (!comma) break;
+        if (!comma)
+            break;
         v = comma + 1;
     }
     *mask = m;
@@ -226,30 +276,40 @@ static void check_vectors(int argc, char **argv)
     ef_cli_vectors_args a, b;
     int rc = ef_cli_vectors_parse(argc, argv, &a);
     int rc2 = ef_cli_vectors_parse(argc, argv, &b);
-    if (rc != rc2) FAIL("vectors: %d then %d", rc, rc2);
-    if (has_help(argc, argv) != (rc == EF_CLI_EXIT_OK)) FAIL("vectors: --help and exit %d disagree", rc);
-    if (rc != -1 && rc != EF_CLI_EXIT_OK && rc != EF_CLI_EXIT_USAGE) FAIL("vectors: exit code %d", rc);
-    if (rc != -1) return;
-    static const char *const v_valued[] = { "-o", "--output", "--samples", "--rule", "--size", "--formats",
-                                            "--interfaces", "--filter", "--subpixel", NULL };
+    if (rc != rc2)
+        FAIL("vectors: %d then %d", rc, rc2);
+    if (has_help(argc, argv) != (rc == EF_CLI_EXIT_OK))
+        FAIL("vectors: --help and exit %d disagree", rc);
+    if (rc != -1 && rc != EF_CLI_EXIT_OK && rc != EF_CLI_EXIT_USAGE)
+        FAIL("vectors: exit code %d", rc);
+    if (rc != -1)
+        return;
+    static const char *const v_valued[] = { "-o",        "--output",     "--samples", "--rule",     "--size",
+                                            "--formats", "--interfaces", "--filter",  "--subpixel", NULL };
     static const char *const v_flags[] = { "--force", "--dump", "--rtl-headers", NULL };
-    if (!ref_full_names(argc, argv, v_valued, v_flags, true)) FAIL("vectors: accepted a word that is no option");
-    if (a.rtl_headers) {    /* --rtl-headers -o DIR [--force], nothing else */
+    if (!ref_full_names(argc, argv, v_valued, v_flags, true))
+        FAIL("vectors: accepted a word that is no option");
+    if (a.rtl_headers) { /* --rtl-headers -o DIR [--force], nothing else */
         if (a.input || !a.dir || !a.dir[0] || vec_option(argc, argv, "--samples") || vec_option(argc, argv, "--rule") ||
             vec_option(argc, argv, "--size") || vec_option(argc, argv, "--formats") ||
             vec_option(argc, argv, "--interfaces") || vec_option(argc, argv, "--filter") ||
             vec_option(argc, argv, "--subpixel") || a.dump)
             FAIL("vectors: --rtl-headers accepted with an input or another option");
-        if (a.rtl_headers != b.rtl_headers || a.dir != b.dir || a.force != b.force) FAIL("vectors: two parses differ");
+        if (a.rtl_headers != b.rtl_headers || a.dir != b.dir || a.force != b.force)
+            FAIL("vectors: two parses differ");
         return;
     }
-    if (!a.input || !a.dir || !a.dir[0]) FAIL("vectors: accepted without input or directory");
-    if (!ef_samples_valid(a.samples)) FAIL("vectors: accepted %" PRId32 " samples", a.samples);
-    if (a.rule != -1 && a.rule != EF_RULE_NONZERO && a.rule != EF_RULE_EVENODD) FAIL("vectors: rule %d", a.rule);
+    if (!a.input || !a.dir || !a.dir[0])
+        FAIL("vectors: accepted without input or directory");
+    if (!ef_samples_valid(a.samples))
+        FAIL("vectors: accepted %" PRId32 " samples", a.samples);
+    if (a.rule != -1 && a.rule != EF_RULE_NONZERO && a.rule != EF_RULE_EVENODD)
+        FAIL("vectors: rule %d", a.rule);
     if (!((a.fit_w == 0 && a.fit_h == 0) ||
           (a.fit_w >= 1 && a.fit_w <= EF_MAX_CANVAS && a.fit_h >= 1 && a.fit_h <= EF_MAX_CANVAS)))
         FAIL("vectors: size %" PRId32 "x%" PRId32, a.fit_w, a.fit_h);
-    if (a.force != 0 && a.force != 1) FAIL("vectors: force %d", a.force);
+    if (a.force != 0 && a.force != 1)
+        FAIL("vectors: force %d", a.force);
     /* The lists against the reference: default all, else exactly the names given. */
     const char *fv = vec_option(argc, argv, "--formats"), *iv = vec_option(argc, argv, "--interfaces");
     uint32_t want_f = EF_CLI_VEC_ALL, want_i = (1u << 7) - 1u;
@@ -270,7 +330,8 @@ int LLVMFuzzerInitialize(int *argc, char ***argv)
     (void)argv;
     ef_cli_set_quiet(1);
     /* --help prints usage on stdout; libFuzzer and the sanitizers use stderr. */
-    if (!freopen("/dev/null", "w", stdout)) abort();
+    if (!freopen("/dev/null", "w", stdout))
+        abort();
     return 0;
 }
 
@@ -278,9 +339,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     enum { MAXARG = 64 };
-    if (size > 65536) return 0;
+    if (size > 65536)
+        return 0;
     char *s = malloc(size + 1);
-    if (!s) abort();
+    if (!s)
+        abort();
     memcpy(s, data, size);
     s[size] = '\0';
     check_numbers(s);
@@ -292,7 +355,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     char *p = s, *end = s + size;
     while (p <= end && argc <= MAXARG) {
         char *nl = memchr(p, '\n', (size_t)(end - p));
-        if (!nl) nl = end;
+        if (!nl)
+            nl = end;
         *nl = '\0';
         argv[argc++] = p;
         p = nl + 1;

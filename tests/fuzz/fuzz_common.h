@@ -21,17 +21,17 @@
 
 #include "ef_scene.h"
 
-#define FUZZ_FAIL(...)                                                              \
-    do {                                                                            \
-        fprintf(stderr, "fuzz: %s:%d: property violated: ", __FILE__, __LINE__);   \
-        fprintf(stderr, __VA_ARGS__);                                               \
-        fputc('\n', stderr);                                                        \
-        abort();                                                                    \
+#define FUZZ_FAIL(...) \
+    do { \
+        fprintf(stderr, "fuzz: %s:%d: property violated: ", __FILE__, __LINE__); \
+        fprintf(stderr, __VA_ARGS__); \
+        fputc('\n', stderr); \
+        abort(); \
     } while (0)
-#define FUZZ_CHECK(cond, ...)                                                       \
-    do {                                                                            \
-        if (!(cond))                                                                \
-            FUZZ_FAIL(__VA_ARGS__);                                                 \
+#define FUZZ_CHECK(cond, ...) \
+    do { \
+        if (!(cond)) \
+            FUZZ_FAIL(__VA_ARGS__); \
     } while (0)
 
 /* An empty scene, as every failed load must leave behind. */
@@ -50,8 +50,8 @@ static inline void fuzz_check_error(ef_status st, const ef_error *e, const char 
     FUZZ_CHECK(strcmp(e->file, name) == 0, "error names file '%s', not '%s'", e->file, name);
     /* Out of memory may come without a place; everything else has one. */
     if (st != EF_ERR_NOMEM)
-        FUZZ_CHECK(e->line >= 1 && e->col >= 1, "error without line:col: %" PRIu32 ":%" PRIu32 ": %s", e->line,
-                   e->col, e->msg);
+        FUZZ_CHECK(e->line >= 1 && e->col >= 1, "error without line:col: %" PRIu32 ":%" PRIu32 ": %s", e->line, e->col,
+                   e->msg);
     char buf[sizeof e->file + sizeof e->msg + 64];
     ef_error_format(e, buf, sizeof buf);
     FUZZ_CHECK(strncmp(buf, name, strlen(name)) == 0, "formatted error does not start with the file name");
@@ -88,8 +88,8 @@ static inline void fuzz_check_scene(const ef_scene *s)
 
 static inline int fuzz_scene_equal(const ef_scene *a, const ef_scene *b)
 {
-    if (a->width != b->width || a->height != b->height || a->nshapes != b->nshapes ||
-        a->ncontours != b->ncontours || a->npoints != b->npoints)
+    if (a->width != b->width || a->height != b->height || a->nshapes != b->nshapes || a->ncontours != b->ncontours ||
+        a->npoints != b->npoints)
         return 0;
     for (uint32_t i = 0; i < a->nshapes; i++)
         if (a->shapes[i].rule != b->shapes[i].rule || a->shapes[i].ncontours != b->shapes[i].ncontours ||
@@ -115,7 +115,8 @@ static inline void fuzz_buf_put(fuzz_buf *b, const char *s, size_t n)
 {
     if (b->n + n + 1 > b->cap) {
         size_t cap = b->cap ? b->cap : 4096;
-        while (cap < b->n + n + 1) cap *= 2;
+        while (cap < b->n + n + 1)
+            cap *= 2;
         char *np = realloc(b->p, cap);
         FUZZ_CHECK(np != NULL, "out of memory in the fuzz harness");
         b->p = np;
@@ -134,7 +135,8 @@ static inline void fuzz_buf_q8(fuzz_buf *b, int32_t v)
     if (a % 256) {
         /* frac/256 = frac * 390625 / 10^8 */
         n += snprintf(t + n, sizeof t - (size_t)n, ".%08" PRId64, (a % 256) * 390625);
-        while (t[n - 1] == '0') t[--n] = '\0';
+        while (t[n - 1] == '0')
+            t[--n] = '\0';
     }
     fuzz_buf_put(b, t, (size_t)n);
 }
@@ -152,7 +154,8 @@ static inline void fuzz_scene_text(const ef_scene *s, fuzz_buf *b)
         fuzz_buf_put(b, t, (size_t)n);
         for (uint32_t c = sh->first_contour; c < sh->first_contour + sh->ncontours; c++) {
             uint32_t k0 = s->start[c], k1 = s->start[c + 1];
-            if (k1 - k0 < 3) continue;
+            if (k1 - k0 < 3)
+                continue;
             fuzz_buf_put(b, "contour", 7);
             for (uint32_t k = k0; k < k1; k++) {
                 fuzz_buf_q8(b, s->points[k].x);
@@ -167,22 +170,26 @@ static inline void fuzz_scene_text(const ef_scene *s, fuzz_buf *b)
  * with t (the re-read text). */
 static inline int fuzz_same_geometry(const ef_scene *s, const ef_scene *t)
 {
-    if (s->width != t->width || s->height != t->height || s->nshapes != t->nshapes) return 0;
+    if (s->width != t->width || s->height != t->height || s->nshapes != t->nshapes)
+        return 0;
     uint32_t tc = 0;
     for (uint32_t i = 0; i < s->nshapes; i++) {
         const ef_shape *a = &s->shapes[i], *b = &t->shapes[i];
-        if (a->rule != b->rule || memcmp(&a->color, &b->color, sizeof a->color) != 0) return 0;
+        if (a->rule != b->rule || memcmp(&a->color, &b->color, sizeof a->color) != 0)
+            return 0;
         uint32_t kept = 0;
         for (uint32_t c = a->first_contour; c < a->first_contour + a->ncontours; c++) {
             uint32_t n = s->start[c + 1] - s->start[c];
-            if (n < 3) continue;
+            if (n < 3)
+                continue;
             kept++;
             if (tc >= t->ncontours || t->start[tc + 1] - t->start[tc] != n ||
                 memcmp(s->points + s->start[c], t->points + t->start[tc], (size_t)n * sizeof(ef_point)) != 0)
                 return 0;
             tc++;
         }
-        if (kept != b->ncontours) return 0;
+        if (kept != b->ncontours)
+            return 0;
     }
     return tc == t->ncontours;
 }

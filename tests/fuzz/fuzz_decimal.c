@@ -24,19 +24,21 @@
 
 #include "ef_fixed.h"
 
-#define FAIL(...)                                                                  \
-    do {                                                                           \
-        fprintf(stderr, "fuzz_decimal: property violated: ");                      \
-        fprintf(stderr, __VA_ARGS__);                                              \
-        fputc('\n', stderr);                                                       \
-        abort();                                                                   \
+#define FAIL(...) \
+    do { \
+        fprintf(stderr, "fuzz_decimal: property violated: "); \
+        fprintf(stderr, __VA_ARGS__); \
+        fputc('\n', stderr); \
+        abort(); \
     } while (0)
 
 /* ------------------------------------------------------- big naturals */
-#define LIMBS 520           /* 16640 bits: 4000 digits (13288 bits) + 10^k, k <= 4012 */
+#define LIMBS 520 /* 16640 bits: 4000 digits (13288 bits) + 10^k, k <= 4012 */
 #define MAXREF 4000
 
-typedef struct big { uint32_t l[LIMBS]; } big;
+typedef struct big {
+    uint32_t l[LIMBS];
+} big;
 
 static void big_zero(big *a) { memset(a, 0, sizeof *a); }
 
@@ -48,7 +50,8 @@ static void big_mul_add(big *a, uint32_t m, uint32_t add)
         a->l[i] = (uint32_t)t;
         c = t >> 32;
     }
-    if (c) FAIL("reference bignum overflow");
+    if (c)
+        FAIL("reference bignum overflow");
 }
 
 static void big_add(big *a, const big *b)
@@ -59,7 +62,8 @@ static void big_add(big *a, const big *b)
         a->l[i] = (uint32_t)t;
         c = t >> 32;
     }
-    if (c) FAIL("reference bignum overflow");
+    if (c)
+        FAIL("reference bignum overflow");
 }
 
 /* a <<= s; the bits shifted out must be zero. */
@@ -67,11 +71,14 @@ static void big_shl(big *a, unsigned s)
 {
     unsigned w = s / 32, b = s % 32;
     for (int i = LIMBS - 1; i >= LIMBS - (int)w - 1 && i >= 0; i--)
-        if (i >= LIMBS - (int)w ? a->l[i] != 0 : b && (a->l[i] >> (32 - b)) != 0) FAIL("reference bignum overflow");
+        if (i >= LIMBS - (int)w ? a->l[i] != 0 : b && (a->l[i] >> (32 - b)) != 0)
+            FAIL("reference bignum overflow");
     for (int i = LIMBS - 1; i >= 0; i--) {
         uint64_t v = 0;
-        if (i >= (int)w) v = (uint64_t)a->l[i - (int)w] << b;
-        if (b && i >= (int)w + 1) v |= a->l[i - (int)w - 1] >> (32 - b);
+        if (i >= (int)w)
+            v = (uint64_t)a->l[i - (int)w] << b;
+        if (b && i >= (int)w + 1)
+            v |= a->l[i - (int)w - 1] >> (32 - b);
         a->l[i] = (uint32_t)v;
     }
 }
@@ -79,11 +86,12 @@ static void big_shl(big *a, unsigned s)
 static int big_cmp(const big *a, const big *b)
 {
     for (int i = LIMBS - 1; i >= 0; i--)
-        if (a->l[i] != b->l[i]) return a->l[i] < b->l[i] ? -1 : 1;
+        if (a->l[i] != b->l[i])
+            return a->l[i] < b->l[i] ? -1 : 1;
     return 0;
 }
 
-static void big_sub(big *a, const big *b)   /* a >= b */
+static void big_sub(big *a, const big *b) /* a >= b */
 {
     int64_t br = 0;
     for (int i = 0; i < LIMBS; i++) {
@@ -98,7 +106,8 @@ static bool big_div_q63(big *a, const big *b, uint64_t *q)
 {
     big t = *b;
     big_shl(&t, 63);
-    if (big_cmp(a, &t) >= 0) return false;
+    if (big_cmp(a, &t) >= 0)
+        return false;
     uint64_t r = 0;
     for (int bit = 62; bit >= 0; bit--) {
         t = *b;
@@ -119,13 +128,16 @@ static ef_num_status ref_parse(const char *s, size_t len, int64_t *out, size_t *
 {
     size_t i = 0;
     bool neg = false;
-    if (i < len && (s[i] == '-' || s[i] == '+')) neg = s[i++] == '-';
+    if (i < len && (s[i] == '-' || s[i] == '+'))
+        neg = s[i++] == '-';
     size_t a0 = i;
-    while (i < len && dig(s[i])) i++;
+    while (i < len && dig(s[i]))
+        i++;
     size_t a1 = i, f0 = i, f1 = i;
     if (i < len && s[i] == '.') {
         size_t j = i + 1;
-        while (j < len && dig(s[j])) j++;
+        while (j < len && dig(s[j]))
+            j++;
         if (a1 > a0 || j > i + 1) {
             f0 = i + 1;
             f1 = j;
@@ -140,15 +152,18 @@ static ef_num_status ref_parse(const char *s, size_t len, int64_t *out, size_t *
     if (i < len && (s[i] == 'e' || s[i] == 'E')) {
         size_t j = i + 1;
         bool en = false;
-        if (j < len && (s[j] == '-' || s[j] == '+')) en = s[j++] == '-';
+        if (j < len && (s[j] == '-' || s[j] == '+'))
+            en = s[j++] == '-';
         size_t d0 = j;
         while (j < len && dig(s[j])) {
-            if (e < 1000000000) e = e * 10 + (s[j] - '0');
+            if (e < 1000000000)
+                e = e * 10 + (s[j] - '0');
             j++;
         }
         if (j > d0) {
             i = j;
-            if (en) e = -e;
+            if (en)
+                e = -e;
         }
     }
     *consumed = i;
@@ -156,11 +171,14 @@ static ef_num_status ref_parse(const char *s, size_t len, int64_t *out, size_t *
     /* digits of D, without leading and trailing zeros; E adjusted */
     static char d[MAXREF + 8];
     size_t nd = 0;
-    for (size_t k = a0; k < a1; k++) d[nd++] = s[k];
-    for (size_t k = f0; k < f1; k++) d[nd++] = s[k];
+    for (size_t k = a0; k < a1; k++)
+        d[nd++] = s[k];
+    for (size_t k = f0; k < f1; k++)
+        d[nd++] = s[k];
     e -= (int64_t)(f1 - f0);
     size_t lead = 0;
-    while (lead < nd && d[lead] == '0') lead++;
+    while (lead < nd && d[lead] == '0')
+        lead++;
     while (nd > lead && d[nd - 1] == '0') {
         nd--;
         e++;
@@ -170,27 +188,32 @@ static ef_num_status ref_parse(const char *s, size_t len, int64_t *out, size_t *
         return EF_NUM_OK;
     }
     int64_t n = (int64_t)(nd - lead);
-    if (n - 1 + e >= 10) return EF_NUM_RANGE;      /* v >= 10^10 > 2^31 */
-    if (n + e <= -12) {                            /* v < 10^-12 < 2^-33: rounds to 0 */
+    if (n - 1 + e >= 10)
+        return EF_NUM_RANGE; /* v >= 10^10 > 2^31 */
+    if (n + e <= -12) {      /* v < 10^-12 < 2^-33: rounds to 0 */
         *out = 0;
         return EF_NUM_OK;
     }
     static big A, B;
     big_zero(&A);
-    for (size_t k = lead; k < nd; k++) big_mul_add(&A, 10, (uint32_t)(d[k] - '0'));
+    for (size_t k = lead; k < nd; k++)
+        big_mul_add(&A, 10, (uint32_t)(d[k] - '0'));
     big_zero(&B);
     B.l[0] = 1;
     if (e >= 0) {
-        for (int64_t k = 0; k < e; k++) big_mul_add(&A, 10, 0);
+        for (int64_t k = 0; k < e; k++)
+            big_mul_add(&A, 10, 0);
     } else {
-        for (int64_t k = 0; k < -e; k++) big_mul_add(&B, 10, 0);
+        for (int64_t k = 0; k < -e; k++)
+            big_mul_add(&B, 10, 0);
     }
     /* q = floor((2 D 10^e+ 2^32 + 10^k) / (2 10^k)), the magnitude rounded half up */
     big_shl(&A, 33);
     big_add(&A, &B);
     big_shl(&B, 1);
     uint64_t q;
-    if (!big_div_q63(&A, &B, &q)) return EF_NUM_RANGE;
+    if (!big_div_q63(&A, &B, &q))
+        return EF_NUM_RANGE;
     *out = neg ? -(int64_t)q : (int64_t)q;
     return EF_NUM_OK;
 }
@@ -202,17 +225,23 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     ef_q32 v = ef_q32_raw(0x5A5A5A5A);
     size_t used = 12345;
     ef_num_status st = ef_parse_decimal_q32(s, size, &v, &used);
-    if (used > size) FAIL("consumed %zu of %zu", used, size);
-    if (st == EF_NUM_SYNTAX && used != 0) FAIL("syntax error consumed %zu", used);
-    if (st != EF_NUM_SYNTAX && used == 0) FAIL("a number of no characters");
-    if (st == EF_NUM_RANGE && v.v != 0x5A5A5A5A) FAIL("a range error wrote the output");
+    if (used > size)
+        FAIL("consumed %zu of %zu", used, size);
+    if (st == EF_NUM_SYNTAX && used != 0)
+        FAIL("syntax error consumed %zu", used);
+    if (st != EF_NUM_SYNTAX && used == 0)
+        FAIL("a number of no characters");
+    if (st == EF_NUM_RANGE && v.v != 0x5A5A5A5A)
+        FAIL("a range error wrote the output");
 
     if (size <= MAXREF) {
         int64_t want = 0;
         size_t wused = 0;
         ef_num_status ws = ref_parse(s, size, &want, &wused);
-        if (ws != st) FAIL("status %d, reference %d for '%.*s'", (int)st, (int)ws, (int)(size > 200 ? 200 : size), s);
-        if (wused != used) FAIL("consumed %zu, reference %zu", used, wused);
+        if (ws != st)
+            FAIL("status %d, reference %d for '%.*s'", (int)st, (int)ws, (int)(size > 200 ? 200 : size), s);
+        if (wused != used)
+            FAIL("consumed %zu, reference %zu", used, wused);
         if (st == EF_NUM_OK && want != v.v)
             FAIL("value %" PRId64 ", reference %" PRId64 " for '%.*s'", v.v, want, (int)(size > 200 ? 200 : size), s);
     }

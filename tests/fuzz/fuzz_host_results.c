@@ -68,9 +68,10 @@ static void make_vectors(void)
     const ef_polygon poly = { pts, start, 1 };
     ef_vec_info info = { "fuzz", 8, 6, 8, -1, 0, 0, EF_IF_ALL, 0 };
     FUZZ_CHECK(ef_trace_enable(ctx, EF_IF_ALL, ef_vec_collect_sink, &c) == EF_OK &&
-               ef_trace_frame_begin(ctx) == EF_OK &&
-               ef_fill(ctx, &img, &poly, EF_RULE_NONZERO, (ef_rgba8){ 200, 100, 50, 255 }) == EF_OK &&
-               ef_trace_frame_end(ctx, &info.cycles) == EF_OK, "trace");
+                   ef_trace_frame_begin(ctx) == EF_OK &&
+                   ef_fill(ctx, &img, &poly, EF_RULE_NONZERO, (ef_rgba8){ 200, 100, 50, 255 }) == EF_OK &&
+                   ef_trace_frame_end(ctx, &info.cycles) == EF_OK,
+               "trace");
     FILE *f = fopen(vec_path, "wb");
     FUZZ_CHECK(f, "cannot write %s", vec_path);
     ef_vec_out o;
@@ -100,11 +101,27 @@ static int f_status(ef_link *l, uint8_t out[40])
     memcpy(out, "EFB1", 4);
     return 0;
 }
-static int f_reset(ef_link *l) { (void)l; return 0; }
-static int f_write(ef_link *l, const uint8_t *b, size_t n, int t) { (void)l, (void)b, (void)n, (void)t; return 0; }
-static int f_flush(ef_link *l, int t) { (void)l, (void)t; return 0; }
+static int f_reset(ef_link *l)
+{
+    (void)l;
+    return 0;
+}
+static int f_write(ef_link *l, const uint8_t *b, size_t n, int t)
+{
+    (void)l, (void)b, (void)n, (void)t;
+    return 0;
+}
+static int f_flush(ef_link *l, int t)
+{
+    (void)l, (void)t;
+    return 0;
+}
 static void f_close(ef_link *l) { (void)l; }
-static int f_probe(const ef_host_opts *o, ef_found *f, int m) { (void)o, (void)f, (void)m; return 0; }
+static int f_probe(const ef_host_opts *o, ef_found *f, int m)
+{
+    (void)o, (void)f, (void)m;
+    return 0;
+}
 static const char *f_version(void) { return "fuzz"; }
 
 static int f_read(ef_link *l, uint8_t *buf, size_t cap, size_t *got, int t)
@@ -142,8 +159,8 @@ static int f_read(ef_link *l, uint8_t *buf, size_t cap, size_t *got, int t)
     return 0;
 }
 
-static const ef_transport_ops FUZZ_OPS = { "fuzz", f_probe, NULL, f_identify, f_status, f_reset,
-                                           f_write, f_flush, f_read, f_close, f_version, NULL };
+static const ef_transport_ops FUZZ_OPS = { "fuzz",  f_probe, NULL,   f_identify, f_status,  f_reset,
+                                           f_write, f_flush, f_read, f_close,    f_version, NULL };
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {

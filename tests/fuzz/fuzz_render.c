@@ -21,7 +21,7 @@
 
 typedef struct grid {
     int32_t w, h, last_y, last_end;
-    uint32_t allowed;     /* mask bits the sample count allows */
+    uint32_t allowed; /* mask bits the sample count allows */
     uint32_t *m;
 } grid;
 
@@ -29,13 +29,13 @@ static void span_to_grid(void *user, int32_t y, int32_t x, int32_t len, uint32_t
 {
     grid *g = user;
     FUZZ_CHECK(y >= 0 && y < g->h && x >= 0 && len >= 1 && x + len <= g->w,
-               "span y=%" PRId32 " x=%" PRId32 " len=%" PRId32 " outside %" PRId32 "x%" PRId32, y, x, len, g->w,
-               g->h);
+               "span y=%" PRId32 " x=%" PRId32 " len=%" PRId32 " outside %" PRId32 "x%" PRId32, y, x, len, g->w, g->h);
     FUZZ_CHECK(mask != 0 && (mask & ~g->allowed) == 0, "span mask %" PRIx32 " invalid", mask);
     FUZZ_CHECK(y > g->last_y || (y == g->last_y && x >= g->last_end), "spans out of order or overlapping");
     g->last_y = y;
     g->last_end = x + len;
-    for (int32_t i = 0; i < len; i++) g->m[(size_t)y * (size_t)g->w + (size_t)(x + i)] = mask;
+    for (int32_t i = 0; i < len; i++)
+        g->m[(size_t)y * (size_t)g->w + (size_t)(x + i)] = mask;
 }
 
 static void raster(ef_ctx *ctx, const ef_polygon *p, ef_rule rule, grid *g)
@@ -73,8 +73,8 @@ static void check_scene(const ef_scene *s)
                 ef_ctx_diag(fresh, &d);
                 ef_ctx_destroy(fresh);
                 raster(shared, &p, rule, &g2);
-                FUZZ_CHECK(memcmp(m1, m2, n * 4) == 0, "shape %" PRIu32 " N=%d rule=%d: a used context differs", i,
-                           N, r);
+                FUZZ_CHECK(memcmp(m1, m2, n * 4) == 0, "shape %" PRIu32 " N=%d rule=%d: a used context differs", i, N,
+                           r);
                 const uint32_t *want = r ? oeo : onz;
                 for (size_t q = 0; q < n; q++)
                     FUZZ_CHECK(m1[q] == want[q],
@@ -115,14 +115,16 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     ef_scene s;
     ef_error e;
-    if (ef_scene_load_text("fuzz.scene", (const char *)data, size, NULL, &s, &e) != EF_OK) return 0;
+    if (ef_scene_load_text("fuzz.scene", (const char *)data, size, NULL, &s, &e) != EF_OK)
+        return 0;
     if (s.width > MAXDIM || s.height > MAXDIM) {
         ef_load_opts fit;
         memset(&fit, 0, sizeof fit);
         fit.fit_width = s.width > MAXDIM ? MAXDIM : s.width;
         fit.fit_height = s.height > MAXDIM ? MAXDIM : s.height;
         ef_scene_free(&s);
-        if (ef_scene_load_text("fuzz.scene", (const char *)data, size, &fit, &s, &e) != EF_OK) return 0;
+        if (ef_scene_load_text("fuzz.scene", (const char *)data, size, &fit, &s, &e) != EF_OK)
+            return 0;
     }
     fuzz_check_scene(&s);
     check_scene(&s);

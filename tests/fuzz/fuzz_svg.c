@@ -17,8 +17,7 @@ static void span_in_canvas(void *user, int32_t y, int32_t x, int32_t len, uint32
 {
     const ef_scene *s = user;
     FUZZ_CHECK(y >= 0 && y < s->height && x >= 0 && len >= 1 && x + len <= s->width && mask != 0 && mask <= 0xFFu,
-               "span y=%" PRId32 " x=%" PRId32 " len=%" PRId32 " mask=%" PRIx32 " outside the canvas", y, x, len,
-               mask);
+               "span y=%" PRId32 " x=%" PRId32 " len=%" PRId32 " mask=%" PRIx32 " outside the canvas", y, x, len, mask);
 }
 
 static void one(const char *data, size_t size, const ef_load_opts *opts, int render)
@@ -28,7 +27,7 @@ static void one(const char *data, size_t size, const ef_load_opts *opts, int ren
     if (!fuzz_load_checked(ef_scene_load_svg, NAME, data, size, opts, &s))
         return;
 
-    if (s.npoints > 65536) {   /* a big scene (up to the work limit): checked above, not dumped */
+    if (s.npoints > 65536) { /* a big scene (up to the work limit): checked above, not dumped */
         ef_scene_free(&s);
         return;
     }

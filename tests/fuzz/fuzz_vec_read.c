@@ -77,7 +77,8 @@ static void check_dump(const ef_vec_dump *d, size_t len)
             if (d->format == EF_VEC_FMT_BIN)
                 FUZZ_CHECK(q->off && q->off[k] + 10 < len, "record offset past the input");
             else
-                FUZZ_CHECK(!q->off && q->loc[k] >= 1 && q->loc[k] <= len, "line %" PRIu64 " of %zu bytes", q->loc[k], len);
+                FUZZ_CHECK(!q->off && q->loc[k] >= 1 && q->loc[k] <= len, "line %" PRIu64 " of %zu bytes", q->loc[k],
+                           len);
         }
     }
 }
@@ -91,9 +92,9 @@ static int same_dump(const ef_vec_dump *a, const ef_vec_dump *b)
         const ef_vec_seq *p = &a->seq[i], *q = &b->seq[i];
         if (p->n != q->n || p->nw != q->nw)
             return 0;
-        if (p->n && (memcmp(p->cycle, q->cycle, p->n * 8) || memcmp(p->pay, q->pay, p->n * p->nw * 8) ||
-                     memcmp(p->loc, q->loc, p->n * 8) || (!p->off != !q->off) ||
-                     (p->off && memcmp(p->off, q->off, p->n * 8))))
+        if (p->n &&
+            (memcmp(p->cycle, q->cycle, p->n * 8) || memcmp(p->pay, q->pay, p->n * p->nw * 8) ||
+             memcmp(p->loc, q->loc, p->n * 8) || (!p->off != !q->off) || (p->off && memcmp(p->off, q->off, p->n * 8))))
             return 0;
     }
     return 1;
@@ -121,7 +122,7 @@ static void read_stream(int mode, uint8_t *p, size_t n, int arg, result *r)
     memset(&r->e, 0, sizeof r->e);
     FILE *f = n ? fmemopen((void *)p, n, "rb") : NULL;
     if (!f) {
-        read_mem(mode, p, n, arg, r);   /* glibc refuses a 0-byte fmemopen */
+        read_mem(mode, p, n, arg, r); /* glibc refuses a 0-byte fmemopen */
         return;
     }
     if (mode == 0)

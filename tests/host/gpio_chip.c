@@ -29,7 +29,7 @@
 enum { S_D0 = 0, S_CLK = 8, S_VALID, S_TAKE, S_CTL, S_Q0 = 12, S_READY = 20, S_AVAIL, S_DONE, S_ERR };
 
 typedef struct emu_req {
-    UMockdevIoctlClient *client;    /* a reference: its `connected` tells when it is gone */
+    UMockdevIoctlClient *client; /* a reference: its `connected` tells when it is gone */
     unsigned n, offsets[GPIO_V2_LINES_MAX];
     int output;
     char consumer[GPIO_MAX_NAME_SIZE];
@@ -40,34 +40,32 @@ typedef struct emu_state {
     GMutex lock;
     UMockdevTestbed *tb;
     UMockdevIoctlBase *handler;
-    uint8_t level[EMU_LINES];       /* what the host drives on its outputs */
+    uint8_t level[EMU_LINES]; /* what the host drives on its outputs */
     emu_req *owner[EMU_LINES];
-    emu_req *pending[8];            /* requests waiting for their connection */
+    emu_req *pending[8]; /* requests waiting for their connection */
     int npending;
-    emu_req *reqs[64];              /* every request made (freed at exit) */
+    emu_req *reqs[64]; /* every request made (freed at exit) */
     int nreqs;
-    uint64_t step, change_step, edge_step;   /* line ioctls, and when data changed / clk rose */
+    uint64_t step, change_step, edge_step; /* line ioctls, and when data changed / clk rose */
     int edge_since_change;
-    uint32_t data;                  /* d | valid << 8 | take << 9 | ctl << 10 as last written */
+    uint32_t data; /* d | valid << 8 | take << 9 | ctl << 10 as last written */
 } emu_state;
 
 static const char *line_name(const emu_state *s, unsigned off)
 {
     /* The control lines carry names (a board's device tree would give them),
      * the data lines none, so tests map both by name and by offset. */
-    static const char *const named[] = { [S_CLK] = "EF_CLK", [S_VALID] = "EF_VALID", [S_TAKE] = "EF_TAKE",
-                                         [S_CTL] = "EF_CTL", [S_READY] = "EF_READY", [S_AVAIL] = "EF_AVAIL",
-                                         [S_DONE] = "EF_DONE", [S_ERR] = "EF_ERR" };
+    static const char *const named[] = {
+        [S_CLK] = "EF_CLK",     [S_VALID] = "EF_VALID", [S_TAKE] = "EF_TAKE", [S_CTL] = "EF_CTL",
+        [S_READY] = "EF_READY", [S_AVAIL] = "EF_AVAIL", [S_DONE] = "EF_DONE", [S_ERR] = "EF_ERR"
+    };
     for (unsigned sig = 0; sig < EMU_SIGNALS; sig++)
         if (s->pub.wiring[sig] == off && sig < sizeof named / sizeof named[0] && named[sig])
             return named[sig];
     return "";
 }
 
-static int req_alive(const emu_req *r)
-{
-    return r && r->client && umockdev_ioctl_client_get_connected(r->client);
-}
+static int req_alive(const emu_req *r) { return r && r->client && umockdev_ioctl_client_get_connected(r->client); }
 
 /* The board's outputs onto the line levels. */
 static void board_drive(emu_state *s)
@@ -149,8 +147,7 @@ static UMockdevIoctlData *arg_of(UMockdevIoctlClient *client, size_t len)
 
 /* A new line request: check and own the lines, open the connection that
  * becomes its file descriptor. */
-static int new_request(emu_state *s, const uint32_t *offsets, unsigned n, int output, const char *consumer,
-                       int *fd)
+static int new_request(emu_state *s, const uint32_t *offsets, unsigned n, int output, const char *consumer, int *fd)
 {
     if (n == 0 || n > GPIO_V2_LINES_MAX)
         return EINVAL;
@@ -160,12 +157,12 @@ static int new_request(emu_state *s, const uint32_t *offsets, unsigned n, int ou
         emu_req *o = s->owner[offsets[i]];
         if (o && req_alive(o))
             return EBUSY;
-        if (o && o->client)                        /* a closed request's lines are free again */
+        if (o && o->client) /* a closed request's lines are free again */
             for (unsigned k = 0; k < EMU_LINES; k++)
                 if (s->owner[k] == o)
                     s->owner[k] = NULL;
         if (o && !o->client)
-            return EBUSY;                          /* still waiting for its connection */
+            return EBUSY; /* still waiting for its connection */
     }
     if (s->npending == 8 || s->nreqs == 64)
         return ENOMEM;
@@ -285,8 +282,7 @@ static gboolean chip_ioctl(emu_state *s, UMockdevIoctlClient *client, unsigned l
         lr->fd = fd;
         return finish(client, d, 0, 0);
     }
-    default:
-        return finish(client, NULL, -1, ENOTTY);
+    default: return finish(client, NULL, -1, ENOTTY);
     }
 }
 
@@ -336,8 +332,7 @@ static gboolean line_ioctl(emu_state *s, emu_req *r, UMockdevIoctlClient *client
         }
         return finish(client, d, 0, 0);
     }
-    default:
-        return finish(client, NULL, -1, ENOTTY);
+    default: return finish(client, NULL, -1, ENOTTY);
     }
 }
 

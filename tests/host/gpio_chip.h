@@ -20,20 +20,20 @@
 /* Faults the emulated board can show (set between transport calls). */
 enum {
     EMU_FAULT_NONE = 0,
-    EMU_FAULT_STALL = 1,      /* ready stays low: the board stopped taking bytes */
-    EMU_FAULT_LIE_READY = 2,  /* ready shown high while the bus holds a byte: the host overruns */
-    EMU_FAULT_FOREIGN = 4,    /* control replies scrambled: another device on the lines */
-    EMU_FAULT_MUTE = 8        /* avail never rises: nothing on the lines */
+    EMU_FAULT_STALL = 1,     /* ready stays low: the board stopped taking bytes */
+    EMU_FAULT_LIE_READY = 2, /* ready shown high while the bus holds a byte: the host overruns */
+    EMU_FAULT_FOREIGN = 4,   /* control replies scrambled: another device on the lines */
+    EMU_FAULT_MUTE = 8       /* avail never rises: nothing on the lines */
 };
 
 typedef struct emu_chip {
     ef_board *board;
     ef_gpio_bus *bus;
-    unsigned wiring[EMU_SIGNALS];   /* line offset of each signal, transport_gpio.c's order */
+    unsigned wiring[EMU_SIGNALS]; /* line offset of each signal, transport_gpio.c's order */
     int faults;
-    uint32_t stall_after;     /* > 0: ready stays low once the bus accepted this many bytes */
-    uint32_t fail_after;      /* > 0: the engine fails (ef_board_fail) after this many bytes */
-    uint8_t stuck_d;          /* d lines stuck high at the board (a wiring fault) */
+    uint32_t stall_after; /* > 0: ready stays low once the bus accepted this many bytes */
+    uint32_t fail_after;  /* > 0: the engine fails (ef_board_fail) after this many bytes */
+    uint8_t stuck_d;      /* d lines stuck high at the board (a wiring fault) */
     uint64_t edges, ioctls, sets, gets;
     /* The timing the host kept (docs/board-gpio.md section 3), in steps (line
      * ioctls): the fewest from a change of d/valid/take/ctl to the rising

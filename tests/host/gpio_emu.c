@@ -51,23 +51,24 @@ static void check(int ok, const char *fmt, ...)
 /* The board's wiring: control lines first, data bytes in the middle, and the
  * --lines map the user would write for it (some by name, some by offset). */
 static const unsigned WIRING[EMU_SIGNALS] = {
-    4, 5, 6, 7, 8, 9, 10, 11,         /* d0..d7 */
-    0, 1, 2, 3,                       /* clk valid take ctl */
-    20, 21, 22, 23, 24, 25, 26, 27,   /* q0..q7 */
-    12, 13, 14, 15                    /* ready avail done err */
+    4,  5,  6,  7,  8,  9,  10, 11, /* d0..d7 */
+    0,  1,  2,  3,                  /* clk valid take ctl */
+    20, 21, 22, 23, 24, 25, 26, 27, /* q0..q7 */
+    12, 13, 14, 15                  /* ready avail done err */
 };
 static const char *LINES = "clk=EF_CLK,valid=EF_VALID,take=EF_TAKE,ctl=EF_CTL,d=4-11,q=20:21:22:23:24:25:26:27,"
                            "ready=EF_READY,avail=13,done=EF_DONE,err=15";
 
-
 static ef_board *new_board(void)
 {
-    ef_board_info info = { .serial = "EMU-GPIO-1", .capabilities = EF_BOARD_CAP_RESULTS | EF_BOARD_CAP_RESUME |
-                                                                   EF_BOARD_CAP_INTERNAL,
+    ef_board_info info = { .serial = "EMU-GPIO-1",
+                           .capabilities = EF_BOARD_CAP_RESULTS | EF_BOARD_CAP_RESUME | EF_BOARD_CAP_INTERNAL,
                            .samples_mask = 1u << ef_board_samples_bit(8) | 1u << ef_board_samples_bit(16) |
                                            1u << ef_board_samples_bit(32),
-                            .width_max = 4096,
-                           .height_max = 4096, .edges_max = 1u << 20, .window = 8,
+                           .width_max = 4096,
+                           .height_max = 4096,
+                           .edges_max = 1u << 20,
+                           .window = 8,
                            .iface_mask = (1u << EF_IF_COUNT) - 1 };
     return ef_board_new(&info, ef_board_dut_model());
 }
@@ -101,11 +102,15 @@ static void test_list(void)
 
 static void test_bad_maps(void)
 {
-    static const struct { const char *spec; int rc; const char *says; } bad[] = {
-        { "clk=99", EF_HOST_EINVAL, "clk=99" },          /* past the chip's 32 lines */
-        { "clk=NOPE", EF_HOST_ENOTFOUND, "NOPE" },        /* no such line name */
-        { "clk=4", EF_HOST_EINVAL, "both d4 and clk" },   /* 4 is d4 in the default map */
-        { "clk=EF_CLK", EF_HOST_EINVAL, "line 0 of /dev/gpiochip0 is mapped to both d0 and clk" },  /* by name */
+    static const struct {
+        const char *spec;
+        int rc;
+        const char *says;
+    } bad[] = {
+        { "clk=99", EF_HOST_EINVAL, "clk=99" },         /* past the chip's 32 lines */
+        { "clk=NOPE", EF_HOST_ENOTFOUND, "NOPE" },      /* no such line name */
+        { "clk=4", EF_HOST_EINVAL, "both d4 and clk" }, /* 4 is d4 in the default map */
+        { "clk=EF_CLK", EF_HOST_EINVAL, "line 0 of /dev/gpiochip0 is mapped to both d0 and clk" }, /* by name */
         { "bogus=3", EF_HOST_EINVAL, "bogus" },
         { "d=1-5", EF_HOST_EINVAL, "8 lines" },
         { "q=1:2:3", EF_HOST_EINVAL, "8 lines" },
@@ -116,8 +121,8 @@ static void test_bad_maps(void)
         char err[256];
         int rc;
         ef_link *l = open_link(bad[i].spec, &rc, err, sizeof err);
-        check(!l && rc == bad[i].rc && strstr(err, bad[i].says), "--lines %s: rc %d, message '%s'", bad[i].spec,
-              rc, err);
+        check(!l && rc == bad[i].rc && strstr(err, bad[i].says), "--lines %s: rc %d, message '%s'", bad[i].spec, rc,
+              err);
         if (l)
             ef_transport_gpio.close(l);
     }
@@ -171,8 +176,12 @@ static void capture_end(char *buf, size_t size)
 static int stream_opts(ef_link *l, const char *vectors, const char *results, int timeout_ms, int resume,
                        ef_host_stream_report *rep, char *told, size_t toldlen)
 {
-    ef_host_stream_opts so = { .vectors = vectors, .results = results, .iface_mask = 1u << EF_IF_PIX,
-                               .timeout_ms = timeout_ms, .resume = resume, .quiet = 1 };
+    ef_host_stream_opts so = { .vectors = vectors,
+                               .results = results,
+                               .iface_mask = 1u << EF_IF_PIX,
+                               .timeout_ms = timeout_ms,
+                               .resume = resume,
+                               .quiet = 1 };
     memset(rep, 0, sizeof *rep);
     capture_begin();
     int code = ef_host_stream(&ef_transport_gpio, l, &so, rep);
@@ -220,9 +229,8 @@ static void test_stream(emu_chip *e, ef_link *l, const char *vectors, const char
     double dt = now_s() - t0;
     uint64_t cycles = ef_gpio_link_cycles(l) - c0;
     check(code == EF_HX_OK, "stream: exit %d: %s", code, told);
-    check(rep.records > 0 && rep.retransmits == 0 && rep.naks == 0,
-          "stream: %llu records, %llu retransmits, %llu NAKs", (unsigned long long)rep.records,
-          (unsigned long long)rep.retransmits, (unsigned long long)rep.naks);
+    check(rep.records > 0 && rep.retransmits == 0 && rep.naks == 0, "stream: %llu records, %llu retransmits, %llu NAKs",
+          (unsigned long long)rep.records, (unsigned long long)rep.retransmits, (unsigned long long)rep.naks);
     ef_board_stats st;
     ef_board_get_stats(e->board, &st);
     check(st.state == EF_BS_DONE && st.cmds == rep.cmds && st.frames_bad == 0,
@@ -247,7 +255,7 @@ static void test_stream(emu_chip *e, ef_link *l, const char *vectors, const char
  * ones sent. */
 static void test_duplex(emu_chip *e, ef_link *l)
 {
-    enum { NDATA = 6, CHUNK = 250 };   /* 6 RESULT + DONE fit the board's window of 8 */
+    enum { NDATA = 6, CHUNK = 250 }; /* 6 RESULT + DONE fit the board's window of 8 */
     static uint8_t f[EF_BOARD_HEADER + CHUNK + EF_BOARD_TRAILER], sent[NDATA * CHUNK], back[NDATA * CHUNK + 1];
     static uint8_t rx[16384];
     uint8_t start[EF_BOARD_START_LEN] = { 0 };
@@ -264,8 +272,7 @@ static void test_duplex(emu_chip *e, ef_link *l)
         uint32_t len = seq <= NDATA ? CHUNK : 0;
         for (uint32_t i = 0; i < len; i++)
             x = x * 1103515245u + 12345u, p[i] = sent[(seq - 1) * CHUNK + i] = (uint8_t)(x >> 16);
-        rc = ef_transport_gpio.write(l, f, ef_frame_seal(f, seq <= NDATA ? EF_FT_DATA : EF_FT_END, 0, seq, len),
-                                     1000);
+        rc = ef_transport_gpio.write(l, f, ef_frame_seal(f, seq <= NDATA ? EF_FT_DATA : EF_FT_END, 0, seq, len), 1000);
     }
     check(rc == 0, "duplex: write rc %d (%s)", rc, ef_gpio_link_detail(l));
     while (rc == 0 && !done) {
@@ -296,7 +303,8 @@ static void test_duplex(emu_chip *e, ef_link *l)
           "duplex: done %d, %d bad bytes, %zu of %zu payload bytes back%s", done, bad, nback, sizeof sent,
           nback == sizeof sent ? " but different" : "");
     printf("gpio-emu: duplex: %zu payload bytes each way, %llu bus cycles in %.2f s = %.0f GPIO words/s "
-           "through the emulator\n", sizeof sent, (unsigned long long)cycles, dt, dt > 0 ? (double)cycles / dt : 0.0);
+           "through the emulator\n",
+           sizeof sent, (unsigned long long)cycles, dt, dt > 0 ? (double)cycles / dt : 0.0);
 }
 
 static int same_file(const char *x, const char *y)
@@ -328,22 +336,22 @@ static void test_faults(emu_chip *e, ef_link *l, const char *vectors, const char
     emu_chip_set_byte_faults(e, 0, 60, 0);
     snprintf(dir, sizeof dir, "%s.enginefail", results);
     code = stream(l, vectors, dir, 500, &rep, told, sizeof told);
-    check(code == EF_HX_BOARD && strstr(told, "injected by the GPIO emulator"),
-          "engine failure: exit %d, told '%s'", code, told);
+    check(code == EF_HX_BOARD && strstr(told, "injected by the GPIO emulator"), "engine failure: exit %d, told '%s'",
+          code, told);
     uint8_t st[EF_BOARD_STATUS_LEN];
     check(ef_transport_gpio.status(l, st) == 0, "engine failure: status unreadable");
     ef_board_stats bs;
     ef_board_get_stats(b, &bs);
-    check(bs.state == EF_BS_ERROR && emu_chip_received(e) >= 60, "engine failure: board state %d, %u bytes",
-          bs.state, emu_chip_received(e));
+    check(bs.state == EF_BS_ERROR && emu_chip_received(e) >= 60, "engine failure: board state %d, %u bytes", bs.state,
+          emu_chip_received(e));
     uint8_t buf[64];
     size_t got = 0;
     int rc;
     /* reset clears err: the board answers and takes bytes again */
     check(ef_transport_gpio.reset(l) == 0, "reset after failure");
     rc = ef_transport_gpio.read(l, buf, sizeof buf, &got, 50);
-    check(rc == EF_HOST_ETIMEDOUT && got == 0, "after reset: read rc %d got %zu (err must be clear, nothing sent)",
-          rc, got);
+    check(rc == EF_HOST_ETIMEDOUT && got == 0, "after reset: read rc %d got %zu (err must be clear, nothing sent)", rc,
+          got);
 
     /* 2. A data line stuck high at the board: the reset request 0x03 arrives as
      * 0x07, an unknown code; err rises and the bus status says why. */
@@ -365,8 +373,8 @@ static void test_faults(emu_chip *e, ef_link *l, const char *vectors, const char
     double t0 = now_s();
     code = stream(l, vectors, dir, 150, &rep, told, sizeof told);
     double dt = now_s() - t0;
-    check(code == EF_HX_LOST && emu_chip_received(e) == 100, "stall: exit %d, board received %u bytes, told '%s'",
-          code, emu_chip_received(e), told);
+    check(code == EF_HX_LOST && emu_chip_received(e) == 100, "stall: exit %d, board received %u bytes, told '%s'", code,
+          emu_chip_received(e), told);
     check(strstr(ef_gpio_link_detail(l), "held ready low") != NULL, "stall: detail '%s'", ef_gpio_link_detail(l));
     check(dt < 5.0, "stall: took %.1f s to give up", dt);
     /* The board takes bytes again: --resume finishes the run, and the results
@@ -496,7 +504,8 @@ static void check_timing(emu_chip *e, ef_link *l, unsigned S, unsigned H)
     emu_chip_timing(e, &su, &ho, &sets, &gets, &edges);
     check(rc == 0 && su == S && ho == H && edges == cycles && sets == (S + H) * cycles && gets == cycles,
           "timing setup=%u hold=%u: rc %d, board saw setup %llu hold %llu, %llu edges for %llu cycles, %llu writes, "
-          "%llu reads", S, H, rc, (unsigned long long)su, (unsigned long long)ho, (unsigned long long)edges, cycles,
+          "%llu reads",
+          S, H, rc, (unsigned long long)su, (unsigned long long)ho, (unsigned long long)edges, cycles,
           (unsigned long long)sets, (unsigned long long)gets);
 }
 

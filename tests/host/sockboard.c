@@ -24,7 +24,7 @@
 #include "ef_board.h"
 
 static volatile sig_atomic_t stop;
-static unsigned long long cut;     /* bytes from the host until the connection is cut (0: never) */
+static unsigned long long cut; /* bytes from the host until the connection is cut (0: never) */
 
 static void on_term(int sig)
 {
@@ -60,7 +60,7 @@ static void serve(ef_board *b, int fd)
             if (n == 0 || (n < 0 && errno != EAGAIN && errno != EINTR))
                 break;
             if (cut && n > 0 && (cut -= (unsigned long long)n) == 0) {
-                ef_board_rx(b, in, (size_t)n);   /* the last bytes arrive, then the link is gone */
+                ef_board_rx(b, in, (size_t)n); /* the last bytes arrive, then the link is gone */
                 break;
             }
             if (n > 0 && ef_board_rx(b, in, (size_t)n) != 0) {
@@ -70,7 +70,7 @@ static void serve(ef_board *b, int fd)
         }
     }
     close(fd);
-    ef_board_link_lost(b);   /* a half-sent frame of ours is gone with the connection */
+    ef_board_link_lost(b); /* a half-sent frame of ours is gone with the connection */
 }
 
 int main(int argc, char **argv)
@@ -86,8 +86,14 @@ int main(int argc, char **argv)
     const struct sigaction sa = { .sa_handler = on_term };
     sigaction(SIGTERM, &sa, NULL);
     sigaction(SIGINT, &sa, NULL);
-    const ef_board_info info = { "EFSOCK0001", EF_BOARD_CAP_RESULTS | EF_BOARD_CAP_RESUME | EF_BOARD_CAP_INTERNAL,
-                                 1u << 3 | 1u << 4 | 1u << 5, 16384, 16384, 1u << 22, 16, (1u << 7) - 1 };
+    const ef_board_info info = { "EFSOCK0001",
+                                 EF_BOARD_CAP_RESULTS | EF_BOARD_CAP_RESUME | EF_BOARD_CAP_INTERNAL,
+                                 1u << 3 | 1u << 4 | 1u << 5,
+                                 16384,
+                                 16384,
+                                 1u << 22,
+                                 16,
+                                 (1u << 7) - 1 };
     ef_board *b = ef_board_new(&info, ef_board_dut_model());
     const int ls = socket(AF_UNIX, SOCK_STREAM, 0);
     unlink(a.sun_path);

@@ -67,8 +67,8 @@
 #define MAX_RUNS 8
 
 typedef struct urb_rec {
-    UMockdevIoctlData *urb;             /* the client's struct usbdevfs_urb, resolved */
-    UMockdevIoctlData *buf;             /* its buffer, resolved under urb */
+    UMockdevIoctlData *urb; /* the client's struct usbdevfs_urb, resolved */
+    UMockdevIoctlData *buf; /* its buffer, resolved under urb */
     int status, actual;
     struct urb_rec *next;
 } urb_rec;
@@ -87,7 +87,7 @@ typedef struct emu_board {
     int bus, dev;
     char syspath[256];
     ef_board *b;
-    ef_board_dut model;                 /* the real DUT, wrapped to log its input */
+    ef_board_dut model; /* the real DUT, wrapped to log its input */
     UMockdevIoctlBase *handler;
 
     /* usbfs state of the current client */
@@ -260,7 +260,7 @@ static void pull_from_board(emu_board *eb)
         int r = ef_frame_parse(eb->stage + pos, eb->stage_len - pos, &fr, &used);
         if (r == EF_FRAME_MORE)
             break;
-        if (r == EF_FRAME_BAD) {            /* the engine never sends these: pass the byte on */
+        if (r == EF_FRAME_BAD) { /* the engine never sends these: pass the byte on */
             used = 1;
         } else {
             eb->frames_to_host++;
@@ -351,7 +351,7 @@ static void board_take(emu_board *eb, uint8_t *p, size_t n, int *status)
         return;
     }
     if (ef_board_rx(eb->b, p, n) != 0)
-        eb->rx_refused++;           /* the host overran the window: a protocol violation */
+        eb->rx_refused++; /* the host overran the window: a protocol violation */
     eb->out_bytes += (long long)n;
     if (f->reset_at > 0 && eb->out_bytes >= f->reset_at) {
         f->reset_at = 0;
@@ -361,7 +361,7 @@ static void board_take(emu_board *eb, uint8_t *p, size_t n, int *status)
         eb->reset_done = 1;
     }
     if (f->stall_at > 0 && eb->out_bytes >= f->stall_at) {
-        f->stall_at = 0;                /* once: the next command finds it answering */
+        f->stall_at = 0; /* once: the next command finds it answering */
         eb->stalled = 1;
     }
 }
@@ -420,10 +420,10 @@ static int control(emu_board *eb, uint8_t *buf, int buflen)
         return 0;
     }
     eb->ctrl_other++;
-    if (rt == 0x80 && req == 6 && (wvalue >> 8) == 3) {   /* GET_DESCRIPTOR, string */
+    if (rt == 0x80 && req == 6 && (wvalue >> 8) == 3) { /* GET_DESCRIPTOR, string */
         int idx = wvalue & 0xff, n;
         if (idx == 0) {
-            uint8_t lang[4] = { 4, 3, 0x09, 0x04 };       /* en-US */
+            uint8_t lang[4] = { 4, 3, 0x09, 0x04 }; /* en-US */
             memcpy(tmp, lang, 4);
             n = 4;
         } else if (idx == 1) {
@@ -439,7 +439,7 @@ static int control(emu_board *eb, uint8_t *buf, int buflen)
         memcpy(data, tmp, (size_t)n);
         return n;
     }
-    return -EPIPE;                                        /* unknown request: stall */
+    return -EPIPE; /* unknown request: stall */
 }
 
 /* --------------------------------------------------------- usbfs ioctls */
@@ -497,7 +497,7 @@ static gboolean on_ioctl(UMockdevIoctlBase *handler, UMockdevIoctlClient *client
             umockdev_ioctl_client_complete(client, 0, 0);
         break;
     case USBDEVFS_GETDRIVER:
-        umockdev_ioctl_client_complete(client, -1, ENODATA);   /* no kernel driver bound */
+        umockdev_ioctl_client_complete(client, -1, ENODATA); /* no kernel driver bound */
         break;
     case USBDEVFS_SUBMITURB: {
         if (eb->gone) {
@@ -615,10 +615,12 @@ static void plug(emu_board *eb)
              "A: manufacturer=edgeflag\\n\n"
              "A: product=edgeflag board (emulated)\\n\n"
              "A: serial=%s\\n\n"
-             "H: descriptors=120100020000004009120100000101020301" "090220000101008032"
-             "0904000002ff000000" "07050102000200" "07058102000200\n",
-             eb->bus, eb->bus, eb->index + 1, eb->bus, eb->dev, eb->bus, eb->dev, node, eb->bus, eb->dev,
-             eb->serial);
+             "H: descriptors=120100020000004009120100000101020301"
+             "090220000101008032"
+             "0904000002ff000000"
+             "07050102000200"
+             "07058102000200\n",
+             eb->bus, eb->bus, eb->index + 1, eb->bus, eb->dev, eb->bus, eb->dev, node, eb->bus, eb->dev, eb->serial);
     if (eb->handler)
         g_object_unref(eb->handler);
     eb->handler = umockdev_ioctl_base_new();
@@ -646,7 +648,7 @@ static void prepare_run(emu *e)
         int replug = eb->gone;
         pthread_mutex_unlock(&e->mu);
         if (replug) {
-            eb->dev++;                  /* a new address, as after a real replug */
+            eb->dev++; /* a new address, as after a real replug */
             plug(eb);
         }
         eb->stalled = 0;
@@ -701,16 +703,26 @@ static void parse_faults(faults *f, const char *spec)
         long long n = strtoll(v, &end, 10);
         if (*end || n < 0)
             die("fault value '%s' is not a number", v);
-        if (!strcmp(t, "unplug-at")) f->unplug_at = n;
-        else if (!strcmp(t, "unplug-in")) f->unplug_in = n;
-        else if (!strcmp(t, "stall-at")) f->stall_at = n;
-        else if (!strcmp(t, "reset-at")) f->reset_at = n;
-        else if (!strcmp(t, "corrupt-out")) f->corrupt_out = n;
-        else if (!strcmp(t, "corrupt-in")) f->corrupt_in = (long)n;
-        else if (!strcmp(t, "drop-ack")) f->drop_ack = (long)n;
-        else if (!strcmp(t, "identify-stall")) f->identify_stall = (long)n;
-        else if (!strcmp(t, "protocol")) f->protocol = (long)n;
-        else die("unknown fault '%s'", t);
+        if (!strcmp(t, "unplug-at"))
+            f->unplug_at = n;
+        else if (!strcmp(t, "unplug-in"))
+            f->unplug_in = n;
+        else if (!strcmp(t, "stall-at"))
+            f->stall_at = n;
+        else if (!strcmp(t, "reset-at"))
+            f->reset_at = n;
+        else if (!strcmp(t, "corrupt-out"))
+            f->corrupt_out = n;
+        else if (!strcmp(t, "corrupt-in"))
+            f->corrupt_in = (long)n;
+        else if (!strcmp(t, "drop-ack"))
+            f->drop_ack = (long)n;
+        else if (!strcmp(t, "identify-stall"))
+            f->identify_stall = (long)n;
+        else if (!strcmp(t, "protocol"))
+            f->protocol = (long)n;
+        else
+            die("unknown fault '%s'", t);
     }
     free(s);
 }
@@ -791,13 +803,20 @@ int main(int argc, char **argv)
         if (!v)
             die("%s needs a value (usage: see the header of tests/host/usb_emu.c)", a);
         i++;
-        if (!strcmp(a, "--run") && nruns < MAX_RUNS) runs[nruns++] = v;
-        else if (!strcmp(a, "--serial") && nser < MAX_BOARDS) serials[nser++] = v;
-        else if (!strcmp(a, "--bus")) bus = atoi(v);
-        else if (!strcmp(a, "--fault")) parse_faults(&e.f, v);
-        else if (!strcmp(a, "--report")) report_path = v;
-        else if (!strcmp(a, "--dut-log")) dut_log = v;
-        else die("unknown option %s", a);
+        if (!strcmp(a, "--run") && nruns < MAX_RUNS)
+            runs[nruns++] = v;
+        else if (!strcmp(a, "--serial") && nser < MAX_BOARDS)
+            serials[nser++] = v;
+        else if (!strcmp(a, "--bus"))
+            bus = atoi(v);
+        else if (!strcmp(a, "--fault"))
+            parse_faults(&e.f, v);
+        else if (!strcmp(a, "--report"))
+            report_path = v;
+        else if (!strcmp(a, "--dut-log"))
+            dut_log = v;
+        else
+            die("unknown option %s", a);
     }
     if (nruns == 0)
         die("%s", "nothing to run: give --run 'COMMAND'");
@@ -824,8 +843,11 @@ int main(int argc, char **argv)
         ef_board_info info = { .capabilities = EF_BOARD_CAP_RESULTS | EF_BOARD_CAP_RESUME | EF_BOARD_CAP_INTERNAL,
                                .samples_mask = 1u << ef_board_samples_bit(8) | 1u << ef_board_samples_bit(16) |
                                                1u << ef_board_samples_bit(32),
-                               .width_max = 16384, .height_max = 16384, .edges_max = 1u << 22,
-                               .window = 16, .iface_mask = (1u << 7) - 1 };
+                               .width_max = 16384,
+                               .height_max = 16384,
+                               .edges_max = 1u << 22,
+                               .window = 16,
+                               .iface_mask = (1u << 7) - 1 };
         snprintf(info.serial, sizeof info.serial, "%s", serials[i]);
         eb->b = ef_board_new(&info, dut_logged(&e));
         if (!eb->b)

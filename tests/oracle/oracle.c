@@ -18,12 +18,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define EO_CHECK(cond)                                                                        \
-    do {                                                                                      \
-        if (!(cond)) {                                                                        \
+#define EO_CHECK(cond) \
+    do { \
+        if (!(cond)) { \
             fprintf(stderr, "%s:%d: oracle invariant failed: %s\n", __FILE__, __LINE__, #cond); \
-            abort();                                                                          \
-        }                                                                                     \
+            abort(); \
+        } \
     } while (0)
 
 #define P2(n) ((int64_t)1 << (n))
@@ -34,8 +34,8 @@
  * The harness checks that they still equal ef_pattern(). */
 static const uint8_t eo_k8[8] = { 2, 7, 4, 1, 6, 3, 0, 5 };
 static const uint8_t eo_k16[16] = { 3, 11, 7, 15, 1, 9, 5, 13, 2, 10, 6, 14, 0, 8, 4, 12 };
-static const uint8_t eo_k32[32] = { 6, 27, 17, 11, 22, 3, 31, 15, 8, 25, 0, 20, 13, 29, 5, 18,
-                                    10, 23, 1, 28, 16, 7, 24, 12, 19, 2, 30, 9, 21, 14, 26, 4 };
+static const uint8_t eo_k32[32] = { 6,  27, 17, 11, 22, 3, 31, 15, 8,  25, 0,  20, 13, 29, 5,  18,
+                                    10, 23, 1,  28, 16, 7, 24, 12, 19, 2,  30, 9,  21, 14, 26, 4 };
 
 const uint8_t *eo_pattern(int samples)
 {
@@ -112,9 +112,17 @@ static int build_edges(const eo_polygon *p, eo_edge **out, size_t *count)
                 continue; /* horizontal (including every edge of a 1-point contour) */
             eo_edge ed;
             if (a.y < z.y) {
-                ed.x0 = a.x; ed.y0 = a.y; ed.x1 = z.x; ed.y1 = z.y; ed.dir = +1;
+                ed.x0 = a.x;
+                ed.y0 = a.y;
+                ed.x1 = z.x;
+                ed.y1 = z.y;
+                ed.dir = +1;
             } else {
-                ed.x0 = z.x; ed.y0 = z.y; ed.x1 = a.x; ed.y1 = a.y; ed.dir = -1;
+                ed.x0 = z.x;
+                ed.y0 = z.y;
+                ed.x1 = a.x;
+                ed.y1 = a.y;
+                ed.dir = -1;
             }
             EO_CHECK(ed.y1 - ed.y0 >= 1 && ed.y1 - ed.y0 < P2(24));
             EO_CHECK(ed.x1 - ed.x0 > -P2(24) && ed.x1 - ed.x0 < P2(24));
@@ -162,8 +170,8 @@ static int covered_nonzero(int64_t w) { return w % 128 != 0; } /* 7-bit counters
 static int covered_evenodd(int64_t w) { return w % 2 != 0; }
 
 /* ------------------------------------------------------- fast evaluation */
-int eo_eval(const eo_polygon *p, int samples, int W, int H,
-            uint32_t *mask_nonzero, uint32_t *mask_evenodd, eo_stats *stats)
+int eo_eval(const eo_polygon *p, int samples, int W, int H, uint32_t *mask_nonzero, uint32_t *mask_evenodd,
+            eo_stats *stats)
 {
     int rc = validate(p, samples, W, H);
     if (rc)
@@ -291,8 +299,8 @@ int64_t eo_sample_winding(const eo_polygon *p, int samples, int64_t i, int64_t j
 {
     int rc = validate(p, samples, 1, 1);
     /* keep Xs, Yr inside the range the bit budget covers */
-    if (!rc && (i < -EO_MAX_CANVAS || i > 2 * EO_MAX_CANVAS || j < -EO_MAX_CANVAS || j > 2 * EO_MAX_CANVAS ||
-                s < 0 || s >= samples))
+    if (!rc && (i < -EO_MAX_CANVAS || i > 2 * EO_MAX_CANVAS || j < -EO_MAX_CANVAS || j > 2 * EO_MAX_CANVAS || s < 0 ||
+                s >= samples))
         rc = EO_ERR_ARG;
     eo_edge *edges = NULL;
     size_t ne = 0;
@@ -323,12 +331,12 @@ static int lexsign(int64_t ax, int64_t ay, int64_t bx, int64_t by, int64_t px, i
     int64_t ux = bx - ax, uy = by - ay, vx = px - ax, vy = py - ay;
     EO_CHECK(ux > -P2(26) && ux < P2(26) && uy > -P2(26) && uy < P2(26));
     EO_CHECK(vx > -P2(26) && vx < P2(26) && vy > -P2(26) && vy < P2(26));
-    int64_t e = ux * vy - uy * vx;    /* E(P) */
+    int64_t e = ux * vy - uy * vx; /* E(P) */
     if (e)
         return sgn(e);
     if (uy)
-        return sgn(-uy);              /* dE/dx */
-    return sgn(ux);                   /* dE/dy */
+        return sgn(-uy); /* dE/dx */
+    return sgn(ux);      /* dE/dy */
 }
 
 /* O is outside the coordinate range, so it is never a vertex. */
@@ -347,8 +355,7 @@ static int64_t winding_fan(const eo_polygon *p, int64_t px, int64_t py)
             int sigma = sgn(ux * vy - uy * vx);
             if (!sigma)
                 continue; /* degenerate triangle: winding 0 around P' */
-            if (lexsign(FAN_OX, FAN_OY, A.x, A.y, px, py) == sigma &&
-                lexsign(A.x, A.y, B.x, B.y, px, py) == sigma &&
+            if (lexsign(FAN_OX, FAN_OY, A.x, A.y, px, py) == sigma && lexsign(A.x, A.y, B.x, B.y, px, py) == sigma &&
                 lexsign(B.x, B.y, FAN_OX, FAN_OY, px, py) == sigma)
                 sum += sigma;
         }
@@ -361,8 +368,8 @@ static int64_t winding_fan(const eo_polygon *p, int64_t px, int64_t py)
 int64_t eo_sample_winding_fan(const eo_polygon *p, int samples, int64_t i, int64_t j, int s, int *err)
 {
     int rc = validate(p, samples, 1, 1);
-    if (!rc && (i < -EO_MAX_CANVAS || i > 2 * EO_MAX_CANVAS || j < -EO_MAX_CANVAS || j > 2 * EO_MAX_CANVAS ||
-                s < 0 || s >= samples))
+    if (!rc && (i < -EO_MAX_CANVAS || i > 2 * EO_MAX_CANVAS || j < -EO_MAX_CANVAS || j > 2 * EO_MAX_CANVAS || s < 0 ||
+                s >= samples))
         rc = EO_ERR_ARG;
     if (err)
         *err = rc;
@@ -382,8 +389,7 @@ int eo_coverage_fan(const eo_polygon *p, int rule_evenodd, int samples, int W, i
         for (int i = 0; i < W; i++) {
             uint32_t m = 0;
             for (int s = 0; s < samples; s++) {
-                int64_t w = winding_fan(p, eo_sample_x(samples, i, s),
-                                        eo_sample_y(samples, (int64_t)samples * j + s));
+                int64_t w = winding_fan(p, eo_sample_x(samples, i, s), eo_sample_y(samples, (int64_t)samples * j + s));
                 if (rule_evenodd ? covered_evenodd(w) : covered_nonzero(w))
                     m |= (uint32_t)1 << s;
             }
@@ -425,8 +431,8 @@ void eo_explain_sample(FILE *f, const eo_polygon *p, int samples, int64_t i, int
     }
     int64_t r = (int64_t)samples * j + s;
     int64_t Xs = eo_sample_x(samples, i, s), Yr = eo_sample_y(samples, r);
-    fprintf(f, "sample (i=%ld, j=%ld, s=%d) N=%d: row r=%ld, Xs=%ld, Yr=%ld (Q16.8)\n", (long)i, (long)j, s,
-            samples, (long)r, (long)Xs, (long)Yr);
+    fprintf(f, "sample (i=%ld, j=%ld, s=%d) N=%d: row r=%ld, Xs=%ld, Yr=%ld (Q16.8)\n", (long)i, (long)j, s, samples,
+            (long)r, (long)Xs, (long)Yr);
     int64_t w = 0;
     for (size_t q = 0; q < ne; q++) {
         const eo_edge *e = &edges[q];
@@ -436,8 +442,8 @@ void eo_explain_sample(FILE *f, const eo_polygon *p, int samples, int64_t i, int
         int cnt = counts(e, Xs, Yr);
         if (cnt)
             w += e->dir;
-        fprintf(f, "  edge (%ld,%ld)-(%ld,%ld) dir %+d: x_r = %ld/%ld (Xs*dY = %ld) %s\n", (long)e->x0,
-                (long)e->y0, (long)e->x1, (long)e->y1, e->dir, (long)num, (long)dY, (long)(Xs * dY),
+        fprintf(f, "  edge (%ld,%ld)-(%ld,%ld) dir %+d: x_r = %ld/%ld (Xs*dY = %ld) %s\n", (long)e->x0, (long)e->y0,
+                (long)e->x1, (long)e->y1, e->dir, (long)num, (long)dY, (long)(Xs * dY),
                 cnt ? "counted" : "right of sample");
     }
     fprintf(f, "  winding %ld: non-zero %s, even-odd %s; fan method winding %ld\n", (long)w,
@@ -457,8 +463,7 @@ uint64_t eo_compare_masks(FILE *f, const uint32_t *expect, const uint32_t *got, 
                 continue;
             if (f && bad < (uint64_t)(max_report < 0 ? 0 : max_report))
                 fprintf(f, "pixel (%d,%d) N=%d: expect 0x%08lx got 0x%08lx xor 0x%08lx\n", i, j, samples,
-                        (unsigned long)expect[idx], (unsigned long)got[idx],
-                        (unsigned long)(expect[idx] ^ got[idx]));
+                        (unsigned long)expect[idx], (unsigned long)got[idx], (unsigned long)(expect[idx] ^ got[idx]));
             bad++;
         }
     return bad;

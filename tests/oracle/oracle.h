@@ -30,8 +30,8 @@ extern "C" {
 
 /* Return codes. */
 #define EO_OK 0
-#define EO_ERR_ARG (-1)    /* samples not 8/16/32, W or H outside [1, EO_MAX_CANVAS], bad start[] */
-#define EO_ERR_RANGE (-2)  /* a coordinate with |v| >= 2^23 */
+#define EO_ERR_ARG (-1)   /* samples not 8/16/32, W or H outside [1, EO_MAX_CANVAS], bad start[] */
+#define EO_ERR_RANGE (-2) /* a coordinate with |v| >= 2^23 */
 #define EO_ERR_NOMEM (-3)
 
 #define EO_MAX_CANVAS 16384
@@ -42,7 +42,9 @@ extern "C" {
  * units (v / 256 px), y grows downward.  Contour c is
  * pts[start[c] .. start[c+1]-1]; start has ncontours+1 entries.  A contour of
  * n >= 1 points is closed implicitly; an empty contour contributes nothing. */
-typedef struct eo_point { int32_t x, y; } eo_point;
+typedef struct eo_point {
+    int32_t x, y;
+} eo_point;
 typedef struct eo_polygon {
     const eo_point *pts;
     const uint32_t *start;
@@ -54,8 +56,8 @@ typedef struct eo_polygon {
 const uint8_t *eo_pattern(int samples);
 
 /* Sample positions, Q16.8 (spec section 4). */
-int64_t eo_sample_y(int samples, int64_t r);           /* Y_r = h*r + c */
-int64_t eo_sample_x(int samples, int64_t i, int s);    /* X_s(i) = 256 i + h k_s + c */
+int64_t eo_sample_y(int samples, int64_t r);        /* Y_r = h*r + c */
+int64_t eo_sample_x(int samples, int64_t i, int s); /* X_s(i) = 256 i + h k_s + c */
 
 /* Coverage masks: mask_out[j*W + i], bit s = sample s of pixel (i, j) covered.
  * rule_evenodd != 0: covered iff winding odd; 0 (non-zero): covered iff
@@ -71,22 +73,22 @@ int eo_coverage_fan(const eo_polygon *p, int rule_evenodd, int samples, int W, i
  *   outside_7bit > 0          =>  the model counts at least one overflow;
  *   max_row_crossings <= 63   =>  the model counts no overflow.            */
 typedef struct eo_stats {
-    int64_t min_winding, max_winding;   /* over all W*H*N samples */
-    uint64_t outside_7bit;              /* samples with winding outside [-64, 63] */
-    uint64_t abs_ge64;                  /* samples with |winding| >= 64 */
-    uint64_t wrapped_uncovered;         /* winding != 0 but a multiple of 128 */
-    uint64_t max_row_crossings;         /* max over sample rows 0..N*H-1 of the
+    int64_t min_winding, max_winding; /* over all W*H*N samples */
+    uint64_t outside_7bit;            /* samples with winding outside [-64, 63] */
+    uint64_t abs_ge64;                /* samples with |winding| >= 64 */
+    uint64_t wrapped_uncovered;       /* winding != 0 but a multiple of 128 */
+    uint64_t max_row_crossings;       /* max over sample rows 0..N*H-1 of the
                                            number of edges crossing that row
                                            (left of, inside and right of the canvas) */
-    uint64_t crossings;                 /* total crossings over those rows */
-    uint64_t edges;                     /* non-horizontal edges */
+    uint64_t crossings;               /* total crossings over those rows */
+    uint64_t edges;                   /* non-horizontal edges */
 } eo_stats;
 int eo_winding_stats(const eo_polygon *p, int samples, int W, int H, eo_stats *out);
 
 /* Everything at once (any output may be NULL): one pass gives the non-zero
  * and even-odd masks and the statistics. */
-int eo_eval(const eo_polygon *p, int samples, int W, int H,
-            uint32_t *mask_nonzero, uint32_t *mask_evenodd, eo_stats *stats);
+int eo_eval(const eo_polygon *p, int samples, int W, int H, uint32_t *mask_nonzero, uint32_t *mask_evenodd,
+            eo_stats *stats);
 
 /* Winding number of one sample (pixel i, row j, sample s), any i, j (also
  * outside the canvas), by the literal spec 5.1 rule.  *err gets the status. */
@@ -103,7 +105,7 @@ int64_t eo_sample_winding_fan(const eo_polygon *p, int samples, int64_t i, int64
 int eo_filter_eval(const eo_polygon *p, int samples, int W, int H, int filter, int subpixel, int evenodd,
                    uint32_t *sums);
 uint32_t eo_filter_denominator(int filter, int samples);
-int eo_filter_shift(int subpixel, int colour);   /* Q16.8 shift of colour c's samples */
+int eo_filter_shift(int subpixel, int colour); /* Q16.8 shift of colour c's samples */
 
 /* Debug aids for the harness. */
 /* Prints the polygon as text: "contour c (n points): x,y x,y ...". */
@@ -112,8 +114,8 @@ void eo_polygon_fprint(FILE *f, const eo_polygon *p);
 void eo_explain_sample(FILE *f, const eo_polygon *p, int samples, int64_t i, int64_t j, int s);
 /* Compares two mask images; returns the number of differing pixels and, if
  * f != NULL, prints up to max_report of them (pixel, both masks, xor). */
-uint64_t eo_compare_masks(FILE *f, const uint32_t *expect, const uint32_t *got, int W, int H,
-                          int samples, int max_report);
+uint64_t eo_compare_masks(FILE *f, const uint32_t *expect, const uint32_t *got, int W, int H, int samples,
+                          int max_report);
 
 #ifdef __cplusplus
 }

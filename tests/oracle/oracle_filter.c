@@ -15,12 +15,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define EOF_CHECK(cond)                                                                       \
-    do {                                                                                      \
-        if (!(cond)) {                                                                        \
+#define EOF_CHECK(cond) \
+    do { \
+        if (!(cond)) { \
             fprintf(stderr, "%s:%d: oracle invariant failed: %s\n", __FILE__, __LINE__, #cond); \
-            abort();                                                                          \
-        }                                                                                     \
+            abort(); \
+        } \
     } while (0)
 
 typedef struct fedge {
@@ -50,13 +50,13 @@ static int counts_at(const fedge *e, int64_t Xs, int64_t Yr)
 
 /* Masks of the samples at the spec's positions shifted by (sx, sy), for
  * pixels (p, q) in [0, Wm) x [0, Hm): bit s of m[q*Wm + p] is covered. */
-static void shifted_masks(const fedge *E, size_t ne, int samples, int Wm, int Hm, int64_t sx, int64_t sy,
-                          int evenodd, uint32_t *m, int64_t *diff)
+static void shifted_masks(const fedge *E, size_t ne, int samples, int Wm, int Hm, int64_t sx, int64_t sy, int evenodd,
+                          uint32_t *m, int64_t *diff)
 {
     const uint8_t *k = eo_pattern(samples);
     const int64_t h = 256 / samples, c = h / 2;
     memset(m, 0, (size_t)Wm * (size_t)Hm * sizeof *m);
-    int64_t ylo = INT64_MAX, yhi = INT64_MIN;         /* rows no edge crosses stay empty */
+    int64_t ylo = INT64_MAX, yhi = INT64_MIN; /* rows no edge crosses stay empty */
     for (size_t i = 0; i < ne; i++) {
         ylo = E[i].y0 < ylo ? E[i].y0 : ylo;
         yhi = E[i].y1 > yhi ? E[i].y1 : yhi;
@@ -70,7 +70,7 @@ static void shifted_masks(const fedge *E, size_t ne, int samples, int Wm, int Hm
             for (size_t i = 0; i < ne; i++) {
                 if (!(E[i].y0 <= Yr && Yr < E[i].y1))
                     continue;
-                int64_t lo = 0, hi = Wm;          /* first pixel whose sample counts it */
+                int64_t lo = 0, hi = Wm; /* first pixel whose sample counts it */
                 while (lo < hi) {
                     const int64_t mid = lo + (hi - lo) / 2;
                     if (counts_at(&E[i], base + 256 * mid, Yr))
@@ -92,8 +92,8 @@ static void shifted_masks(const fedge *E, size_t ne, int samples, int Wm, int Hm
 int eo_filter_eval(const eo_polygon *p, int samples, int W, int H, int filter, int subpixel, int evenodd,
                    uint32_t *sums)
 {
-    if (!p || !eo_pattern(samples) || W < 1 || H < 1 || W > EO_MAX_CANVAS - 1 || H > EO_MAX_CANVAS - 1 ||
-        filter < 0 || filter > 1 || subpixel < 0 || subpixel > 2 || !sums)
+    if (!p || !eo_pattern(samples) || W < 1 || H < 1 || W > EO_MAX_CANVAS - 1 || H > EO_MAX_CANVAS - 1 || filter < 0 ||
+        filter > 1 || subpixel < 0 || subpixel > 2 || !sums)
         return EO_ERR_ARG;
     const int e = filter, Wm = W + e, Hm = H + e, nch = subpixel ? 3 : 1;
     const int64_t t = filter ? 128 : 0;
@@ -128,7 +128,7 @@ int eo_filter_eval(const eo_polygon *p, int samples, int W, int H, int filter, i
     const int64_t h = 256 / samples, c = h / 2;
     memset(sums, 0, (size_t)W * (size_t)H * 3 * sizeof *sums);
     for (int ch = 0; ch < 3; ch++) {
-        if (ch >= nch) {                              /* no offsets: every channel is channel 0 */
+        if (ch >= nch) { /* no offsets: every channel is channel 0 */
             for (size_t i = 0; i < (size_t)W * (size_t)H; i++)
                 sums[i * 3 + (size_t)ch] = sums[i * 3];
             continue;
@@ -146,7 +146,7 @@ int eo_filter_eval(const eo_polygon *p, int samples, int W, int H, int filter, i
                     const int64_t Xc = 256 * (int64_t)i + 128 + delta, Yc = 256 * (int64_t)j + 128;
                     const uint32_t *m0 = &m[(size_t)j * (size_t)Wm + (size_t)i], *m1 = m0 + Wm;
                     if (!(m0[0] | m0[1] | m1[0] | m1[1]))
-                        continue;                     /* nothing covered in the base (sums are 0) */
+                        continue; /* nothing covered in the base (sums are 0) */
                     for (int b = 0; b < 2; b++)
                         for (int a = 0; a < 2; a++) {
                             const uint32_t v = m[(size_t)(j + b) * (size_t)Wm + (size_t)(i + a)];

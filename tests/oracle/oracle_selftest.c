@@ -19,16 +19,16 @@
 
 static int g_pass, g_fail;
 
-#define EXPECT(cond, ...)                                       \
-    do {                                                        \
-        if (cond)                                               \
-            g_pass++;                                           \
-        else {                                                  \
-            g_fail++;                                           \
+#define EXPECT(cond, ...) \
+    do { \
+        if (cond) \
+            g_pass++; \
+        else { \
+            g_fail++; \
             fprintf(stderr, "FAIL %s:%d: ", __FILE__, __LINE__); \
-            fprintf(stderr, __VA_ARGS__);                       \
-            fprintf(stderr, "\n");                              \
-        }                                                       \
+            fprintf(stderr, __VA_ARGS__); \
+            fprintf(stderr, "\n"); \
+        } \
     } while (0)
 
 #define M23 ((int64_t)(1 << 23) - 1)
@@ -43,17 +43,28 @@ typedef struct poly {
     uint32_t n, nc;
 } poly;
 
-static void poly_clear(poly *p) { p->n = 0; p->nc = 0; p->start[0] = 0; }
+static void poly_clear(poly *p)
+{
+    p->n = 0;
+    p->nc = 0;
+    p->start[0] = 0;
+}
 static void poly_pt(poly *p, int64_t x, int64_t y)
 {
-    if (p->n >= 4096) { fprintf(stderr, "poly overflow\n"); exit(2); }
+    if (p->n >= 4096) {
+        fprintf(stderr, "poly overflow\n");
+        exit(2);
+    }
     p->pts[p->n].x = (int32_t)x;
     p->pts[p->n].y = (int32_t)y;
     p->n++;
 }
 static void poly_end(poly *p)
 {
-    if (p->nc >= 1024) { fprintf(stderr, "poly overflow\n"); exit(2); }
+    if (p->nc >= 1024) {
+        fprintf(stderr, "poly overflow\n");
+        exit(2);
+    }
     p->start[++p->nc] = p->n;
 }
 static eo_polygon view(const poly *p)
@@ -85,7 +96,10 @@ static void poly_rect_rev(poly *p, int64_t x0, int64_t y0, int64_t x1, int64_t y
 static uint32_t *alloc_masks(int W, int H)
 {
     uint32_t *m = calloc((size_t)W * (size_t)H, sizeof *m);
-    if (!m) { fprintf(stderr, "out of memory\n"); exit(2); }
+    if (!m) {
+        fprintf(stderr, "out of memory\n");
+        exit(2);
+    }
     return m;
 }
 
@@ -147,8 +161,8 @@ static void check_rect(int N, int W, int H, int64_t x0, int64_t y0, int64_t x1, 
                 bad++;
             }
         }
-    EXPECT(bad == 0, "rectangle (%ld,%ld)-(%ld,%ld) rev %d copies %d N=%d: %d bad pixels", (long)x0, (long)y0,
-           (long)x1, (long)y1, rev, copies, N, bad);
+    EXPECT(bad == 0, "rectangle (%ld,%ld)-(%ld,%ld) rev %d copies %d N=%d: %d bad pixels", (long)x0, (long)y0, (long)x1,
+           (long)y1, rev, copies, N, bad);
     free(nz);
     free(eo);
     free(p);
@@ -201,8 +215,8 @@ static void test_rects(void)
         /* far outside */
         check_rect(N, W, H, -M23, -M23, M23, M23, 0, 1);
         check_rect(N, W, H, -M23, 100, 700, M23, 1, 1);
-        check_rect(N, W, H, -M23, -M23, -1, M23, 0, 1);       /* entirely left: empty */
-        check_rect(N, W, H, 256 * W, -M23, M23, M23, 0, 1);   /* entirely right: empty */
+        check_rect(N, W, H, -M23, -M23, -1, M23, 0, 1);     /* entirely left: empty */
+        check_rect(N, W, H, 256 * W, -M23, M23, M23, 0, 1); /* entirely right: empty */
         for (int t = 0; t < 60; t++) {
             int64_t x0 = eo_rng_range(&g, -300, 256 * W + 300), x1 = eo_rng_range(&g, -300, 256 * W + 300);
             int64_t y0 = eo_rng_range(&g, -300, 256 * H + 300), y1 = eo_rng_range(&g, -300, 256 * H + 300);
@@ -284,8 +298,8 @@ static void test_triangles(void)
         if (bad || cnt_o != cnt_t) {
             bad_cases++;
             fprintf(stderr, "  triangle (%ld,%ld) (%ld,%ld) (%ld,%ld) N=%d %dx%d: oracle %ld, half-plane %ld\n",
-                    (long)v[0][0], (long)v[0][1], (long)v[1][0], (long)v[1][1], (long)v[2][0], (long)v[2][1], N, W,
-                    H, cnt_o, cnt_t);
+                    (long)v[0][0], (long)v[0][1], (long)v[1][0], (long)v[1][1], (long)v[2][0], (long)v[2][1], N, W, H,
+                    cnt_o, cnt_t);
         }
         free(m);
     }
@@ -391,8 +405,8 @@ static void test_rings_and_winding(void)
                     EXPECT(st.min_winding == (w < 0 ? w : 0) && st.max_winding == (w > 0 ? w : 0),
                            "%d-wound stats min %ld max %ld", k, (long)st.min_winding, (long)st.max_winding);
                     uint64_t inside = 16u * (uint64_t)N; /* 4 x 4 pixels */
-                    EXPECT(st.outside_7bit == ((w < -64 || w > 63) ? inside : 0),
-                           "%d-wound (w=%ld) outside_7bit %lu", k, (long)w, (unsigned long)st.outside_7bit);
+                    EXPECT(st.outside_7bit == ((w < -64 || w > 63) ? inside : 0), "%d-wound (w=%ld) outside_7bit %lu",
+                           k, (long)w, (unsigned long)st.outside_7bit);
                     EXPECT(st.abs_ge64 == ((w <= -64 || w >= 64) ? inside : 0), "%d-wound abs_ge64", k);
                     EXPECT(st.wrapped_uncovered == ((w % 128 == 0) ? inside : 0), "%d-wound wrapped", k);
                     EXPECT(st.max_row_crossings == 2u * (uint64_t)k && st.edges == 2u * (uint64_t)k,
@@ -620,8 +634,10 @@ static void test_random_cross(int nscenes)
         int W, H, N, rule;
         eo_rand_config(&cfg, &W, &H, &N, &rule);
         /* keep the brute-force methods affordable */
-        if (W > 12) W = 1 + W % 12;
-        if (H > 10) H = 1 + H % 10;
+        if (W > 12)
+            W = 1 + W % 12;
+        if (H > 10)
+            H = 1 + H % 10;
         eo_randpoly_opts o = { 0, 600, 0, 0 };
         o.samples = (t % 4 == 0) ? 0 : N;
         if (eo_randpoly_gen(&rp, (uint64_t)t * 7919u + 1u, W, H, &o) != EO_OK) {
@@ -664,8 +680,10 @@ static void test_random_cross(int nscenes)
             for (int i = 0; i < W; i++)
                 for (int s = 0; s < N; s++) {
                     int64_t w = eo_sample_winding(&v, N, i, j, s, NULL);
-                    if (w < mn || (i == 0 && j == 0 && s == 0)) mn = w;
-                    if (w > mx || (i == 0 && j == 0 && s == 0)) mx = w;
+                    if (w < mn || (i == 0 && j == 0 && s == 0))
+                        mn = w;
+                    if (w > mx || (i == 0 && j == 0 && s == 0))
+                        mx = w;
                     out7 += w < -64 || w > 63;
                     int covered = rule ? (w % 2 != 0) : (w % 128 != 0);
                     if (covered != (int)(a[(size_t)j * W + i] >> s & 1))
@@ -708,8 +726,7 @@ static void test_generator(void)
             break;
         }
         kinds |= a.kinds_used;
-        if (a.npoints != b.npoints || a.ncontours != b.ncontours ||
-            memcmp(a.pts, b.pts, a.npoints * sizeof *a.pts) ||
+        if (a.npoints != b.npoints || a.ncontours != b.ncontours || memcmp(a.pts, b.pts, a.npoints * sizeof *a.pts) ||
             memcmp(a.start, b.start, (a.ncontours + 1) * sizeof *a.start))
             same = 0;
         if (a.npoints > (o.max_points ? o.max_points : 1024))
@@ -725,7 +742,8 @@ static void test_generator(void)
             if (a.pts[k].x < -M23 || a.pts[k].x > M23 || a.pts[k].y < -M23 || a.pts[k].y > M23)
                 inrange = 0;
         if (seed > 0 && eo_randpoly_gen(&b, seed - 1, W, H, &o) == EO_OK &&
-            (b.npoints != a.npoints || memcmp(a.pts, b.pts, (a.npoints < b.npoints ? a.npoints : b.npoints) * sizeof *a.pts)))
+            (b.npoints != a.npoints ||
+             memcmp(a.pts, b.pts, (a.npoints < b.npoints ? a.npoints : b.npoints) * sizeof *a.pts)))
             differ++;
     }
     EXPECT(same, "generator is not deterministic");

@@ -81,7 +81,7 @@ eo_polygon eo_randpoly_view(const eo_randpoly *rp)
 typedef struct gen {
     eo_rng g;
     int W, H;
-    int samples_opt;     /* 0: mix */
+    int samples_opt; /* 0: mix */
     uint32_t max_points;
     eo_randpoly *rp;
     int nomem;
@@ -265,9 +265,7 @@ static void k_degen(gen *G)
     int64_t sub = rnd(G, 0, 5);
     int64_t ax = coord(G, 0), ay = coord(G, 1);
     switch (sub) {
-    case 0: /* one point */
-        push(G, ax, ay);
-        break;
+    case 0: /* one point */ push(G, ax, ay); break;
     case 1: /* two points: an edge and its reverse */
         push(G, ax, ay);
         push(G, coord(G, 0), coord(G, 1));
@@ -327,14 +325,14 @@ static void k_slope(gen *G)
         int64_t m = rnd(G, 1, 3 * (int64_t)N), dy = h * m * (pct(G, 50) ? 1 : -1), dx;
         int64_t t = rnd(G, 0, 5);
         if (t <= 1)
-            dx = t ? dy : -dy;               /* +-1 sample column per sample row */
+            dx = t ? dy : -dy; /* +-1 sample column per sample row */
         else if (t == 2)
             dx = (pct(G, 50) ? 256 : -256) * m; /* +-1 pixel per sample row */
         else if (t == 3)
-            dx = 0;                          /* vertical */
+            dx = 0; /* vertical */
         else if (t == 4) {
             dx = h * rnd(G, -3 * (int64_t)N, 3 * (int64_t)N);
-            dy = 0;                          /* horizontal */
+            dy = 0; /* horizontal */
         } else
             dx = (pct(G, 50) ? 1 : -1) * (dy < 0 ? -dy : dy) / 2; /* half a column per row */
         x += dx;
@@ -387,7 +385,14 @@ static void k_wound(gen *G)
     if (pct(G, 40)) { /* a rectangle, so the wrap covers whole pixels */
         int64_t x0 = near_coord(G, 0), y0 = near_coord(G, 1), x1 = near_coord(G, 0), y1 = near_coord(G, 1);
         bn = 4;
-        bx[0] = x0; by[0] = y0; bx[1] = x1; by[1] = y0; bx[2] = x1; by[2] = y1; bx[3] = x0; by[3] = y1;
+        bx[0] = x0;
+        by[0] = y0;
+        bx[1] = x1;
+        by[1] = y0;
+        bx[2] = x1;
+        by[2] = y1;
+        bx[3] = x0;
+        by[3] = y1;
     } else
         for (int64_t i = 0; i < bn; i++) {
             bx[i] = pct(G, 80) ? near_coord(G, 0) : coord(G, 0);
@@ -433,12 +438,8 @@ static void k_border(gen *G)
 {
     int64_t LW = 256 * (int64_t)G->W, LH = 256 * (int64_t)G->H;
     switch (rnd(G, 0, 4)) {
-    case 0: /* the whole canvas */
-        rect(G, 0, 0, LW, LH, EO_RP_BORDER);
-        return;
-    case 1: /* spans x = 0 .. 256W over random rows */
-        rect(G, 0, coord(G, 1), LW, coord(G, 1), EO_RP_BORDER);
-        return;
+    case 0: /* the whole canvas */ rect(G, 0, 0, LW, LH, EO_RP_BORDER); return;
+    case 1: /* spans x = 0 .. 256W over random rows */ rect(G, 0, coord(G, 1), LW, coord(G, 1), EO_RP_BORDER); return;
     case 2: /* spans y = 0 .. 256H over random columns */
         rect(G, coord(G, 0), 0, coord(G, 0), LH, EO_RP_BORDER);
         return;
@@ -486,9 +487,9 @@ static const struct {
     unsigned weight;
     kind_fn fn;
 } kinds[EO_RP_NKINDS] = {
-    { EO_RP_RANDOM, 20, k_random }, { EO_RP_GRID, 12, k_grid },   { EO_RP_RECT, 10, k_rect },
-    { EO_RP_ORTHO, 8, k_ortho },    { EO_RP_DEGEN, 10, k_degen }, { EO_RP_SLOPE, 10, k_slope },
-    { EO_RP_FAR, 8, k_far },        { EO_RP_WOUND, 6, k_wound },  { EO_RP_TINY, 6, k_tiny },
+    { EO_RP_RANDOM, 20, k_random }, { EO_RP_GRID, 12, k_grid },    { EO_RP_RECT, 10, k_rect },
+    { EO_RP_ORTHO, 8, k_ortho },    { EO_RP_DEGEN, 10, k_degen },  { EO_RP_SLOPE, 10, k_slope },
+    { EO_RP_FAR, 8, k_far },        { EO_RP_WOUND, 6, k_wound },   { EO_RP_TINY, 6, k_tiny },
     { EO_RP_BORDER, 6, k_border },  { EO_RP_SHARED, 4, k_shared },
 };
 
@@ -559,10 +560,10 @@ void eo_rand_config(eo_rng *g, int *W, int *H, int *samples, int *rule_evenodd)
     static const int ns[3] = { 8, 16, 32 };
     for (int d = 0; d < 2; d++) {
         uint64_t u = eo_rng_below(g, 100);
-        int64_t v = u < 30 ? eo_rng_range(g, 1, 8)
-                  : u < 75 ? eo_rng_range(g, 9, 40)
-                  : u < 95 ? eo_rng_range(g, 41, 100)
-                           : eo_rng_range(g, 101, 200);
+        int64_t v = u < 30   ? eo_rng_range(g, 1, 8)
+                    : u < 75 ? eo_rng_range(g, 9, 40)
+                    : u < 95 ? eo_rng_range(g, 41, 100)
+                             : eo_rng_range(g, 101, 200);
         if (d == 0)
             *W = (int)v;
         else

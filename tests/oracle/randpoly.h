@@ -20,8 +20,10 @@ extern "C" {
  * code): state += 0x9E3779B97F4A7C15; z = state;
  * z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9; z = (z ^ (z >> 27)) * 0x94D049BB133111EB;
  * return z ^ (z >> 31). */
-typedef struct eo_rng { uint64_t state; } eo_rng;
-void eo_rng_seed(eo_rng *g, uint64_t seed);              /* state = seed */
+typedef struct eo_rng {
+    uint64_t state;
+} eo_rng;
+void eo_rng_seed(eo_rng *g, uint64_t seed); /* state = seed */
 uint64_t eo_rng_next(eo_rng *g);
 uint64_t eo_rng_below(eo_rng *g, uint64_t n);            /* uniform in [0, n), n >= 1, rejection (no bias) */
 int64_t eo_rng_range(eo_rng *g, int64_t lo, int64_t hi); /* uniform in [lo, hi], hi - lo < 2^62 */
@@ -53,10 +55,10 @@ typedef struct eo_randpoly_opts {
 /* An owned polygon; layout of the view equals ef_polygon's. */
 typedef struct eo_randpoly {
     eo_point *pts;
-    uint32_t *start;        /* ncontours + 1 entries, start[0] = 0 */
+    uint32_t *start; /* ncontours + 1 entries, start[0] = 0 */
     uint32_t npoints, ncontours;
     uint32_t pts_cap, start_cap;
-    unsigned kinds_used;    /* EO_RP_* bits of the contours generated */
+    unsigned kinds_used; /* EO_RP_* bits of the contours generated */
 } eo_randpoly;
 
 void eo_randpoly_init(eo_randpoly *rp);

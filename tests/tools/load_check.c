@@ -43,7 +43,8 @@ int main(int argc, char **argv)
     memset(&e, 0, sizeof e);
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--size") == 0 && i + 1 < argc) {
-            if (sscanf(argv[++i], "%" SCNd32 "x%" SCNd32, &o.fit_width, &o.fit_height) != 2) return 2;
+            if (sscanf(argv[++i], "%" SCNd32 "x%" SCNd32, &o.fit_width, &o.fit_height) != 2)
+                return 2;
         } else if (!in) {
             in = argv[i];
         } else {

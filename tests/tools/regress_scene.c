@@ -43,7 +43,8 @@ static void q8(int64_t v)
     if (a % 256) {
         char d[16];
         int n = snprintf(d, sizeof d, "%08" PRId64, (a % 256) * 390625);
-        while (n > 0 && d[n - 1] == '0') d[--n] = '\0';
+        while (n > 0 && d[n - 1] == '0')
+            d[--n] = '\0';
         printf(".%s", d);
     }
 }
@@ -57,7 +58,7 @@ static void shape(const char *rule)
 
 static void point(int64_t x, int64_t y)
 {
-    const int64_t lim = 32767 * 256 + 255;   /* |v| < 2^23 */
+    const int64_t lim = 32767 * 256 + 255; /* |v| < 2^23 */
     q8(x < -lim ? -lim : x > lim ? lim : x);
     q8(y < -lim ? -lim : y > lim ? lim : y);
 }
@@ -65,35 +66,38 @@ static void point(int64_t x, int64_t y)
 int main(int argc, char **argv)
 {
     st = argc > 1 ? strtoull(argv[1], NULL, 10) : 20070101u;
-    if (st == 0) st = 1;
+    if (st == 0)
+        st = 1;
     printf("# tests/tools/regress_scene %s\nscene %d %d\n", argc > 1 ? argv[1] : "20070101", W, H);
-    for (int i = 0; i < 40; i++) {                      /* random polygons, some far outside */
+    for (int i = 0; i < 40; i++) { /* random polygons, some far outside */
         shape(i % 2 ? "evenodd" : "nonzero");
         int n = (int)range(3, 40), c = (int)range(1, 3);
         for (int k = 0; k < c; k++) {
             printf("contour");
             int64_t reach = i % 5 == 0 ? 20000 : 300;
-            for (int j = 0; j < n; j++) point(range(-reach * 256, (W + reach) * 256), range(-reach * 64, (H + reach / 4) * 256));
+            for (int j = 0; j < n; j++)
+                point(range(-reach * 256, (W + reach) * 256), range(-reach * 64, (H + reach / 4) * 256));
             printf("\n");
         }
     }
-    shape("nonzero");                                   /* 130 coincident squares: winding wraps at 128 */
+    shape("nonzero"); /* 130 coincident squares: winding wraps at 128 */
     for (int k = 0; k < 130; k++) {
         printf("contour");
         point(10 * 256 + 3, 10 * 256 + 5), point(60 * 256 + 1, 10 * 256 + 5), point(60 * 256 + 1, 50 * 256 + 7),
             point(10 * 256 + 3, 50 * 256 + 7);
         printf("\n");
     }
-    shape("evenodd");                                   /* the extremes of the device range */
+    shape("evenodd"); /* the extremes of the device range */
     printf("contour");
-    point(-32767 * 256 - 255, -32767 * 256 - 255), point(32767 * 256 + 255, 3 * 256), point(100 * 256, 32767 * 256 + 255);
+    point(-32767 * 256 - 255, -32767 * 256 - 255), point(32767 * 256 + 255, 3 * 256),
+        point(100 * 256, 32767 * 256 + 255);
     printf("\n");
-    shape("nonzero");                                   /* long nearly horizontal / vertical edges */
+    shape("nonzero"); /* long nearly horizontal / vertical edges */
     printf("contour");
     point(-30000 * 256, 20 * 256), point(30000 * 256 + 17, 21 * 256 + 3), point(30000 * 256, 90 * 256 + 255),
         point(129 * 256 + 1, 30000 * 256), point(128 * 256, -30000 * 256 + 9);
     printf("\n");
-    shape("evenodd");                                   /* tiny triangles */
+    shape("evenodd"); /* tiny triangles */
     for (int k = 0; k < 300; k++) {
         int64_t x = range(0, W * 256), y = range(0, H * 256);
         printf("contour");

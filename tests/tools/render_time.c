@@ -54,7 +54,8 @@ int main(int argc, char **argv)
         return 3;
     }
     double *t = malloc(sizeof *t * (size_t)repeat);
-    printf("%s %dx%d, %u shapes, %u points, median of %d renders\n", in, s.width, s.height, s.nshapes, s.npoints, repeat);
+    printf("%s %dx%d, %u shapes, %u points, median of %d renders\n", in, s.width, s.height, s.nshapes, s.npoints,
+           repeat);
     for (int n = 8; n <= 32; n *= 2) {
         for (int rule = 0; rule < 2; rule++) {
             ef_ctx *ctx;

@@ -62,12 +62,12 @@ int main(int argc, char **argv)
     printf("scene %d %d\n", s.width, s.height);
     for (uint32_t i = 0; i < s.nshapes; i++) {
         const ef_shape *sh = &s.shapes[i];
-        printf("shape %s %u %u %u %u\n", sh->rule == EF_RULE_EVENODD ? "evenodd" : "nonzero", sh->color.r,
-               sh->color.g, sh->color.b, sh->color.a);
+        printf("shape %s %u %u %u %u\n", sh->rule == EF_RULE_EVENODD ? "evenodd" : "nonzero", sh->color.r, sh->color.g,
+               sh->color.b, sh->color.a);
         for (uint32_t c = sh->first_contour; c < sh->first_contour + sh->ncontours; c++) {
             uint32_t b = s.start[c], e = s.start[c + 1];
             if (e - b < 3)
-                continue;   /* 1- and 2-point contours cover nothing (spec 5.1); the format needs 3 */
+                continue; /* 1- and 2-point contours cover nothing (spec 5.1); the format needs 3 */
             printf("contour");
             for (uint32_t k = b; k < e; k++) {
                 print_q8(s.points[k].x);

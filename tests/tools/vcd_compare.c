@@ -36,18 +36,18 @@
 
 typedef struct change {
     uint64_t time;
-    size_t val;                 /* offset of the value (width chars) in the pool */
+    size_t val; /* offset of the value (width chars) in the pool */
 } change;
 
 typedef struct signal {
-    char *name;                 /* scope.path.name */
+    char *name; /* scope.path.name */
     unsigned width;
     change *ch;
     size_t n, cap;
-    size_t cur;                 /* pool offset of the current value; SIZE_MAX before the first */
+    size_t cur; /* pool offset of the current value; SIZE_MAX before the first */
 } signal;
 
-typedef struct idmap {          /* identifier code -> signals (codes may alias) */
+typedef struct idmap { /* identifier code -> signals (codes may alias) */
     char *id;
     size_t *sig;
     size_t nsig;
@@ -58,7 +58,7 @@ typedef struct vcd {
     char timescale[64];
     signal *sig;
     size_t nsig, capsig;
-    idmap *ids;                 /* open addressing, capids a power of two */
+    idmap *ids; /* open addressing, capids a power of two */
     size_t nids, capids;
     char *pool;
     size_t pool_len, pool_cap;
@@ -105,7 +105,7 @@ static char *next(lexer *lx)
     s = lx->p;
     while (lx->p < lx->end && !(*lx->p == ' ' || *lx->p == '\t' || *lx->p == '\n' || *lx->p == '\r'))
         lx->p++;
-    *lx->p = '\0';       /* the buffer has one spare byte at the end */
+    *lx->p = '\0'; /* the buffer has one spare byte at the end */
     if (lx->p < lx->end)
         lx->p++;
     return s;
@@ -141,7 +141,7 @@ static idmap *id_slot(vcd *v, const char *id)
 static void id_add(vcd *v, const char *id, size_t sig)
 {
     idmap *m;
-    if (2 * (v->nids + 1) > v->capids) {           /* grow and rehash */
+    if (2 * (v->nids + 1) > v->capids) { /* grow and rehash */
         idmap *old = v->ids;
         size_t oldcap = v->capids;
         v->capids = oldcap ? 2 * oldcap : 64;
@@ -251,7 +251,7 @@ static void parse_header(vcd *v, lexer *lx)
             v->timescale[0] = '\0';
             while ((u = next(lx)) != NULL && strcmp(u, "$end") != 0)
                 if (strlen(v->timescale) + strlen(u) < sizeof v->timescale)
-                    strcat(v->timescale, u);       /* "1 ns" and "1ns" alike */
+                    strcat(v->timescale, u); /* "1 ns" and "1ns" alike */
             if (!u)
                 malformed(v, "no $end after", "$timescale");
         } else if (strcmp(t, "$date") == 0 || strcmp(t, "$version") == 0 || strcmp(t, "$comment") == 0) {
@@ -288,7 +288,7 @@ static void set_value(vcd *v, uint64_t time, const char *bits, size_t len, const
         signal *s = &v->sig[m->sig[k]];
         if (s->width > sizeof norm)
             malformed(v, "signal too wide", s->name);
-        if (len > s->width) {          /* only extra leading zeros are harmless */
+        if (len > s->width) { /* only extra leading zeros are harmless */
             for (size_t i = 0; i < len - s->width; i++)
                 if (bits[i] != '0')
                     malformed(v, "value wider than its signal", id);
@@ -298,7 +298,7 @@ static void set_value(vcd *v, uint64_t time, const char *bits, size_t len, const
         memset(norm, fill, pad);
         memcpy(norm + pad, bits + skip, have);
         if (s->cur != SIZE_MAX && memcmp(v->pool + s->cur, norm, s->width) == 0)
-            continue;                  /* no change */
+            continue; /* no change */
         if (s->n == s->cap) {
             s->cap = s->cap ? 2 * s->cap : 16;
             s->ch = xrealloc(s->ch, s->cap * sizeof *s->ch);
@@ -460,7 +460,7 @@ static void words_of(const vcd *v, const char *iface, int prefix)
         const char *vv, *rr;
         size_t n = 0;
         if (v->pool[clk->ch[k].val] != '1')
-            continue;                                  /* not a rising edge */
+            continue; /* not a rising edge */
         if (t % 10 != 5)
             malformed(v, "clk rises off the 10c + 5 grid", NULL);
         vv = at(v, valid, &kv, t);
@@ -510,7 +510,8 @@ static int words(const char *iface, const char *path)
     for (size_t i = 0; i < v.nsig; i++) {
         const char *n = v.sig[i].name, *dot;
         char scope[256], key[260];
-        if (strncmp(n, "edgeflag.", 9) != 0 || (dot = strchr(n + 9, '.')) == NULL || (size_t)(dot - n - 9) >= sizeof scope)
+        if (strncmp(n, "edgeflag.", 9) != 0 || (dot = strchr(n + 9, '.')) == NULL ||
+            (size_t)(dot - n - 9) >= sizeof scope)
             continue;
         memcpy(scope, n + 9, (size_t)(dot - n - 9));
         scope[dot - n - 9] = '\0';

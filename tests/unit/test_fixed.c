@@ -59,9 +59,13 @@ static int shim_run(const struct CMUnitTest *t, size_t n)
 #endif
 
 #include "ef_fixed.h"
-#include "fixed_internal.h"     /* ef_div_u128_u64 is tested directly */
+#include "fixed_internal.h" /* ef_div_u128_u64 is tested directly */
 
-#define CHECK(cond, ...) do { if (!(cond)) fail_msg(__VA_ARGS__); } while (0)
+#define CHECK(cond, ...) \
+    do { \
+        if (!(cond)) \
+            fail_msg(__VA_ARGS__); \
+    } while (0)
 #define LL(v) ((long long)(v))
 #define ULL(v) ((unsigned long long)(v))
 
@@ -104,24 +108,30 @@ static const int64_t CORNERS[] = {
  * division) so that a shared mistake is unlikely.
  * --------------------------------------------------------------------- */
 #define BL 16
-typedef struct big { uint16_t d[BL]; } big;
+typedef struct big {
+    uint16_t d[BL];
+} big;
 
 static big big_u64(uint64_t v)
 {
     big r;
     memset(&r, 0, sizeof r);
-    for (int i = 0; i < 4; i++) r.d[i] = (uint16_t)(v >> (16 * i));
+    for (int i = 0; i < 4; i++)
+        r.d[i] = (uint16_t)(v >> (16 * i));
     return r;
 }
-static uint64_t big_word(big a, int w)      /* 64-bit word w (0 = lowest) */
+static uint64_t big_word(big a, int w) /* 64-bit word w (0 = lowest) */
 {
     uint64_t v = 0;
-    for (int i = 3; i >= 0; i--) v = (v << 16) | a.d[4 * w + i];
+    for (int i = 3; i >= 0; i--)
+        v = (v << 16) | a.d[4 * w + i];
     return v;
 }
 static bool big_fits_u64(big a)
 {
-    for (int i = 4; i < BL; i++) if (a.d[i]) return false;
+    for (int i = 4; i < BL; i++)
+        if (a.d[i])
+            return false;
     return true;
 }
 static bool big_is_zero(big a) { return big_fits_u64(a) && big_word(a, 0) == 0; }
@@ -143,7 +153,8 @@ static big big_mul(big a, big b)
             }
         }
     big r;
-    for (int i = 0; i < BL; i++) r.d[i] = (uint16_t)acc[i];
+    for (int i = 0; i < BL; i++)
+        r.d[i] = (uint16_t)acc[i];
     return r;
 }
 static big big_add(big a, big b)
@@ -156,7 +167,7 @@ static big big_add(big a, big b)
     }
     return a;
 }
-static big big_sub(big a, big b)            /* a >= b */
+static big big_sub(big a, big b) /* a >= b */
 {
     int32_t br = 0;
     for (int i = 0; i < BL; i++) {
@@ -169,7 +180,8 @@ static big big_sub(big a, big b)            /* a >= b */
 static int big_cmp(big a, big b)
 {
     for (int i = BL - 1; i >= 0; i--)
-        if (a.d[i] != b.d[i]) return a.d[i] < b.d[i] ? -1 : 1;
+        if (a.d[i] != b.d[i])
+            return a.d[i] < b.d[i] ? -1 : 1;
     return 0;
 }
 static big big_shl(big a, unsigned n)
@@ -197,7 +209,8 @@ static big big_div(big n, big d, big *rem)
             q.d[i / 16] |= (uint16_t)(1u << (i % 16));
         }
     }
-    if (rem) *rem = r;
+    if (rem)
+        *rem = r;
     return q;
 }
 static uint64_t mag(int64_t v) { return v < 0 ? (uint64_t)0 - (uint64_t)v : (uint64_t)v; }
@@ -205,18 +218,19 @@ static uint64_t mag(int64_t v) { return v < 0 ? (uint64_t)0 - (uint64_t)v : (uin
 /* Signed magnitude result -> int64 if it fits (|neg| <= 2^63, pos < 2^63). */
 static bool ref_fit(big m, bool neg, int64_t *out)
 {
-    if (!big_fits_u64(m)) return false;
+    if (!big_fits_u64(m))
+        return false;
     uint64_t u = big_word(m, 0);
-    if (neg ? u > (UINT64_C(1) << 63) : u >= (UINT64_C(1) << 63)) return false;
-    if (neg) *out = u == (UINT64_C(1) << 63) ? INT64_MIN : -(int64_t)u;
-    else *out = (int64_t)u;
+    if (neg ? u > (UINT64_C(1) << 63) : u >= (UINT64_C(1) << 63))
+        return false;
+    if (neg)
+        *out = u == (UINT64_C(1) << 63) ? INT64_MIN : -(int64_t)u;
+    else
+        *out = (int64_t)u;
     return true;
 }
 /* floor(m / d + 1/2) on magnitudes = round half away from zero once signed. */
-static big ref_round_half_up(big m, big d)
-{
-    return big_div(big_add(big_shl(m, 1), d), big_shl(d, 1), NULL);
-}
+static big ref_round_half_up(big m, big d) { return big_div(big_add(big_shl(m, 1), d), big_shl(d, 1), NULL); }
 
 /* ------------------------------------------------------------------------
  * Shifts, floor division, rounding helpers (the inline part of ef_fixed.h)
@@ -226,15 +240,27 @@ static void test_floor_div_mod(void **state)
     (void)state;
     /* a, d, floor(a/d), a mod d */
     static const int64_t T[][4] = {
-        { 7, 2, 3, 1 },     { -7, 2, -4, 1 },   { 7, 3, 2, 1 },    { -7, 3, -3, 2 },
-        { -6, 3, -2, 0 },   { 6, 3, 2, 0 },     { 0, 5, 0, 0 },    { -1, 5, -1, 4 },
-        { -5, 5, -1, 0 },   { -4, 5, -1, 1 },   { 4, 5, 0, 4 },    { -1, 1, -1, 0 },
-        { INT64_MIN, 1, INT64_MIN, 0 },        { INT64_MIN, 2, INT64_MIN / 2, 0 },
+        { 7, 2, 3, 1 },
+        { -7, 2, -4, 1 },
+        { 7, 3, 2, 1 },
+        { -7, 3, -3, 2 },
+        { -6, 3, -2, 0 },
+        { 6, 3, 2, 0 },
+        { 0, 5, 0, 0 },
+        { -1, 5, -1, 4 },
+        { -5, 5, -1, 0 },
+        { -4, 5, -1, 1 },
+        { 4, 5, 0, 4 },
+        { -1, 1, -1, 0 },
+        { INT64_MIN, 1, INT64_MIN, 0 },
+        { INT64_MIN, 2, INT64_MIN / 2, 0 },
         { INT64_MIN, 3, INT64_C(-3074457345618258603), 1 },
         { INT64_MAX, 3, INT64_C(3074457345618258602), 1 },
         { INT64_MIN, INT64_MAX, -2, INT64_MAX - 1 },
         { -1, INT64_MAX, -1, INT64_MAX - 1 },
-        { -256, 256, -1, 0 }, { -257, 256, -2, 255 }, { 255, 256, 0, 255 },
+        { -256, 256, -1, 0 },
+        { -257, 256, -2, 255 },
+        { 255, 256, 0, 255 },
     };
     for (size_t i = 0; i < sizeof T / sizeof T[0]; i++) {
         int64_t q, r;
@@ -246,7 +272,8 @@ static void test_floor_div_mod(void **state)
     /* Random: a = d*q + r, 0 <= r < d, checked without division. */
     for (int i = 0; i < 100000; i++) {
         int64_t a = rnd_i64(), d = (int64_t)(rnd_u64() >> 1);
-        if (d == 0) d = 1;
+        if (d == 0)
+            d = 1;
         int64_t q, r;
         ef_divmod_floor_i64(a, d, &q, &r);
         CHECK(r >= 0 && r < d, "remainder range a=%lld d=%lld", LL(a), LL(d));
@@ -255,7 +282,8 @@ static void test_floor_div_mod(void **state)
          * wherever that is the floor. */
         CHECK((uint64_t)a - (uint64_t)r == (uint64_t)d * (uint64_t)q, "a = d*q + r: a=%lld d=%lld", LL(a), LL(d));
         CHECK((q < 0) == (a < 0), "sign of floor(a/d): a=%lld d=%lld", LL(a), LL(d));
-        if (a >= 0) CHECK(q == a / d, "floor = trunc for a >= 0");
+        if (a >= 0)
+            CHECK(q == a / d, "floor = trunc for a >= 0");
     }
 }
 
@@ -264,10 +292,9 @@ static void test_ceil_round_div(void **state)
     (void)state;
     /* a, d, ceil(a/d), round half away(a/d) */
     static const int64_t T[][4] = {
-        { 7, 2, 4, 4 },    { -7, 2, -3, -4 },  { 5, 2, 3, 3 },   { -5, 2, -2, -3 },
-        { 4, 2, 2, 2 },    { -4, 2, -2, -2 },  { 1, 3, 1, 0 },   { -1, 3, 0, 0 },
-        { 2, 3, 1, 1 },    { -2, 3, 0, -1 },   { 3, 2, 2, 2 },   { -3, 2, -1, -2 },
-        { 0, 9, 0, 0 },    { 13, 26, 1, 1 },   { -13, 26, 0, -1 }, { 12, 26, 1, 0 },
+        { 7, 2, 4, 4 }, { -7, 2, -3, -4 }, { 5, 2, 3, 3 },     { -5, 2, -2, -3 }, { 4, 2, 2, 2 }, { -4, 2, -2, -2 },
+        { 1, 3, 1, 0 }, { -1, 3, 0, 0 },   { 2, 3, 1, 1 },     { -2, 3, 0, -1 },  { 3, 2, 2, 2 }, { -3, 2, -1, -2 },
+        { 0, 9, 0, 0 }, { 13, 26, 1, 1 },  { -13, 26, 0, -1 }, { 12, 26, 1, 0 },
     };
     for (size_t i = 0; i < sizeof T / sizeof T[0]; i++) {
         CHECK(ef_ceildiv_i64(T[i][0], T[i][1]) == T[i][2], "ceildiv(%lld,%lld)", LL(T[i][0]), LL(T[i][1]));
@@ -321,13 +348,13 @@ static void test_round_shr(void **state)
 {
     (void)state;
     /* floor(v / 2^n + 1/2): ties toward +inf */
-    assert_int_equal(ef_round_shr_i64(1, 1), 1);     /* 0.5 -> 1 */
-    assert_int_equal(ef_round_shr_i64(-1, 1), 0);    /* -0.5 -> 0 */
-    assert_int_equal(ef_round_shr_i64(3, 1), 2);     /* 1.5 -> 2 */
-    assert_int_equal(ef_round_shr_i64(-3, 1), -1);   /* -1.5 -> -1 */
-    assert_int_equal(ef_round_shr_i64(-5, 2), -1);   /* -1.25 -> -1 */
-    assert_int_equal(ef_round_shr_i64(-6, 2), -1);   /* -1.5 -> -1 */
-    assert_int_equal(ef_round_shr_i64(-7, 2), -2);   /* -1.75 -> -2 */
+    assert_int_equal(ef_round_shr_i64(1, 1), 1);   /* 0.5 -> 1 */
+    assert_int_equal(ef_round_shr_i64(-1, 1), 0);  /* -0.5 -> 0 */
+    assert_int_equal(ef_round_shr_i64(3, 1), 2);   /* 1.5 -> 2 */
+    assert_int_equal(ef_round_shr_i64(-3, 1), -1); /* -1.5 -> -1 */
+    assert_int_equal(ef_round_shr_i64(-5, 2), -1); /* -1.25 -> -1 */
+    assert_int_equal(ef_round_shr_i64(-6, 2), -1); /* -1.5 -> -1 */
+    assert_int_equal(ef_round_shr_i64(-7, 2), -2); /* -1.75 -> -2 */
     assert_int_equal(ef_round_shr_i64(INT64_MAX, 1), INT64_C(0x4000000000000000));
     assert_int_equal(ef_round_shr_i64(INT64_MIN, 62), -2);
     assert_int_equal(ef_round_shr_i64(INT64_MAX, 62), 2);
@@ -358,7 +385,7 @@ static void test_checked_add(void **state)
     assert_false(ef_add_i64_checked(INT64_MIN, -1, &out));
     assert_false(ef_add_i64_checked(INT64_MIN, INT64_MIN, &out));
     assert_false(ef_add_i64_checked(INT64_MAX, INT64_MAX, &out));
-    assert_int_equal(out, 42);                         /* untouched on failure */
+    assert_int_equal(out, 42); /* untouched on failure */
     assert_true(ef_add_i64_checked(-5, 3, &out) && out == -2);
     for (int i = 0; i < 100000; i++) {
         int64_t a = rnd_i64(), b = rnd_i64();
@@ -373,7 +400,8 @@ static void test_checked_add(void **state)
             fits = true;
         }
         CHECK(ok == fits, "add_checked(%lld,%lld) ok=%d", LL(a), LL(b), ok);
-        if (ok) CHECK((uint64_t)out == (uint64_t)a + (uint64_t)b, "add value");
+        if (ok)
+            CHECK((uint64_t)out == (uint64_t)a + (uint64_t)b, "add value");
     }
 }
 
@@ -382,7 +410,7 @@ static void ref_mul_wide(int64_t a, int64_t b, uint64_t *hi, uint64_t *lo)
 {
     big m = big_mul(big_u64(mag(a)), big_u64(mag(b)));
     if (((a < 0) != (b < 0)) && !big_is_zero(m))
-        m = big_sub(big_shl(big_u64(1), 128), m);      /* two's complement in 128 bits */
+        m = big_sub(big_shl(big_u64(1), 128), m); /* two's complement in 128 bits */
     *hi = big_word(m, 1);
     *lo = big_word(m, 0);
 }
@@ -449,17 +477,17 @@ static void test_div_u128(void **state)
     /* clang-format on */
     for (int i = 0; i < 60000; i++) {
         uint64_t d = i < 20000 ? D[(size_t)i % (sizeof D / sizeof D[0])] : rnd_u64();
-        if (d == 0) d = 1;
+        if (d == 0)
+            d = 1;
         ef_u128 n;
         int kind = (int)(rnd64() % 4);
-        n.hi = kind == 0 ? d - 1 : kind == 1 ? 0 : rnd64() % d;   /* n.hi < d */
+        n.hi = kind == 0 ? d - 1 : kind == 1 ? 0 : rnd64() % d; /* n.hi < d */
         n.lo = kind == 3 ? UINT64_MAX - (rnd64() & 3) : rnd64();
         uint64_t r, q = ef_div_u128_u64(n, d, &r);
         big bn = big_add(big_shl(big_u64(n.hi), 64), big_u64(n.lo)), br;
         big bq = big_div(bn, big_u64(d), &br);
         CHECK(big_fits_u64(bq) && big_word(bq, 0) == q && big_word(br, 0) == r,
-              "div_u128(%016llx%016llx / %016llx): q=%016llx r=%016llx",
-              ULL(n.hi), ULL(n.lo), ULL(d), ULL(q), ULL(r));
+              "div_u128(%016llx%016llx / %016llx): q=%016llx r=%016llx", ULL(n.hi), ULL(n.lo), ULL(d), ULL(q), ULL(r));
     }
 }
 
@@ -474,7 +502,8 @@ static bool ref_q32_mul(int64_t a, int64_t b, int64_t *out)
     bool neg = (a < 0) != (b < 0) && !big_is_zero(m);
     big bias = big_u64(neg ? (UINT64_C(1) << 31) - 1 : UINT64_C(1) << 31);
     big q = big_div(big_add(m, bias), big_u64(UINT64_C(1) << 32), NULL);
-    if (big_is_zero(q)) neg = false;
+    if (big_is_zero(q))
+        neg = false;
     return ref_fit(q, neg, out);
 }
 
@@ -486,16 +515,16 @@ static void test_q32_mul(void **state)
     static const int64_t T[][3] = {
         { EF_Q32_ONE, EF_Q32_ONE, EF_Q32_ONE },
         { 3 * EF_Q32_ONE / 2, -2 * EF_Q32_ONE, -3 * EF_Q32_ONE },
-        { 1, EF_Q32_ONE / 2, 1 },          /* 2^-32 * 0.5 = 0.5 ulp: tie -> +inf -> 1 */
-        { -1, EF_Q32_ONE / 2, 0 },         /* -0.5 ulp: tie -> +inf -> 0 */
-        { 3, EF_Q32_ONE / 2, 2 },          /* 1.5 ulp -> 2 */
-        { -3, EF_Q32_ONE / 2, -1 },        /* -1.5 ulp -> -1 */
-        { 1, 1, 0 },                       /* 2^-64 -> 0 */
-        { -1, 1, 0 },                      /* -2^-64 -> 0 (not below zero) */
+        { 1, EF_Q32_ONE / 2, 1 },   /* 2^-32 * 0.5 = 0.5 ulp: tie -> +inf -> 1 */
+        { -1, EF_Q32_ONE / 2, 0 },  /* -0.5 ulp: tie -> +inf -> 0 */
+        { 3, EF_Q32_ONE / 2, 2 },   /* 1.5 ulp -> 2 */
+        { -3, EF_Q32_ONE / 2, -1 }, /* -1.5 ulp -> -1 */
+        { 1, 1, 0 },                /* 2^-64 -> 0 */
+        { -1, 1, 0 },               /* -2^-64 -> 0 (not below zero) */
         { 1, EF_Q32_ONE / 2 + 1, 1 },
-        { -1, EF_Q32_ONE / 2 + 1, -1 },    /* just past -0.5 ulp */
+        { -1, EF_Q32_ONE / 2 + 1, -1 }, /* just past -0.5 ulp */
         { INT64_MIN, EF_Q32_ONE, INT64_MIN },
-        { -((int64_t)1 << 47), (int64_t)1 << 48, INT64_MIN },   /* -2^15 * 2^16 = -2^31 fits */
+        { -((int64_t)1 << 47), (int64_t)1 << 48, INT64_MIN }, /* -2^15 * 2^16 = -2^31 fits */
         { INT64_MAX, EF_Q32_ONE, INT64_MAX },
     };
     for (size_t i = 0; i < sizeof T / sizeof T[0]; i++) {
@@ -520,14 +549,14 @@ static void test_q32_mul(void **state)
         }
     for (int i = 0; i < 30000; i++) {
         int64_t a = rnd_i64(), b = rnd_i64(), want = 0;
-        if (i % 4 == 0) {       /* b = 2^31 mod 2^32 and a odd: a*b / 2^32 is a tie */
+        if (i % 4 == 0) { /* b = 2^31 mod 2^32 and a odd: a*b / 2^32 is a tie */
             b = ef_wrap_i64(((uint64_t)b & ~UINT64_C(0xFFFFFFFF)) | UINT64_C(0x80000000));
             a = ef_wrap_i64((uint64_t)a | 1u);
         }
         bool wok = ref_q32_mul(a, b, &want);
         bool ok = ef_q32_mul(ef_q32_raw(a), ef_q32_raw(b), &r);
-        CHECK(ok == wok && (!ok || r.v == want), "q32_mul(%lld,%lld): ok=%d got %lld want %lld",
-              LL(a), LL(b), ok, LL(r.v), LL(want));
+        CHECK(ok == wok && (!ok || r.v == want), "q32_mul(%lld,%lld): ok=%d got %lld want %lld", LL(a), LL(b), ok,
+              LL(r.v), LL(want));
     }
 }
 
@@ -535,7 +564,8 @@ static void test_q32_mul(void **state)
 static bool ref_round_div(big m, uint64_t d, bool neg, int64_t *out)
 {
     big q = ref_round_half_up(m, big_u64(d));
-    if (big_is_zero(q)) neg = false;
+    if (big_is_zero(q))
+        neg = false;
     return ref_fit(q, neg, out);
 }
 
@@ -545,16 +575,16 @@ static void test_q32_div(void **state)
     ef_q32 r;
     static const int64_t T[][3] = {
         { EF_Q32_ONE, EF_Q32_ONE, EF_Q32_ONE },
-        { EF_Q32_ONE, 3 * EF_Q32_ONE, 1431655765 },    /* 1/3 = 1431655765.33 ulp */
+        { EF_Q32_ONE, 3 * EF_Q32_ONE, 1431655765 },     /* 1/3 = 1431655765.33 ulp */
         { 2 * EF_Q32_ONE, 3 * EF_Q32_ONE, 2863311531 }, /* 2/3 = 2863311530.67 ulp */
         { -2 * EF_Q32_ONE, 3 * EF_Q32_ONE, -2863311531 },
-        { 1, 2 * EF_Q32_ONE, 1 },          /* 0.5 ulp: tie away -> 1 */
-        { -1, 2 * EF_Q32_ONE, -1 },        /* -0.5 ulp: tie away -> -1 */
+        { 1, 2 * EF_Q32_ONE, 1 },   /* 0.5 ulp: tie away -> 1 */
+        { -1, 2 * EF_Q32_ONE, -1 }, /* -0.5 ulp: tie away -> -1 */
         { 1, -2 * EF_Q32_ONE, -1 },
         { -1, -2 * EF_Q32_ONE, 1 },
-        { 3, 2 * EF_Q32_ONE, 2 },          /* 1.5 -> 2 */
+        { 3, 2 * EF_Q32_ONE, 2 }, /* 1.5 -> 2 */
         { -3, 2 * EF_Q32_ONE, -2 },
-        { 1, 3 * EF_Q32_ONE, 0 },          /* 1/3 ulp -> 0 */
+        { 1, 3 * EF_Q32_ONE, 0 }, /* 1/3 ulp -> 0 */
         { INT64_MIN, EF_Q32_ONE, INT64_MIN },
         { INT64_MIN, 2 * EF_Q32_ONE, INT64_MIN / 2 },
         { INT64_MAX, INT64_MAX, EF_Q32_ONE },
@@ -569,26 +599,27 @@ static void test_q32_div(void **state)
         CHECK(ok && r.v == want, "q32_div(%lld,%lld) = %lld", LL(T[i][0]), LL(T[i][1]), LL(r.v));
     }
     r = ef_q32_raw(42);
-    assert_false(ef_q32_div(ef_q32_raw(INT64_MIN), ef_q32_raw(-EF_Q32_ONE), &r));   /* +2^31 */
-    assert_false(ef_q32_div(ef_q32_raw(EF_Q32_ONE), ef_q32_raw(1), &r));            /* 2^32 */
+    assert_false(ef_q32_div(ef_q32_raw(INT64_MIN), ef_q32_raw(-EF_Q32_ONE), &r)); /* +2^31 */
+    assert_false(ef_q32_div(ef_q32_raw(EF_Q32_ONE), ef_q32_raw(1), &r));          /* 2^32 */
     assert_false(ef_q32_div(ef_q32_raw(INT64_MAX), ef_q32_raw(EF_Q32_ONE / 2), &r));
-    assert_false(ef_q32_div(ef_q32_raw(1), ef_q32_raw(0), &r));                     /* b = 0 */
+    assert_false(ef_q32_div(ef_q32_raw(1), ef_q32_raw(0), &r)); /* b = 0 */
     assert_int_equal(r.v, 42);
     /* The largest quotient that fits, and one just past it. */
     assert_true(ef_q32_div(ef_q32_raw(INT64_MAX), ef_q32_raw(EF_Q32_ONE), &r) && r.v == INT64_MAX);
-    assert_true(ef_q32_div(ef_q32_raw(INT64_C(0x7FFFFFFF)), ef_q32_raw(1), &r) &&
-                r.v == INT64_C(0x7FFFFFFF00000000));
+    assert_true(ef_q32_div(ef_q32_raw(INT64_C(0x7FFFFFFF)), ef_q32_raw(1), &r) && r.v == INT64_C(0x7FFFFFFF00000000));
     assert_false(ef_q32_div(ef_q32_raw(INT64_C(0x80000000)), ef_q32_raw(1), &r));
     assert_true(ef_q32_div(ef_q32_raw(-INT64_C(0x80000000)), ef_q32_raw(1), &r) && r.v == INT64_MIN);
     for (int i = 0; i < 30000; i++) {
         int64_t a = rnd_i64(), b = rnd_i64(), want = 0;
-        if (b == 0) b = 1;
-        if (i % 5 == 0) a = (int64_t)(rnd64() % 4096) - 2048;   /* small dividends: ties, zeros */
+        if (b == 0)
+            b = 1;
+        if (i % 5 == 0)
+            a = (int64_t)(rnd64() % 4096) - 2048; /* small dividends: ties, zeros */
         big m = big_shl(big_u64(mag(a)), 32);
         bool wok = ref_round_div(m, mag(b), (a < 0) != (b < 0), &want);
         bool ok = ef_q32_div(ef_q32_raw(a), ef_q32_raw(b), &r);
-        CHECK(ok == wok && (!ok || r.v == want), "q32_div(%lld,%lld): ok=%d got %lld want %lld",
-              LL(a), LL(b), ok, LL(r.v), LL(want));
+        CHECK(ok == wok && (!ok || r.v == want), "q32_div(%lld,%lld): ok=%d got %lld want %lld", LL(a), LL(b), ok,
+              LL(r.v), LL(want));
     }
 }
 
@@ -596,12 +627,12 @@ static void test_muldiv(void **state)
 {
     (void)state;
     int64_t out = 42;
-    assert_true(ef_muldiv_i64(7, 3, 2, &out) && out == 11);        /* 10.5 -> 11 */
-    assert_true(ef_muldiv_i64(-7, 3, 2, &out) && out == -11);      /* -10.5 -> -11 */
+    assert_true(ef_muldiv_i64(7, 3, 2, &out) && out == 11);   /* 10.5 -> 11 */
+    assert_true(ef_muldiv_i64(-7, 3, 2, &out) && out == -11); /* -10.5 -> -11 */
     assert_true(ef_muldiv_i64(7, 3, -2, &out) && out == -11);
     assert_true(ef_muldiv_i64(-7, -3, -2, &out) && out == -11);
-    assert_true(ef_muldiv_i64(5, 1, 3, &out) && out == 2);         /* 1.67 */
-    assert_true(ef_muldiv_i64(4, 1, 3, &out) && out == 1);         /* 1.33 */
+    assert_true(ef_muldiv_i64(5, 1, 3, &out) && out == 2); /* 1.67 */
+    assert_true(ef_muldiv_i64(4, 1, 3, &out) && out == 1); /* 1.33 */
     assert_true(ef_muldiv_i64(0, INT64_MIN, -1, &out) && out == 0);
     assert_true(ef_muldiv_i64(INT64_MIN, INT64_MIN, INT64_MIN, &out) && out == INT64_MIN);
     assert_true(ef_muldiv_i64(INT64_MAX, INT64_MAX, INT64_MAX, &out) && out == INT64_MAX);
@@ -611,18 +642,20 @@ static void test_muldiv(void **state)
     assert_false(ef_muldiv_i64(INT64_MIN, 1, -1, &out));
     assert_false(ef_muldiv_i64(INT64_MIN, INT64_MIN, 1, &out));
     assert_false(ef_muldiv_i64(INT64_MAX, 2, 1, &out));
-    assert_false(ef_muldiv_i64(INT64_MAX, INT64_MAX, INT64_MAX - 1, &out));  /* rounds past */
+    assert_false(ef_muldiv_i64(INT64_MAX, INT64_MAX, INT64_MAX - 1, &out)); /* rounds past */
     assert_false(ef_muldiv_i64(1, 1, 0, &out));
     assert_int_equal(out, 42);
     for (int i = 0; i < 30000; i++) {
         int64_t a = rnd_i64(), b = rnd_i64(), c = rnd_i64(), want = 0;
-        if (c == 0) c = -1;
-        if (i % 3 == 0) c = (int64_t)(rnd64() % 7) + 1;
+        if (c == 0)
+            c = -1;
+        if (i % 3 == 0)
+            c = (int64_t)(rnd64() % 7) + 1;
         big m = big_mul(big_u64(mag(a)), big_u64(mag(b)));
         bool wok = ref_round_div(m, mag(c), ((a < 0) != (b < 0)) != (c < 0), &want);
         bool ok = ef_muldiv_i64(a, b, c, &out);
-        CHECK(ok == wok && (!ok || out == want), "muldiv(%lld,%lld,%lld): ok=%d got %lld want %lld",
-              LL(a), LL(b), LL(c), ok, LL(out), LL(want));
+        CHECK(ok == wok && (!ok || out == want), "muldiv(%lld,%lld,%lld): ok=%d got %lld want %lld", LL(a), LL(b),
+              LL(c), ok, LL(out), LL(want));
     }
 }
 
@@ -646,7 +679,7 @@ static void test_isqrt(void **state)
     assert_int_equal(ef_isqrt_u64(3), 1);
     assert_int_equal(ef_isqrt_u64(4), 2);
     assert_int_equal(ef_isqrt_u64(UINT64_MAX), UINT32_MAX);
-    assert_int_equal(ef_isqrt_u64(UINT64_C(0xFFFFFFFE00000001)), UINT32_MAX);       /* (2^32-1)^2 */
+    assert_int_equal(ef_isqrt_u64(UINT64_C(0xFFFFFFFE00000001)), UINT32_MAX); /* (2^32-1)^2 */
     assert_int_equal(ef_isqrt_u64(UINT64_C(0xFFFFFFFE00000000)), UINT32_MAX - 1);
     /* Every k^2 - 1, k^2, k^2 + 1 around small k, at powers of two, and
      * around 2^32 - 1. */
@@ -665,7 +698,8 @@ static void test_isqrt(void **state)
     for (uint64_t k = UINT32_MAX - 70000; k <= UINT32_MAX; k++) {
         uint64_t s = k * k;
         CHECK(ef_isqrt_u64(s) == k && ef_isqrt_u64(s - 1) == k - 1, "k=%llu", ULL(k));
-        if (k < UINT32_MAX) CHECK(ef_isqrt_u64(s + 1) == k, "k=%llu", ULL(k));
+        if (k < UINT32_MAX)
+            CHECK(ef_isqrt_u64(s + 1) == k, "k=%llu", ULL(k));
     }
     for (int i = 0; i < 100000; i++) {
         uint64_t v = rnd_u64();
@@ -677,19 +711,21 @@ static void test_q32_sqrt(void **state)
 {
     (void)state;
     assert_int_equal(ef_q32_sqrt(ef_q32_raw(0)).v, 0);
-    assert_int_equal(ef_q32_sqrt(ef_q32_raw(-5)).v, 0);                 /* outside contract: 0 */
-    assert_int_equal(ef_q32_sqrt(ef_q32_raw(1)).v, 65536);              /* sqrt(2^-32) = 2^-16 */
+    assert_int_equal(ef_q32_sqrt(ef_q32_raw(-5)).v, 0);    /* outside contract: 0 */
+    assert_int_equal(ef_q32_sqrt(ef_q32_raw(1)).v, 65536); /* sqrt(2^-32) = 2^-16 */
     assert_int_equal(ef_q32_sqrt(ef_q32_raw(EF_Q32_ONE)).v, EF_Q32_ONE);
     assert_int_equal(ef_q32_sqrt(ef_q32_raw(4 * EF_Q32_ONE)).v, 2 * EF_Q32_ONE);
     assert_int_equal(ef_q32_sqrt(ef_q32_raw(EF_Q32_ONE / 4)).v, EF_Q32_ONE / 2);
-    assert_int_equal(ef_q32_sqrt(ef_q32_raw(2 * EF_Q32_ONE)).v, INT64_C(6074000999));   /* sqrt 2 * 2^32 = 6074000999.95 */
-    assert_int_equal(ef_q32_sqrt(ef_q32_raw(INT64_MAX)).v, INT64_C(199032864766430));  /* floor(sqrt(2^95 - 2^32)) */
+    assert_int_equal(ef_q32_sqrt(ef_q32_raw(2 * EF_Q32_ONE)).v,
+                     INT64_C(6074000999)); /* sqrt 2 * 2^32 = 6074000999.95 */
+    assert_int_equal(ef_q32_sqrt(ef_q32_raw(INT64_MAX)).v, INT64_C(199032864766430)); /* floor(sqrt(2^95 - 2^32)) */
     for (int i = 0; i < 50000; i++) {
         int64_t a = (int64_t)(rnd_u64() >> 1);
-        if (i % 3 == 0) {           /* a = j^2: a * 2^32 = (j * 2^16)^2, and neighbours */
+        if (i % 3 == 0) { /* a = j^2: a * 2^32 = (j * 2^16)^2, and neighbours */
             uint64_t j = rnd64() >> (33 + rnd64() % 31);
             a = (int64_t)(j * j) + (int64_t)(rnd64() % 3) - 1;
-            if (a < 0) a = 0;
+            if (a < 0)
+                a = 0;
         }
         ef_q32 r = ef_q32_sqrt(ef_q32_raw(a));
         CHECK(r.v >= 0 && is_floor_root(big_shl(big_u64((uint64_t)a), 32), (uint64_t)r.v), "q32_sqrt(%lld)", LL(a));
@@ -699,7 +735,12 @@ static void test_q32_sqrt(void **state)
 /* ------------------------------------------------------------------------
  * Decimal parser and formatter
  * --------------------------------------------------------------------- */
-struct parse_case { const char *s; ef_num_status st; size_t consumed; int64_t v; };
+struct parse_case {
+    const char *s;
+    ef_num_status st;
+    size_t consumed;
+    int64_t v;
+};
 
 /* Expected values computed offline with Python's fractions.Fraction (exact
  * rationals): q = floor(|v| * 2^32 + 1/2), negated for '-', EF_NUM_RANGE when
@@ -717,16 +758,16 @@ static const struct parse_case PARSE_CASES[] = {
     { "5.", EF_NUM_OK, 2, INT64_C(21474836480) },
     { "1", EF_NUM_OK, 1, INT64_C(4294967296) },
     { "-1", EF_NUM_OK, 2, INT64_C(-4294967296) },
-    { "0.1", EF_NUM_OK, 3, INT64_C(429496730) },      /* 429496729.6 */
+    { "0.1", EF_NUM_OK, 3, INT64_C(429496730) }, /* 429496729.6 */
     { "-0.1", EF_NUM_OK, 4, INT64_C(-429496730) },
     { "1e-2", EF_NUM_OK, 4, INT64_C(42949673) },
     { "2.5E+1", EF_NUM_OK, 6, INT64_C(107374182400) },
     { "2.5e+1x", EF_NUM_OK, 6, INT64_C(107374182400) },
-    { "1e", EF_NUM_OK, 1, INT64_C(4294967296) },      /* 'e' without digits: not consumed */
+    { "1e", EF_NUM_OK, 1, INT64_C(4294967296) }, /* 'e' without digits: not consumed */
     { "1e+", EF_NUM_OK, 1, INT64_C(4294967296) },
     { "1e-", EF_NUM_OK, 1, INT64_C(4294967296) },
     { "1E5", EF_NUM_OK, 3, INT64_C(429496729600000) },
-    { "1.e5", EF_NUM_OK, 4, INT64_C(429496729600000) },  /* digits '.' then exponent */
+    { "1.e5", EF_NUM_OK, 4, INT64_C(429496729600000) }, /* digits '.' then exponent */
     { "1.5e", EF_NUM_OK, 3, INT64_C(6442450944) },
     { "1.5e-3;", EF_NUM_OK, 6, INT64_C(6442451) },
     { "e5", EF_NUM_SYNTAX, 0, INT64_C(0) },
@@ -740,7 +781,7 @@ static const struct parse_case PARSE_CASES[] = {
     { "+-1", EF_NUM_SYNTAX, 0, INT64_C(0) },
     { "1..5", EF_NUM_OK, 2, INT64_C(4294967296) },
     { "1.2.3", EF_NUM_OK, 3, INT64_C(5153960755) },
-    { " 1", EF_NUM_SYNTAX, 0, INT64_C(0) },           /* no white space skipping */
+    { " 1", EF_NUM_SYNTAX, 0, INT64_C(0) }, /* no white space skipping */
     { "0x10", EF_NUM_OK, 1, INT64_C(0) },
     { "inf", EF_NUM_SYNTAX, 0, INT64_C(0) },
     { "nan", EF_NUM_SYNTAX, 0, INT64_C(0) },
@@ -852,9 +893,16 @@ static char *repeat(const char *head, char fill, size_t n, const char *tail)
 static void test_parse_long(void **state)
 {
     (void)state;
-    struct { const char *head; char fill; size_t n; const char *tail; ef_num_status st; int64_t v; } T[] = {
-        { "0.1", '0', 1000, "1", EF_NUM_OK, 429496730 },                    /* 0.1 + 10^-1002 */
-        { "", '0', 1000, "1.5", EF_NUM_OK, 6442450944 },                    /* leading zeros */
+    struct {
+        const char *head;
+        char fill;
+        size_t n;
+        const char *tail;
+        ef_num_status st;
+        int64_t v;
+    } T[] = {
+        { "0.1", '0', 1000, "1", EF_NUM_OK, 429496730 }, /* 0.1 + 10^-1002 */
+        { "", '0', 1000, "1.5", EF_NUM_OK, 6442450944 }, /* leading zeros */
         { "1", '0', 1000, "e-1000", EF_NUM_OK, EF_Q32_ONE },
         { "0.", '0', 1000, "1e1001", EF_NUM_OK, EF_Q32_ONE },
         { "0.", '0', 99999, "1e100000", EF_NUM_OK, EF_Q32_ONE },
@@ -887,7 +935,10 @@ static void test_parse_long(void **state)
 static void test_format_table(void **state)
 {
     (void)state;
-    static const struct { int64_t v; const char *s; } T[] = {
+    static const struct {
+        int64_t v;
+        const char *s;
+    } T[] = {
         { 0, "0" },
         { EF_Q32_ONE, "1" },
         { -EF_Q32_ONE, "-1" },
@@ -918,7 +969,8 @@ static void test_format_roundtrip(void **state)
      * (except INT64_MIN = -2^31, which the parser rejects by design). */
     for (int i = 0; i < 200000; i++) {
         int64_t v = i < 1000 ? (int64_t)i - 500 : (i & 1) ? ef_wrap_i64(rnd64()) : rnd_i64();
-        if (v == INT64_MIN) v = INT64_MIN + 1;
+        if (v == INT64_MIN)
+            v = INT64_MIN + 1;
         char buf[48];
         size_t n = ef_q32_format(ef_q32_raw(v), buf);
         CHECK(n < 48 && n == strlen(buf), "format length");
@@ -934,10 +986,11 @@ static void test_format_roundtrip(void **state)
 static void test_parse_random_ties(void **state)
 {
     (void)state;
-    static const char HALF_ULP[] = "000000000116415321826934814453125";   /* 2^-33, 33 digits */
+    static const char HALF_ULP[] = "000000000116415321826934814453125"; /* 2^-33, 33 digits */
     for (int i = 0; i < 20000; i++) {
         int64_t q = (int64_t)(rnd64() >> (1 + rnd64() % 63));
-        if (q == INT64_MAX) q--;
+        if (q == INT64_MAX)
+            q--;
         char buf[48];
         ef_q32_format(ef_q32_raw(q), buf);
         /* split into integer and fraction, pad the fraction to 33 digits */
@@ -948,7 +1001,8 @@ static void test_parse_random_ties(void **state)
         ip[il] = '\0';
         memset(fp, '0', 33);
         fp[33] = '\0';
-        if (dot) memcpy(fp, dot + 1, strlen(dot + 1));
+        if (dot)
+            memcpy(fp, dot + 1, strlen(dot + 1));
         /* fp += HALF_ULP (no carry out: q's fraction < 1 - 2^-32) */
         int carry = 0;
         for (int k = 32; k >= 0; k--) {
@@ -957,7 +1011,7 @@ static void test_parse_random_ties(void **state)
             carry = d / 10;
         }
         assert_int_equal(carry, 0);
-        assert_true(fp[32] == '5');         /* the last digit of 2^-33 */
+        assert_true(fp[32] == '5'); /* the last digit of 2^-33 */
         char s[160];
         /* exact tie (q + 1/2) ulp: away from zero */
         snprintf(s, sizeof s, "%s.%s", ip, fp);
@@ -983,8 +1037,8 @@ static void test_parse_random_ties(void **state)
  * CORDIC
  * --------------------------------------------------------------------- */
 static const long double PI_L = 3.14159265358979323846264338327950288L;
-#define SINCOS_BOUND 1.0L       /* docs/fixed.md: |error| < 1 * 2^-30 (header: <= 4) */
-#define ATAN2_BOUND 1.0L        /* docs/fixed.md: |error| < 1 unit of 2^-32 turn */
+#define SINCOS_BOUND 1.0L /* docs/fixed.md: |error| < 1 * 2^-30 (header: <= 4) */
+#define ATAN2_BOUND 1.0L  /* docs/fixed.md: |error| < 1 unit of 2^-32 turn */
 
 static void check_sincos(ef_angle a)
 {
@@ -1003,10 +1057,15 @@ static void test_sincos(void **state)
     (void)state;
     int32_t s, c;
     /* exact at multiples of a quarter turn */
-    static const struct { ef_angle a; int32_t s, c; } Q[] = {
-        { 0, 0, EF_Q30_ONE }, { 0x40000000u, EF_Q30_ONE, 0 },
-        { 0x80000000u, 0, -EF_Q30_ONE }, { 0xC0000000u, -EF_Q30_ONE, 0 },
-        { 0x20000000u, 759250125, 759250125 },          /* 45 deg: 2^30/sqrt2 = 759250124.994 */
+    static const struct {
+        ef_angle a;
+        int32_t s, c;
+    } Q[] = {
+        { 0, 0, EF_Q30_ONE },
+        { 0x40000000u, EF_Q30_ONE, 0 },
+        { 0x80000000u, 0, -EF_Q30_ONE },
+        { 0xC0000000u, -EF_Q30_ONE, 0 },
+        { 0x20000000u, 759250125, 759250125 }, /* 45 deg: 2^30/sqrt2 = 759250124.994 */
     };
     for (size_t i = 0; i < sizeof Q / sizeof Q[0]; i++) {
         ef_sincos(Q[i].a, &s, &c);
@@ -1014,17 +1073,20 @@ static void test_sincos(void **state)
     }
     /* a sweep with a stride prime to 2^32, both sides of every quadrant and
      * octant boundary, and random angles */
-    for (uint32_t k = 0; k < 300000; k++) check_sincos((ef_angle)(k * 14316557u));
+    for (uint32_t k = 0; k < 300000; k++)
+        check_sincos((ef_angle)(k * 14316557u));
     for (uint32_t q = 0; q < 8; q++)
         for (uint32_t d = 0; d < 2000; d++) {
             check_sincos((ef_angle)(q * 0x20000000u + d));
             check_sincos((ef_angle)(q * 0x20000000u - d));
         }
-    for (int i = 0; i < 200000; i++) check_sincos((ef_angle)rnd64());
+    for (int i = 0; i < 200000; i++)
+        check_sincos((ef_angle)rnd64());
     /* exact symmetries, by construction of the reduction */
     for (int i = 0; i < 100000; i++) {
         ef_angle a = (ef_angle)rnd64();
-        if (i < 64) a = (ef_angle)(i * 0x08000000u);
+        if (i < 64)
+            a = (ef_angle)(i * 0x08000000u);
         int32_t s2, c2;
         ef_sincos(a, &s, &c);
         ef_sincos((ef_angle)(0u - a), &s2, &c2);
@@ -1039,38 +1101,57 @@ static void check_atan2(int64_t y, int64_t x)
     ef_angle a = ef_atan2(y, x);
     long double ref = atan2l((long double)y, (long double)x) * (4294967296.0L / (2.0L * PI_L));
     long double e = (long double)a - ref;
-    while (e > 2147483648.0L) e -= 4294967296.0L;
-    while (e < -2147483648.0L) e += 4294967296.0L;
+    while (e > 2147483648.0L)
+        e -= 4294967296.0L;
+    while (e < -2147483648.0L)
+        e += 4294967296.0L;
     CHECK(fabsl(e) <= ATAN2_BOUND, "atan2(%lld, %lld) = %lu, err %.3Lf", LL(y), LL(x), (unsigned long)a, e);
 }
 
 static void test_atan2(void **state)
 {
     (void)state;
-    static const struct { int64_t y, x; ef_angle a; } T[] = {
-        { 0, 0, 0 },                    { 0, 1, 0 },                    { 0, INT64_MAX, 0 },
-        { 1, 0, 0x40000000u },          { 0, -1, 0x80000000u },         { -1, 0, 0xC0000000u },
-        { 0, INT64_MIN, 0x80000000u },  { INT64_MIN, 0, 0xC0000000u },  { INT64_MAX, 0, 0x40000000u },
-        { 1, 1, 0x20000000u },          { 1, -1, 0x60000000u },         { -1, -1, 0xA0000000u },
-        { -1, 1, 0xE0000000u },         { INT64_MIN, INT64_MIN, 0xA0000000u },
-        { INT64_MAX, INT64_MAX, 0x20000000u }, { 7, 7, 0x20000000u },
+    static const struct {
+        int64_t y, x;
+        ef_angle a;
+    } T[] = {
+        { 0, 0, 0 },
+        { 0, 1, 0 },
+        { 0, INT64_MAX, 0 },
+        { 1, 0, 0x40000000u },
+        { 0, -1, 0x80000000u },
+        { -1, 0, 0xC0000000u },
+        { 0, INT64_MIN, 0x80000000u },
+        { INT64_MIN, 0, 0xC0000000u },
+        { INT64_MAX, 0, 0x40000000u },
+        { 1, 1, 0x20000000u },
+        { 1, -1, 0x60000000u },
+        { -1, -1, 0xA0000000u },
+        { -1, 1, 0xE0000000u },
+        { INT64_MIN, INT64_MIN, 0xA0000000u },
+        { INT64_MAX, INT64_MAX, 0x20000000u },
+        { 7, 7, 0x20000000u },
     };
     for (size_t i = 0; i < sizeof T / sizeof T[0]; i++) {
         ef_angle a = ef_atan2(T[i].y, T[i].x);
         CHECK(a == T[i].a, "atan2(%lld,%lld) = %lu", LL(T[i].y), LL(T[i].x), (unsigned long)a);
     }
     for (int64_t y = -150; y <= 150; y++)
-        for (int64_t x = -150; x <= 150; x++) check_atan2(y, x);
+        for (int64_t x = -150; x <= 150; x++)
+            check_atan2(y, x);
     for (int i = 0; i < 200000; i++) {
         int64_t y = rnd_i64(), x = rnd_i64();
-        if (i % 5 == 0) y = ef_wrap_i64((uint64_t)x + rnd64() % 9 - 4);   /* near the diagonal */
-        if (i % 7 == 0) y = (int64_t)(rnd64() % 5) - 2;         /* near the axis */
+        if (i % 5 == 0)
+            y = ef_wrap_i64((uint64_t)x + rnd64() % 9 - 4); /* near the diagonal */
+        if (i % 7 == 0)
+            y = (int64_t)(rnd64() % 5) - 2; /* near the axis */
         check_atan2(y, x);
         if (y != INT64_MIN && x != INT64_MIN) {
             ef_angle a = ef_atan2(y, x);
             CHECK(ef_atan2(-y, x) == (ef_angle)(0u - a) || (y == 0 && x < 0), "atan2 odd in y");
             CHECK(ef_atan2(y, -x) == (ef_angle)(0x80000000u - a) || x == 0, "atan2 mirror in x");
-            if (x > 0 && y > 0) CHECK(ef_atan2(x, y) == (ef_angle)(0x40000000u - a), "atan2 swap");
+            if (x > 0 && y > 0)
+                CHECK(ef_atan2(x, y) == (ef_angle)(0x40000000u - a), "atan2 swap");
         }
     }
     /* round trip through sincos */
@@ -1087,11 +1168,11 @@ static void test_atan2(void **state)
  * (floor shifts as floor divisions, its own copy of the constants), which
  * must agree with fixed/cordic.c bit for bit. */
 static const int64_t SPEC_ATAN[34] = {
-    35184372088832, 20770547670515, 10974586953444, 5570871696862, 2796246208089, 1399486241028,
-    699913886760, 349978300884, 174991820497, 87496244017, 43748163730, 21874087080,
-    10937044192, 5468522177, 2734261099, 1367130551, 683565276, 341782638,
-    170891319, 85445659, 42722830, 21361415, 10680707, 5340354,
-    2670177, 1335088, 667544, 333772, 166886, 83443, 41722, 20861, 10430, 5215,
+    35184372088832, 20770547670515, 10974586953444, 5570871696862, 2796246208089, 1399486241028, 699913886760,
+    349978300884,   174991820497,   87496244017,    43748163730,   21874087080,   10937044192,   5468522177,
+    2734261099,     1367130551,     683565276,      341782638,     170891319,     85445659,      42722830,
+    21361415,       10680707,       5340354,        2670177,       1335088,       667544,        333772,
+    166886,         83443,          41722,          20861,         10430,         5215,
 };
 #define SPEC_KINV INT64_C(667681663043)
 
@@ -1113,12 +1194,20 @@ static void spec_sincos(uint32_t a, int32_t *sin_out, int32_t *cos_out)
         int64_t x = SPEC_KINV, y = 0, z = (int64_t)t * 65536;
         for (int i = 0; i < 34; i++) {
             int64_t dx = spec_asr(y, i), dy = spec_asr(x, i);
-            if (z >= 0) { x -= dx; y += dy; z -= SPEC_ATAN[i]; }
-            else        { x += dx; y -= dy; z += SPEC_ATAN[i]; }
+            if (z >= 0) {
+                x -= dx;
+                y += dy;
+                z -= SPEC_ATAN[i];
+            } else {
+                x += dx;
+                y -= dy;
+                z += SPEC_ATAN[i];
+            }
         }
         s = spec_clamp(spec_rnd(y, 10), -((int64_t)1 << 30), (int64_t)1 << 30);
         c = spec_clamp(spec_rnd(x, 10), -((int64_t)1 << 30), (int64_t)1 << 30);
-        if (neg) s = -s;
+        if (neg)
+            s = -s;
     }
     int64_t so = q == 0 ? s : q == 1 ? c : q == 2 ? -s : -c;
     int64_t co = q == 0 ? c : q == 1 ? -s : q == 2 ? -c : s;
@@ -1129,7 +1218,8 @@ static void spec_sincos(uint32_t a, int32_t *sin_out, int32_t *cos_out)
 static uint32_t spec_atan2(int64_t y, int64_t x)
 {
     uint64_t ax = mag(x), ay = mag(y);
-    if (ax == 0 && ay == 0) return 0;
+    if (ax == 0 && ay == 0)
+        return 0;
     int swap = ay > ax;
     uint64_t hi = swap ? ay : ax, lo = swap ? ax : ay;
     uint32_t phi;
@@ -1139,19 +1229,34 @@ static uint32_t spec_atan2(int64_t y, int64_t x)
         phi = 0x20000000u;
     } else {
         int lz = 0;
-        while (!((hi << lz) >> 63)) lz++;
-        if (lz > 23) { hi <<= lz - 23; lo <<= lz - 23; }
-        else         { hi >>= 23 - lz; lo >>= 23 - lz; }
+        while (!((hi << lz) >> 63))
+            lz++;
+        if (lz > 23) {
+            hi <<= lz - 23;
+            lo <<= lz - 23;
+        } else {
+            hi >>= 23 - lz;
+            lo >>= 23 - lz;
+        }
         int64_t xx = (int64_t)hi, yy = (int64_t)lo, z = 0;
         for (int i = 0; i < 34; i++) {
             int64_t dx = spec_asr(yy, i), dy = spec_asr(xx, i);
-            if (yy >= 0) { xx += dx; yy -= dy; z += SPEC_ATAN[i]; }
-            else         { xx -= dx; yy += dy; z -= SPEC_ATAN[i]; }
+            if (yy >= 0) {
+                xx += dx;
+                yy -= dy;
+                z += SPEC_ATAN[i];
+            } else {
+                xx -= dx;
+                yy += dy;
+                z -= SPEC_ATAN[i];
+            }
         }
         phi = (uint32_t)spec_clamp(spec_rnd(z, 16), 0, 0x20000000);
     }
-    if (swap) phi = 0x40000000u - phi;
-    if (x >= 0) return y >= 0 ? phi : 0u - phi;
+    if (swap)
+        phi = 0x40000000u - phi;
+    if (x >= 0)
+        return y >= 0 ? phi : 0u - phi;
     return y >= 0 ? 0x80000000u - phi : 0x80000000u + phi;
 }
 
@@ -1167,7 +1272,8 @@ static void test_cordic_spec(void **state)
             CHECK((int64_t)floorl(v + 0.5L) == SPEC_ATAN[i], "ATAN[%d]: %.3Lf", i, v);
         }
         long double k = 1.0L;
-        for (int i = 0; i < 34; i++) k *= sqrtl(1.0L + ldexpl(1.0L, -2 * i));
+        for (int i = 0; i < 34; i++)
+            k *= sqrtl(1.0L + ldexpl(1.0L, -2 * i));
         CHECK((int64_t)floorl(ldexpl(1.0L, 40) / k + 0.5L) == SPEC_KINV, "KINV");
     }
     for (int i = 0; i < 400000; i++) {
@@ -1180,8 +1286,14 @@ static void test_cordic_spec(void **state)
     }
     for (int i = 0; i < 200000; i++) {
         int64_t y = rnd_i64(), x = rnd_i64();
-        if (i < 1024) { y = (i & 31) - 16; x = (i >> 5) - 16; }
-        if (i == 1024) { y = INT64_MIN; x = INT64_MAX; }
+        if (i < 1024) {
+            y = (i & 31) - 16;
+            x = (i >> 5) - 16;
+        }
+        if (i == 1024) {
+            y = INT64_MIN;
+            x = INT64_MAX;
+        }
         CHECK(ef_atan2(y, x) == spec_atan2(y, x), "atan2(%lld, %lld)", LL(y), LL(x));
     }
 }
@@ -1236,7 +1348,7 @@ static void test_wrap_i64(void **state)
     /* clang-format on */
     for (size_t i = 0; i < sizeof us / sizeof us[0]; i++) {
         int64_t v = ef_wrap_i64(us[i]);
-        assert_true((uint64_t)v == us[i]);   /* the conversion back is defined: modulo 2^64 */
+        assert_true((uint64_t)v == us[i]); /* the conversion back is defined: modulo 2^64 */
         assert_true((v < 0) == (us[i] > (uint64_t)INT64_MAX));
     }
     assert_true(ef_abs_u64(INT64_MIN) == (uint64_t)1 << 63);
@@ -1251,8 +1363,15 @@ static void test_wrap_i64(void **state)
  * are supplementary values); and never past n. */
 static size_t utf8_encode(uint32_t cp, unsigned char *o)
 {
-    if (cp < 0x80u) { o[0] = (unsigned char)cp; return 1; }
-    if (cp < 0x800u) { o[0] = (unsigned char)(0xC0u | cp >> 6); o[1] = (unsigned char)(0x80u | (cp & 0x3Fu)); return 2; }
+    if (cp < 0x80u) {
+        o[0] = (unsigned char)cp;
+        return 1;
+    }
+    if (cp < 0x800u) {
+        o[0] = (unsigned char)(0xC0u | cp >> 6);
+        o[1] = (unsigned char)(0x80u | (cp & 0x3Fu));
+        return 2;
+    }
     if (cp < 0x10000u) {
         o[0] = (unsigned char)(0xE0u | cp >> 12);
         o[1] = (unsigned char)(0x80u | (cp >> 6 & 0x3Fu));
@@ -1269,7 +1388,7 @@ static size_t utf8_encode(uint32_t cp, unsigned char *o)
 static void test_utf8_len(void **state)
 {
     (void)state;
-    static unsigned char valid3[1u << 21];   /* bit per 3-byte sequence */
+    static unsigned char valid3[1u << 21]; /* bit per 3-byte sequence */
     static unsigned char valid2[1u << 13];
     memset(valid3, 0, sizeof valid3);
     memset(valid2, 0, sizeof valid2);
@@ -1280,7 +1399,7 @@ static void test_utf8_len(void **state)
             continue;
         size_t len = utf8_encode(cp, e);
         assert_int_equal(ef_utf8_len(e, len), len);
-        assert_int_equal(ef_utf8_len(e, len - 1), 0);   /* one byte short: never read past n */
+        assert_int_equal(ef_utf8_len(e, len - 1), 0); /* one byte short: never read past n */
         if (len == 2) {
             uint32_t k = (uint32_t)e[0] << 8 | e[1];
             valid2[k >> 3] |= (unsigned char)(1u << (k & 7u));
@@ -1296,9 +1415,10 @@ static void test_utf8_len(void **state)
         unsigned char s[3] = { (unsigned char)(k >> 16), (unsigned char)(k >> 8), (unsigned char)k };
         size_t got = ef_utf8_len(s, 3);
         uint32_t k2 = k >> 8;
-        size_t want = s[0] < 0x80u ? 1
+        size_t want = s[0] < 0x80u                          ? 1
                       : (valid2[k2 >> 3] >> (k2 & 7u) & 1u) ? 2
-                      : (valid3[k >> 3] >> (k & 7u) & 1u) ? 3 : 0;
+                      : (valid3[k >> 3] >> (k & 7u) & 1u)   ? 3
+                                                            : 0;
         assert_int_equal(got, want);
     }
     uint64_t acc4 = 0;
@@ -1311,14 +1431,17 @@ static void test_utf8_len(void **state)
             acc4 += got == 4;
         }
     }
-    assert_int_equal(acc4, 0x100000u);   /* with every encoding accepted: exactly those */
+    assert_int_equal(acc4, 0x100000u); /* with every encoding accepted: exactly those */
     assert_int_equal(ef_utf8_len((const unsigned char *)"", 0), 0);
 }
 
 static void test_angle_from_deg(void **state)
 {
     (void)state;
-    static const struct { int64_t deg; ef_angle a; } T[] = {
+    static const struct {
+        int64_t deg;
+        ef_angle a;
+    } T[] = {
         { 0, 0 },
         { 90 * EF_Q32_ONE, 0x40000000u },
         { 45 * EF_Q32_ONE, 0x20000000u },
@@ -1326,25 +1449,27 @@ static void test_angle_from_deg(void **state)
         { 360 * EF_Q32_ONE, 0 },
         { -90 * EF_Q32_ONE, 0xC0000000u },
         { 450 * EF_Q32_ONE, 0x40000000u },
-        { EF_Q32_ONE, 11930465u },          /* 2^32 / 360 = 11930464.71 */
+        { EF_Q32_ONE, 11930465u }, /* 2^32 / 360 = 11930464.71 */
         { -EF_Q32_ONE, 0u - 11930465u },
-        { 180, 1 },                          /* 0.5 unit: tie away from zero */
+        { 180, 1 }, /* 0.5 unit: tie away from zero */
         { -180, 0xFFFFFFFFu },
         { 179, 0 },
         { 181, 1 },
-        { 540, 2 },                          /* 1.5 -> 2 */
+        { 540, 2 }, /* 1.5 -> 2 */
         { -540, 0xFFFFFFFEu },
     };
     for (size_t i = 0; i < sizeof T / sizeof T[0]; i++) {
         ef_angle a = ef_angle_from_deg_q32(ef_q32_raw(T[i].deg));
-        CHECK(a == T[i].a, "angle_from_deg(%lld) = %lu want %lu", LL(T[i].deg), (unsigned long)a, (unsigned long)T[i].a);
+        CHECK(a == T[i].a, "angle_from_deg(%lld) = %lu want %lu", LL(T[i].deg), (unsigned long)a,
+              (unsigned long)T[i].a);
     }
     /* Extremes and random values against long division in the slow model. */
     for (int i = 0; i < 50000; i++) {
         int64_t d = i == 0 ? INT64_MIN : i == 1 ? INT64_MAX : rnd_i64();
         big m = ref_round_half_up(big_u64(mag(d)), big_u64(360));
         uint32_t want = (uint32_t)big_word(m, 0);
-        if (d < 0) want = 0u - want;
+        if (d < 0)
+            want = 0u - want;
         ef_angle a = ef_angle_from_deg_q32(ef_q32_raw(d));
         CHECK(a == want, "angle_from_deg(%lld) = %lu want %lu", LL(d), (unsigned long)a, (unsigned long)want);
         if (d != INT64_MIN)
@@ -1355,32 +1480,19 @@ static void test_angle_from_deg(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_floor_div_mod),
-        cmocka_unit_test(test_ceil_round_div),
-        cmocka_unit_test(test_asr_shl_wrap),
-        cmocka_unit_test(test_round_shr),
-        cmocka_unit_test(test_checked_add),
-        cmocka_unit_test(test_mul_wide),
-        cmocka_unit_test(test_checked_mul),
-        cmocka_unit_test(test_div_u128),
-        cmocka_unit_test(test_q32_mul),
-        cmocka_unit_test(test_q32_div),
-        cmocka_unit_test(test_muldiv),
-        cmocka_unit_test(test_isqrt),
-        cmocka_unit_test(test_q32_sqrt),
-        cmocka_unit_test(test_parse_table),
-        cmocka_unit_test(test_parse_long),
-        cmocka_unit_test(test_format_table),
-        cmocka_unit_test(test_format_roundtrip),
-        cmocka_unit_test(test_parse_random_ties),
-        cmocka_unit_test(test_sincos),
-        cmocka_unit_test(test_atan2),
-        cmocka_unit_test(test_cordic_spec),
-        cmocka_unit_test(test_angle_from_deg),
-        cmocka_unit_test(test_popcount32),
-        cmocka_unit_test(test_divmod_floor_i32),
-        cmocka_unit_test(test_wrap_i64),
-        cmocka_unit_test(test_utf8_len),
+        cmocka_unit_test(test_floor_div_mod),    cmocka_unit_test(test_ceil_round_div),
+        cmocka_unit_test(test_asr_shl_wrap),     cmocka_unit_test(test_round_shr),
+        cmocka_unit_test(test_checked_add),      cmocka_unit_test(test_mul_wide),
+        cmocka_unit_test(test_checked_mul),      cmocka_unit_test(test_div_u128),
+        cmocka_unit_test(test_q32_mul),          cmocka_unit_test(test_q32_div),
+        cmocka_unit_test(test_muldiv),           cmocka_unit_test(test_isqrt),
+        cmocka_unit_test(test_q32_sqrt),         cmocka_unit_test(test_parse_table),
+        cmocka_unit_test(test_parse_long),       cmocka_unit_test(test_format_table),
+        cmocka_unit_test(test_format_roundtrip), cmocka_unit_test(test_parse_random_ties),
+        cmocka_unit_test(test_sincos),           cmocka_unit_test(test_atan2),
+        cmocka_unit_test(test_cordic_spec),      cmocka_unit_test(test_angle_from_deg),
+        cmocka_unit_test(test_popcount32),       cmocka_unit_test(test_divmod_floor_i32),
+        cmocka_unit_test(test_wrap_i64),         cmocka_unit_test(test_utf8_len),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

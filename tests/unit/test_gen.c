@@ -99,9 +99,8 @@ static void check_roundtrip(const ef_gen_case *gc, const ef_gen_text *t)
         assert_memory_equal(s.start, g->start, (g->ncontours + 1) * sizeof *g->start);
     for (uint32_t i = 0; i < g->npoints; i++) {
         if (s.points[i].x != g->points[i].x || s.points[i].y != g->points[i].y)
-            fail_msg("case %u (%s): vertex %u reads back as (%d, %d), written (%d, %d)", (unsigned)gc->number,
-                     gc->name, (unsigned)i, (int)s.points[i].x, (int)s.points[i].y, (int)g->points[i].x,
-                     (int)g->points[i].y);
+            fail_msg("case %u (%s): vertex %u reads back as (%d, %d), written (%d, %d)", (unsigned)gc->number, gc->name,
+                     (unsigned)i, (int)s.points[i].x, (int)s.points[i].y, (int)g->points[i].x, (int)g->points[i].y);
     }
     ef_scene_free(&s);
 }
@@ -198,7 +197,7 @@ static void test_shard_rule(void **state)
     assert_true(ef_gen_in_shard(4, 2, 3));
     assert_true(ef_gen_in_shard(5, 3, 3));
     assert_false(ef_gen_in_shard(5, 1, 3));
-    assert_false(ef_gen_in_shard(0, 0, 3));   /* 1-based */
+    assert_false(ef_gen_in_shard(0, 0, 3)); /* 1-based */
     assert_false(ef_gen_in_shard(0, 4, 3));
     assert_false(ef_gen_in_shard(0, 1, 0));
     /* every case in exactly one shard, for many shard counts */
@@ -392,10 +391,22 @@ static void test_roundtrip_random(void **state)
 
 static void test_q8_decimals(void **state)
 {
-    static const struct { int32_t v; const char *s; } cases[] = {
-        { 0, "0" },           { 1, "0.00390625" },       { -1, "-0.00390625" },       { 128, "0.5" },
-        { -128, "-0.5" },     { 256, "1" },              { -256, "-1" },              { 257, "1.00390625" },
-        { 4194304, "16384" }, { 8388607, "32767.99609375" }, { -8388607, "-32767.99609375" }, { 56, "0.21875" },
+    static const struct {
+        int32_t v;
+        const char *s;
+    } cases[] = {
+        { 0, "0" },
+        { 1, "0.00390625" },
+        { -1, "-0.00390625" },
+        { 128, "0.5" },
+        { -128, "-0.5" },
+        { 256, "1" },
+        { -256, "-1" },
+        { 257, "1.00390625" },
+        { 4194304, "16384" },
+        { 8388607, "32767.99609375" },
+        { -8388607, "-32767.99609375" },
+        { 56, "0.21875" },
     };
     (void)state;
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
@@ -534,18 +545,12 @@ static void test_expectations(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_splitmix64),
-        cmocka_unit_test(test_levels_and_counts),
-        cmocka_unit_test(test_shard_rule),
-        cmocka_unit_test(test_shard_union),
-        cmocka_unit_test(test_determinism),
-        cmocka_unit_test(test_random_depends_on_seed_and_j),
-        cmocka_unit_test(test_q8_decimals),
-        cmocka_unit_test(test_roundtrip_directed),
-        cmocka_unit_test(test_roundtrip_random),
-        cmocka_unit_test(test_categories_present),
-        cmocka_unit_test(test_issue_items),
-        cmocka_unit_test(test_expectations),
+        cmocka_unit_test(test_splitmix64),       cmocka_unit_test(test_levels_and_counts),
+        cmocka_unit_test(test_shard_rule),       cmocka_unit_test(test_shard_union),
+        cmocka_unit_test(test_determinism),      cmocka_unit_test(test_random_depends_on_seed_and_j),
+        cmocka_unit_test(test_q8_decimals),      cmocka_unit_test(test_roundtrip_directed),
+        cmocka_unit_test(test_roundtrip_random), cmocka_unit_test(test_categories_present),
+        cmocka_unit_test(test_issue_items),      cmocka_unit_test(test_expectations),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

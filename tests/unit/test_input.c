@@ -83,7 +83,7 @@ static void expect_error(ef_status st, const ef_error *e, ef_status status, uint
     ef_error_format(e, b, sizeof b);
     if (st != status || e->line != line || e->col != col)
         fail_msg("expected status %d at %u:%u, got %d: %s", status, (unsigned)line, (unsigned)col, st, b);
-    assert_int_equal(s->nshapes, 0);     /* no partial result */
+    assert_int_equal(s->nshapes, 0); /* no partial result */
     assert_int_equal(s->npoints, 0);
     assert_null(s->points);
 }
@@ -101,11 +101,14 @@ static void assert_pt(const ef_scene *s, uint32_t c, uint32_t i, double x, doubl
 
 static bool same_points(const ef_scene *a, const ef_scene *b)
 {
-    if (a->npoints != b->npoints || a->ncontours != b->ncontours) return false;
+    if (a->npoints != b->npoints || a->ncontours != b->ncontours)
+        return false;
     for (uint32_t i = 0; i < a->npoints; i++)
-        if (a->points[i].x != b->points[i].x || a->points[i].y != b->points[i].y) return false;
+        if (a->points[i].x != b->points[i].x || a->points[i].y != b->points[i].y)
+            return false;
     for (uint32_t c = 0; c <= a->ncontours; c++)
-        if (a->start[c] != b->start[c]) return false;
+        if (a->start[c] != b->start[c])
+            return false;
     return true;
 }
 
@@ -115,7 +118,8 @@ static void assert_same_path(const char *d1, const char *d2)
     ef_error e;
     must(path(d1, &a, &e), &e);
     must(path(d2, &b, &e), &e);
-    if (!same_points(&a, &b)) fail_msg("'%s' and '%s' differ (%u vs %u points)", d1, d2, a.npoints, b.npoints);
+    if (!same_points(&a, &b))
+        fail_msg("'%s' and '%s' differ (%u vs %u points)", d1, d2, a.npoints, b.npoints);
     ef_scene_free(&a);
     ef_scene_free(&b);
 }
@@ -163,7 +167,7 @@ static void test_path_number_forms(void **state)
     assert_int_equal(pt(&s, 0, 0).y, 85);
     ef_scene_free(&s);
     must(path("M -0.001953125 -0.0019531 L 5 0 L 0 5", &s, &e), &e);
-    assert_int_equal(pt(&s, 0, 0).x, 0);      /* -0.5 ulp: ties toward +inf */
+    assert_int_equal(pt(&s, 0, 0).x, 0); /* -0.5 ulp: ties toward +inf */
     assert_int_equal(pt(&s, 0, 0).y, 0);
     ef_scene_free(&s);
 }
@@ -221,21 +225,21 @@ static void test_path_grammar_errors(void **state)
     static const struct {
         const char *d;
         ef_status st;
-        uint32_t col;   /* the value starts at column 75 in path()'s template */
+        uint32_t col; /* the value starts at column 75 in path()'s template */
     } cases[] = {
-        { "L 1 2", EF_ERR_SYNTAX, 75 },           /* must begin with a moveto */
-        { "M 1 2 L 3", EF_ERR_SYNTAX, 84 },       /* missing y */
-        { "M,1 2", EF_ERR_SYNTAX, 76 },           /* comma after a command letter */
-        { "M 1 2,,3 4", EF_ERR_SYNTAX, 81 },      /* double comma */
-        { "M 1 2 3 4,", EF_ERR_SYNTAX, 85 },      /* trailing comma */
-        { "M 1 2, L 3 4", EF_ERR_SYNTAX, 82 },    /* comma before a command */
-        { "M 0 0 L 1 0 1 1 Z 5 5", EF_ERR_SYNTAX, 93 },  /* numbers after Z */
-        { "M 0 0 X 1 2", EF_ERR_SYNTAX, 81 },     /* unknown command */
-        { "M 0 0 A 1 1 0 2 0 5 5", EF_ERR_SYNTAX, 89 },  /* arc flag must be 0 or 1 */
-        { "M 0 0 L 3e9 0", EF_ERR_RANGE, 83 },    /* beyond Q31.32 */
-        { "M 0 0 L 1 1 C", EF_ERR_SYNTAX, 87 },   /* command without arguments */
-        { "M 0 0 L 40000 0 0 1", EF_ERR_RANGE, 81 },   /* device coordinate beyond 32768 px: the command */
-        { "M 0 0 L 1 1 2 2 30000 40000", EF_ERR_RANGE, 91 },   /* ... or the repeated group */
+        { "L 1 2", EF_ERR_SYNTAX, 75 },                      /* must begin with a moveto */
+        { "M 1 2 L 3", EF_ERR_SYNTAX, 84 },                  /* missing y */
+        { "M,1 2", EF_ERR_SYNTAX, 76 },                      /* comma after a command letter */
+        { "M 1 2,,3 4", EF_ERR_SYNTAX, 81 },                 /* double comma */
+        { "M 1 2 3 4,", EF_ERR_SYNTAX, 85 },                 /* trailing comma */
+        { "M 1 2, L 3 4", EF_ERR_SYNTAX, 82 },               /* comma before a command */
+        { "M 0 0 L 1 0 1 1 Z 5 5", EF_ERR_SYNTAX, 93 },      /* numbers after Z */
+        { "M 0 0 X 1 2", EF_ERR_SYNTAX, 81 },                /* unknown command */
+        { "M 0 0 A 1 1 0 2 0 5 5", EF_ERR_SYNTAX, 89 },      /* arc flag must be 0 or 1 */
+        { "M 0 0 L 3e9 0", EF_ERR_RANGE, 83 },               /* beyond Q31.32 */
+        { "M 0 0 L 1 1 C", EF_ERR_SYNTAX, 87 },              /* command without arguments */
+        { "M 0 0 L 40000 0 0 1", EF_ERR_RANGE, 81 },         /* device coordinate beyond 32768 px: the command */
+        { "M 0 0 L 1 1 2 2 30000 40000", EF_ERR_RANGE, 91 }, /* ... or the repeated group */
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         ef_scene s;
@@ -252,7 +256,8 @@ static void test_path_grammar_errors(void **state)
     ef_error e;
     /* A relative coordinate whose sum leaves Q31.32: the repeated group's first number. */
     ef_status st = svg("<svg width='10' height='10'><path transform='scale(0.00001)' "
-                       "d='M 0 0 l 2000000000 0 2000000000 0'/></svg>", &s, &e);
+                       "d='M 0 0 l 2000000000 0 2000000000 0'/></svg>",
+                       &s, &e);
     expect_error(st, &e, EF_ERR_RANGE, 1, 86, &s);
     /* Empty path data draws nothing and is no error. */
     must(path("  ", &s, &e), &e);
@@ -293,10 +298,13 @@ static double dist_to_contour(const ef_scene *s, uint32_t c, double x, double y)
         double ax = px(a.x), ay = px(a.y), bx = px(b.x), by = px(b.y);
         double dx = bx - ax, dy = by - ay, l2 = dx * dx + dy * dy;
         double t = l2 > 0 ? ((x - ax) * dx + (y - ay) * dy) / l2 : 0;
-        if (t < 0) t = 0;
-        if (t > 1) t = 1;
+        if (t < 0)
+            t = 0;
+        if (t > 1)
+            t = 1;
         double d = hypot(ax + t * dx - x, ay + t * dy - y);
-        if (d < best) best = d;
+        if (d < best)
+            best = d;
     }
     return best;
 }
@@ -358,10 +366,14 @@ static void bbox(const ef_scene *s, double b[4])
     b[2] = b[3] = -1e300;
     for (uint32_t i = 0; i < s->npoints; i++) {
         double x = px(s->points[i].x), y = px(s->points[i].y);
-        if (x < b[0]) b[0] = x;
-        if (y < b[1]) b[1] = y;
-        if (x > b[2]) b[2] = x;
-        if (y > b[3]) b[3] = y;
+        if (x < b[0])
+            b[0] = x;
+        if (y < b[1])
+            b[1] = y;
+        if (x > b[2])
+            b[2] = x;
+        if (y > b[3])
+            b[3] = y;
     }
 }
 
@@ -369,7 +381,8 @@ static void assert_on_circle(const ef_scene *s, double cx, double cy, double r, 
 {
     for (uint32_t i = from; i < to; i++) {
         double d = hypot(px(s->points[i].x) - cx, px(s->points[i].y) - cy);
-        if (fabs(d - r) > 0.005) fail_msg("point %u at distance %g from (%g, %g), expected %g", (unsigned)i, d, cx, cy, r);
+        if (fabs(d - r) > 0.005)
+            fail_msg("point %u at distance %g from (%g, %g), expected %g", (unsigned)i, d, cx, cy, r);
     }
 }
 
@@ -382,7 +395,7 @@ static void test_arc_quarter(void **state)
     must(path("M 0 10 A 10 10 0 0 1 10 0 L 10 10", &s, &e), &e);
     uint32_t n = contour_len(&s, 0);
     assert_pt(&s, 0, 0, 0, 10);
-    assert_pt(&s, 0, n - 2, 10, 0);   /* end point exact */
+    assert_pt(&s, 0, n - 2, 10, 0); /* end point exact */
     assert_pt(&s, 0, n - 1, 10, 10);
     assert_on_circle(&s, 10, 10, 10, 0, n - 1);
     /* sqrt(2 * 10) * pi / 2 = 7.02 -> 8 segments (the radius bound is sqrt 2 r here: 9). */
@@ -400,7 +413,7 @@ static void test_arc_flags(void **state)
     (void)state;
     static const struct {
         const char *d;
-        double box[4];   /* expected bounding box (vertices: within the 1/16 px tolerance) */
+        double box[4]; /* expected bounding box (vertices: within the 1/16 px tolerance) */
     } cases[] = {
         /* small arc, positive sweep: centre (10, 10), bulges toward the origin */
         { "M 0 10 A 10 10 0 0 1 10 0", { 0, 0, 10, 10 } },
@@ -419,7 +432,8 @@ static void test_arc_flags(void **state)
         double b[4];
         bbox(&s, b);
         for (int k = 0; k < 4; k++)
-            if (fabs(b[k] - cases[i].box[k]) > 1.0 / 16 + 0.005) fail_msg("%s: bbox[%d] = %g, expected %g", cases[i].d, k, b[k], cases[i].box[k]);
+            if (fabs(b[k] - cases[i].box[k]) > 1.0 / 16 + 0.005)
+                fail_msg("%s: bbox[%d] = %g, expected %g", cases[i].d, k, b[k], cases[i].box[k]);
         assert_on_circle(&s, centres[i][0], centres[i][1], 10, 0, s.npoints);
         ef_scene_free(&s);
     }
@@ -435,7 +449,7 @@ static void test_arc_special_cases(void **state)
     must(path("M 0 0 A 1 1 0 0 1 10 0 Z", &s, &e), &e);
     assert_on_circle(&s, 5, 0, 5, 0, s.npoints);
     bbox(&s, b);
-    assert_true(fabs(b[1] + 5) < 0.01 && fabs(b[3]) < 1e-9);   /* positive sweep from 180 deg: above */
+    assert_true(fabs(b[1] + 5) < 0.01 && fabs(b[3]) < 1e-9); /* positive sweep from 180 deg: above */
     ef_scene_free(&s);
     /* Negative radii lose their sign. */
     assert_same_path("M 0 10 A -10 -10 0 0 1 10 0", "M 0 10 A 10 10 0 0 1 10 0");
@@ -471,7 +485,7 @@ static void test_shapes(void **state)
              "</svg>",
              &s, &e),
          &e);
-    assert_int_equal(s.nshapes, 6);   /* line and empty shapes draw nothing */
+    assert_int_equal(s.nshapes, 6); /* line and empty shapes draw nothing */
     assert_int_equal(s.shapes[0].ncontours, 1);
     assert_int_equal(contour_len(&s, 0), 4);
     assert_pt(&s, 0, 0, 10, 20);
@@ -485,9 +499,10 @@ static void test_shapes(void **state)
     for (uint32_t i = s.start[2]; i < s.start[3]; i++)
         assert_true(fabs(hypot(px(s.points[i].x) - 50, px(s.points[i].y) - 50) - 20) < 0.005);
     ef_scene_free(&s);
-    must(svg("<svg width='100' height='100'><rect x='10' y='10' width='20' height='10' rx='50' ry='50'/></svg>", &s, &e),
-         &e);
-    bbox(&s, b);    /* rx, ry clamped to half the size: an ellipse filling the box */
+    must(
+        svg("<svg width='100' height='100'><rect x='10' y='10' width='20' height='10' rx='50' ry='50'/></svg>", &s, &e),
+        &e);
+    bbox(&s, b); /* rx, ry clamped to half the size: an ellipse filling the box */
     assert_true(fabs(b[0] - 10) < 1e-9 && fabs(b[1] - 10) < 1e-9 && fabs(b[2] - 30) < 1e-9 && fabs(b[3] - 20) < 1e-9);
     ef_scene_free(&s);
     ef_status st = svg("<svg width='100' height='100'><rect width='-1' height='10'/></svg>", &s, &e);
@@ -516,22 +531,23 @@ static void test_transforms(void **state)
     assert_pt(&s, 0, 0, 12, 22);
     assert_pt(&s, 0, 1, 14, 22);
     assert_pt(&s, 0, 2, 14, 24);
-    assert_pt(&s, 1, 0, 0, 1);       /* (x, y) -> (-y, x): sin/cos exact at 90 degrees */
+    assert_pt(&s, 1, 0, 0, 1); /* (x, y) -> (-y, x): sin/cos exact at 90 degrees */
     assert_pt(&s, 1, 1, 0, 2);
     assert_pt(&s, 1, 2, -1, 2);
-    assert_pt(&s, 2, 0, 10, 5);      /* about (5, 5): (5, 0) -> (10, 5) */
-    ef_point p = pt(&s, 3, 0);       /* skewX(45): x + y tan 45, within rounding of tan */
+    assert_pt(&s, 2, 0, 10, 5); /* about (5, 5): (5, 0) -> (10, 5) */
+    ef_point p = pt(&s, 3, 0);  /* skewX(45): x + y tan 45, within rounding of tan */
     assert_true(fabs(px(p.x) - 2) <= 1.0 / 256 && px(p.y) == 2);
     assert_pt(&s, 4, 0, 4, 6);
     assert_pt(&s, 4, 2, 5, 8);
-    assert_pt(&s, 5, 0, 51, 52);     /* use: outer transform, then x/y */
+    assert_pt(&s, 5, 0, 51, 52); /* use: outer transform, then x/y */
     assert_pt(&s, 5, 1, 52, 52);
     ef_scene_free(&s);
 
     static const char *bad[] = { "scale(1,2,3)", "foo(1)", "translate(1", "rotate(1 2)", "skewX(90)", "translate(1,)" };
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         char buf[256];
-        snprintf(buf, sizeof buf, "<svg width='10' height='10'><path transform='%s' d='M0 0 L 1 0 L 1 1'/></svg>", bad[i]);
+        snprintf(buf, sizeof buf, "<svg width='10' height='10'><path transform='%s' d='M0 0 L 1 0 L 1 1'/></svg>",
+                 bad[i]);
         ef_status st = svg(buf, &s, &e);
         assert_true(st == EF_ERR_SYNTAX || st == EF_ERR_RANGE);
         assert_int_equal(e.line, 1);
@@ -559,22 +575,29 @@ static void test_viewbox_and_fit(void **state)
     assert_pt(&s, 0, 2, 200, 150);
     ef_scene_free(&s);
     /* width/height with a viewBox: default xMidYMid meet. */
-    must(svg("<svg width='300' height='100' viewBox='0 0 100 100'><path d='M0 0 L 100 0 L 100 100'/></svg>", &s, &e), &e);
+    must(svg("<svg width='300' height='100' viewBox='0 0 100 100'><path d='M0 0 L 100 0 L 100 100'/></svg>", &s, &e),
+         &e);
     assert_int_equal(s.width, 300);
     assert_pt(&s, 0, 0, 100, 0);
     assert_pt(&s, 0, 2, 200, 100);
     ef_scene_free(&s);
     must(svg("<svg width='300' height='100' viewBox='0 0 100 100' preserveAspectRatio='xMaxYMin'>"
-             "<path d='M0 0 L 100 0 L 100 100'/></svg>", &s, &e), &e);
+             "<path d='M0 0 L 100 0 L 100 100'/></svg>",
+             &s, &e),
+         &e);
     assert_pt(&s, 0, 0, 200, 0);
     ef_scene_free(&s);
     must(svg("<svg width='300' height='100' viewBox='0 0 100 100' preserveAspectRatio='none'>"
-             "<path d='M0 0 L 100 0 L 100 100'/></svg>", &s, &e), &e);
+             "<path d='M0 0 L 100 0 L 100 100'/></svg>",
+             &s, &e),
+         &e);
     assert_pt(&s, 0, 1, 300, 0);
     assert_pt(&s, 0, 2, 300, 100);
     ef_scene_free(&s);
     must(svg("<svg width='300' height='100' viewBox='0 0 100 100' preserveAspectRatio='xMinYMid slice'>"
-             "<path d='M0 0 L 100 0 L 100 100'/></svg>", &s, &e), &e);
+             "<path d='M0 0 L 100 0 L 100 100'/></svg>",
+             &s, &e),
+         &e);
     assert_pt(&s, 0, 0, 0, -100);
     assert_pt(&s, 0, 2, 300, 200);
     ef_scene_free(&s);
@@ -610,8 +633,10 @@ static ef_rgba8 color_of(const char *attrs)
     snprintf(buf, sizeof buf, "<svg width='10' height='10'><path %s d='M0 0 L 1 0 L 1 1'/></svg>", attrs);
     must(svg(buf, &s, &e), &e);
     ef_rgba8 c = { 0, 0, 0, 0 };
-    if (s.nshapes == 1) c = s.shapes[0].color;
-    else assert_int_equal(s.nshapes, 0);
+    if (s.nshapes == 1)
+        c = s.shapes[0].color;
+    else
+        assert_int_equal(s.nshapes, 0);
     ef_scene_free(&s);
     return c;
 }
@@ -636,16 +661,16 @@ static void test_colors(void **state)
     assert_color("fill='Red'", 255, 0, 0, 255);
     assert_color("fill='lightgoldenrodyellow'", 250, 250, 210, 255);
     assert_color("fill='currentColor' color='#010203'", 1, 2, 3, 255);
-    assert_color("fill='transparent'", 0, 0, 0, 0);      /* not drawn */
+    assert_color("fill='transparent'", 0, 0, 0, 0); /* not drawn */
     assert_color("fill='none'", 0, 0, 0, 0);
     assert_color("fill='red' fill-opacity='0.5'", 255, 0, 0, 128);
     assert_color("fill='red' fill-opacity='25%'", 255, 0, 0, 64);
     assert_color("fill='red' opacity='0.5' fill-opacity='0.5'", 255, 0, 0, 64);
-    assert_color("fill='red' fill-opacity='7'", 255, 0, 0, 255);   /* clamped */
+    assert_color("fill='red' fill-opacity='7'", 255, 0, 0, 255); /* clamped */
     assert_color("style='fill: blue ; fill-opacity:.2'", 0, 0, 255, 51);
-    assert_color("fill='red' style='fill:lime'", 0, 255, 0, 255);  /* style wins */
-    assert_color("fill='url(#nothing) #00f'", 0, 0, 255, 255);     /* fallback */
-    assert_color("fill='url(#nothing)'", 0, 0, 0, 0);              /* no fallback: not drawn */
+    assert_color("fill='red' style='fill:lime'", 0, 255, 0, 255); /* style wins */
+    assert_color("fill='url(#nothing) #00f'", 0, 0, 255, 255);    /* fallback */
+    assert_color("fill='url(#nothing)'", 0, 0, 0, 0);             /* no fallback: not drawn */
 
     ef_scene s;
     ef_error e;
@@ -664,18 +689,18 @@ static void test_inheritance(void **state)
     must(svg_opts("<svg width='10' height='10'>"
                   "<style>.c { fill: #00ff00 } path.d { fill-rule: evenodd } #e { fill: #0000ff }</style>"
                   "<g fill-rule='evenodd' fill='red' opacity='0.5'>"
-                  "  <path d='M0 0 L 1 0 L 1 1'/>"                         /* 0: evenodd red, alpha .5 */
-                  "  <path fill-rule='nonzero' d='M0 0 L 1 0 L 1 1'/>"     /* 1: nonzero */
+                  "  <path d='M0 0 L 1 0 L 1 1'/>"                     /* 0: evenodd red, alpha .5 */
+                  "  <path fill-rule='nonzero' d='M0 0 L 1 0 L 1 1'/>" /* 1: nonzero */
                   "  <g fill-rule='nonzero'><path fill-rule='inherit' d='M0 0 L 1 0 L 1 1'/></g>" /* 2: nonzero */
-                  "  <g opacity='0.5'><path class='c' d='M0 0 L 1 0 L 1 1'/></g>"  /* 3: green, .25 */
-                  "  <path fill='none' stroke='black' d='M0 0 L 1 0 L 1 1'/>"     /* skipped */
-                  "  <path class='d' fill-rule='nonzero' d='M0 0 L 1 0 L 1 1'/>"  /* 4: css over attribute */
-                  "  <path id='e' class='c' d='M0 0 L 1 0 L 1 1'/>"               /* 5: id beats class */
+                  "  <g opacity='0.5'><path class='c' d='M0 0 L 1 0 L 1 1'/></g>"                 /* 3: green, .25 */
+                  "  <path fill='none' stroke='black' d='M0 0 L 1 0 L 1 1'/>"                     /* skipped */
+                  "  <path class='d' fill-rule='nonzero' d='M0 0 L 1 0 L 1 1'/>" /* 4: css over attribute */
+                  "  <path id='e' class='c' d='M0 0 L 1 0 L 1 1'/>"              /* 5: id beats class */
                   "  <path visibility='hidden' d='M0 0 L 1 0 L 1 1'/>"
                   "  <path display='none' d='M0 0 L 1 0 L 1 1'/>"
-                  "  <path stroke='blue' d='M0 0 L 1 0 L 1 1'/>"                  /* 6 */
+                  "  <path stroke='blue' d='M0 0 L 1 0 L 1 1'/>" /* 6 */
                   "</g>"
-                  "<g visibility='hidden'><path visibility='visible' d='M0 0 L 1 0 L 1 1'/></g>"  /* 7 */
+                  "<g visibility='hidden'><path visibility='visible' d='M0 0 L 1 0 L 1 1'/></g>" /* 7 */
                   "<g display='none'><path d='M0 0 L 1 0 L 1 1'/></g>"
                   "</svg>",
                   0, 0, &nt, &s, &e),
@@ -705,22 +730,24 @@ static void test_gradient_and_notes(void **state)
     ef_scene s;
     ef_error e;
     notes nt = { 0, "" };
-    must(svg_opts("<svg xmlns='http://www.w3.org/2000/svg' xmlns:xlink='http://www.w3.org/1999/xlink' width='10' height='10'>"
-                  "<defs><linearGradient id='g'><stop offset='0' stop-color='#000'/>"
-                  "<stop offset='1' style='stop-color:#fff;stop-opacity:0.5'/></linearGradient>"
-                  "<radialGradient id='h' xlink:href='#g'/></defs>"
-                  "<path fill='url(#g)' d='M0 0 L 1 0 L 1 1'/>"
-                  "<path fill='url(#h)' d='M0 0 L 1 0 L 1 1'/>"
-                  "<text>hi</text><image/><clipPath/><path clip-path='url(#x)' d='M0 0 L 1 0 L 1 1'/>"
-                  "</svg>",
-                  0, 0, &nt, &s, &e),
-         &e);
+    must(
+        svg_opts(
+            "<svg xmlns='http://www.w3.org/2000/svg' xmlns:xlink='http://www.w3.org/1999/xlink' width='10' height='10'>"
+            "<defs><linearGradient id='g'><stop offset='0' stop-color='#000'/>"
+            "<stop offset='1' style='stop-color:#fff;stop-opacity:0.5'/></linearGradient>"
+            "<radialGradient id='h' xlink:href='#g'/></defs>"
+            "<path fill='url(#g)' d='M0 0 L 1 0 L 1 1'/>"
+            "<path fill='url(#h)' d='M0 0 L 1 0 L 1 1'/>"
+            "<text>hi</text><image/><clipPath/><path clip-path='url(#x)' d='M0 0 L 1 0 L 1 1'/>"
+            "</svg>",
+            0, 0, &nt, &s, &e),
+        &e);
     assert_int_equal(s.nshapes, 3);
     /* (0 + 255) / 2 rounded; opacity (1 + 0.5) / 2 = 0.75 -> 191. */
     assert_int_equal(s.shapes[0].color.r, 128);
     assert_int_equal(s.shapes[0].color.a, 191);
-    assert_int_equal(s.shapes[1].color.r, 128);   /* stops through href */
-    assert_int_equal(nt.count, 4);                /* gradient, text, image, clip */
+    assert_int_equal(s.shapes[1].color.r, 128); /* stops through href */
+    assert_int_equal(nt.count, 4);              /* gradient, text, image, clip */
     ef_scene_free(&s);
 }
 
@@ -733,7 +760,8 @@ static void test_error_positions(void **state)
     ef_error e;
     char b[600];
     /* Path data on a later line: line and column inside the attribute. */
-    ef_status st = svg("<svg width='10' height='10'>\n  <path fill='red'\n     d='M 1 1\n        L 2 x'/>\n</svg>", &s, &e);
+    ef_status st =
+        svg("<svg width='10' height='10'>\n  <path fill='red'\n     d='M 1 1\n        L 2 x'/>\n</svg>", &s, &e);
     expect_error(st, &e, EF_ERR_SYNTAX, 4, 13, &s);
     ef_error_format(&e, b, sizeof b);
     assert_non_null(strstr(b, "t.svg:4:13: "));
@@ -741,10 +769,11 @@ static void test_error_positions(void **state)
     st = svg("<svg width='10' height='10'>\n<path d='M0 0'>\n</svg>", &s, &e);
     expect_error(st, &e, EF_ERR_SYNTAX, 3, 3, &s);
     st = svg("<svg width='10' height='10'><path d='M0 0 L 1 0'/>\xff</svg>", &s, &e);
-    assert_int_equal(st, EF_ERR_SYNTAX);          /* bad UTF-8 */
+    assert_int_equal(st, EF_ERR_SYNTAX); /* bad UTF-8 */
     assert_int_equal(e.line, 1);
     /* Out-of-range device coordinates: the element. */
-    st = svg("<svg width='10' height='10'>\n<g transform='scale(1000)'><rect width='100' height='1'/></g></svg>", &s, &e);
+    st = svg("<svg width='10' height='10'>\n<g transform='scale(1000)'><rect width='100' height='1'/></g></svg>", &s,
+             &e);
     expect_error(st, &e, EF_ERR_RANGE, 2, 28, &s);
     st = svg("<html/>", &s, &e);
     expect_error(st, &e, EF_ERR_SYNTAX, 1, 1, &s);
@@ -761,9 +790,10 @@ static void test_hostile(void **state)
     ef_scene s;
     ef_error e;
     /* Billion laughs: rejected at the first entity declaration. */
-    const char *laughs = "<?xml version='1.0'?>\n<!DOCTYPE svg [\n <!ENTITY a 'aaaaaaaaaa'>\n"
-                         " <!ENTITY b '&a;&a;&a;&a;&a;&a;&a;&a;&a;&a;'>\n <!ENTITY c '&b;&b;&b;&b;&b;&b;&b;&b;&b;&b;'>\n"
-                         " <!ENTITY d '&c;&c;&c;&c;&c;&c;&c;&c;&c;&c;'>\n]>\n<svg width='10' height='10'><desc>&d;</desc></svg>";
+    const char *laughs =
+        "<?xml version='1.0'?>\n<!DOCTYPE svg [\n <!ENTITY a 'aaaaaaaaaa'>\n"
+        " <!ENTITY b '&a;&a;&a;&a;&a;&a;&a;&a;&a;&a;'>\n <!ENTITY c '&b;&b;&b;&b;&b;&b;&b;&b;&b;&b;'>\n"
+        " <!ENTITY d '&c;&c;&c;&c;&c;&c;&c;&c;&c;&c;'>\n]>\n<svg width='10' height='10'><desc>&d;</desc></svg>";
     ef_status st = svg(laughs, &s, &e);
     assert_int_equal(st, EF_ERR_UNSUPPORTED);
     assert_int_equal(e.line, 3);
@@ -774,8 +804,9 @@ static void test_hostile(void **state)
     st = svg("<!DOCTYPE svg [<!ENTITY % p 'x'> %p;]><svg/>", &s, &e);
     assert_int_not_equal(st, EF_OK);
     /* Undefined entity behind an external DTD. */
-    st = svg("<!DOCTYPE svg PUBLIC '-//W3C//DTD SVG 1.0//EN' 'http://x/svg10.dtd'><svg width='1' height='1'>&nbsp;</svg>",
-             &s, &e);
+    st = svg(
+        "<!DOCTYPE svg PUBLIC '-//W3C//DTD SVG 1.0//EN' 'http://x/svg10.dtd'><svg width='1' height='1'>&nbsp;</svg>",
+        &s, &e);
     assert_int_equal(st, EF_ERR_SYNTAX);
     /* A plain DOCTYPE and a BOM are fine. */
     must(svg("\xef\xbb\xbf<?xml version='1.0' encoding='utf-8'?>\n<!DOCTYPE svg PUBLIC '-//W3C//DTD SVG 1.0//EN' "
@@ -787,8 +818,10 @@ static void test_hostile(void **state)
     char *deep = malloc(300 * 7 + 64);
     assert_non_null(deep);
     strcpy(deep, "<svg>");
-    for (int i = 0; i < 300; i++) strcat(deep, "<g>");
-    for (int i = 0; i < 300; i++) strcat(deep, "</g>");
+    for (int i = 0; i < 300; i++)
+        strcat(deep, "<g>");
+    for (int i = 0; i < 300; i++)
+        strcat(deep, "</g>");
     strcat(deep, "</svg>");
     st = svg(deep, &s, &e);
     assert_int_equal(st, EF_ERR_LIMIT);
@@ -861,15 +894,15 @@ static void test_scene_tokens(void **state)
     /* Comments anywhere, blank lines, tabs, CRLF, every number form of SPEC.md. */
     must(txt("\n  # comment\nscene\t10.2 7 # size\r\n\n\tshape  nonzero 1 2 3 4#c\n"
              "contour 12.375 -3 .5 1e-2 2.5E+1 0 +1 5.\n"
-             "shape evenodd 0 0 0 0\n",     /* a shape with no contour */
+             "shape evenodd 0 0 0 0\n", /* a shape with no contour */
              &s, &e),
          &e);
-    assert_int_equal(s.width, 11);   /* rounded up */
+    assert_int_equal(s.width, 11); /* rounded up */
     assert_int_equal(s.height, 7);
     assert_int_equal(s.nshapes, 2);
     assert_int_equal(s.shapes[1].ncontours, 0);
     assert_pt(&s, 0, 0, 12.375, -3);
-    assert_pt(&s, 0, 1, 0.5, 0.01171875);   /* 0.01 rounds to 3/256 */
+    assert_pt(&s, 0, 1, 0.5, 0.01171875); /* 0.01 rounds to 3/256 */
     assert_pt(&s, 0, 2, 25, 0);
     assert_pt(&s, 0, 3, 1, 5);
     ef_scene_free(&s);
@@ -883,24 +916,24 @@ static void test_scene_errors(void **state)
         ef_status st;
         uint32_t line, col;
     } cases[] = {
-        { "", EF_ERR_SYNTAX, 1, 1 },                                                /* no scene */
+        { "", EF_ERR_SYNTAX, 1, 1 }, /* no scene */
         { "# only a comment\n", EF_ERR_SYNTAX, 1, 1 },
-        { "shape nonzero 1 2 3 4\n", EF_ERR_SYNTAX, 1, 1 },                         /* scene first */
-        { "scene 10 10\nscene 10 10\n", EF_ERR_SYNTAX, 2, 1 },                      /* once */
+        { "shape nonzero 1 2 3 4\n", EF_ERR_SYNTAX, 1, 1 },    /* scene first */
+        { "scene 10 10\nscene 10 10\n", EF_ERR_SYNTAX, 2, 1 }, /* once */
         { "scene 10\n", EF_ERR_SYNTAX, 1, 9 },
         { "scene 10 10 10\n", EF_ERR_SYNTAX, 1, 13 },
-        { "scene 0 10\n", EF_ERR_RANGE, 1, 7 },                                     /* positive */
+        { "scene 0 10\n", EF_ERR_RANGE, 1, 7 }, /* positive */
         { "scene -1 10\n", EF_ERR_RANGE, 1, 7 },
         { "scene 20000 10\n", EF_ERR_LIMIT, 1, 1 },
-        { "scene 10 10\ncontour 0 0 1 0 1 1\n", EF_ERR_SYNTAX, 2, 1 },              /* contour before shape */
+        { "scene 10 10\ncontour 0 0 1 0 1 1\n", EF_ERR_SYNTAX, 2, 1 }, /* contour before shape */
         { "scene 10 10\nshape winding 1 2 3 4\n", EF_ERR_SYNTAX, 2, 7 },
-        { "scene 10 10\nshape EvenOdd 1 2 3 4\n", EF_ERR_SYNTAX, 2, 7 },            /* case-sensitive */
+        { "scene 10 10\nshape EvenOdd 1 2 3 4\n", EF_ERR_SYNTAX, 2, 7 }, /* case-sensitive */
         { "scene 10 10\nshape nonzero 1 2 3\n", EF_ERR_SYNTAX, 2, 20 },
         { "scene 10 10\nshape nonzero 1 2 3 256\n", EF_ERR_SYNTAX, 2, 21 },
         { "scene 10 10\nshape nonzero 1 2 3 -1\n", EF_ERR_SYNTAX, 2, 21 },
         { "scene 10 10\nshape nonzero 1 2 3 4.0\n", EF_ERR_SYNTAX, 2, 21 },
         { "scene 10 10\nshape nonzero 1 2 3 4 5\n", EF_ERR_SYNTAX, 2, 23 },
-        { "scene 10 10\nshape nonzero 1 2 3 4\ncontour 0 0 1 1\n", EF_ERR_SYNTAX, 3, 1 },  /* >= 3 points */
+        { "scene 10 10\nshape nonzero 1 2 3 4\ncontour 0 0 1 1\n", EF_ERR_SYNTAX, 3, 1 }, /* >= 3 points */
         { "scene 10 10\nshape nonzero 1 2 3 4\ncontour 0 0 1 1 2\n", EF_ERR_SYNTAX, 3, 18 },
         { "scene 10 10\nshape nonzero 1 2 3 4\ncontour 0 0 1 1 2 inf\n", EF_ERR_SYNTAX, 3, 19 },
         { "scene 10 10\nshape nonzero 1 2 3 4\ncontour 0 0 1 1 2 nan\n", EF_ERR_SYNTAX, 3, 19 },
@@ -909,7 +942,7 @@ static void test_scene_errors(void **state)
         { "scene 10 10\nshape nonzero 1 2 3 4\ncontour 0 0 1 1 2 6e\n", EF_ERR_SYNTAX, 3, 19 },
         { "scene 10 10\nshape nonzero 1 2 3 4\ncontour 0 0 1 1 2 40000\n", EF_ERR_RANGE, 3, 19 },
         { "scene 10 10\nshape nonzero 1 2 3 4\ncontour 0 0 1 1 2 3e9\n", EF_ERR_RANGE, 3, 19 },
-        { "scene 10 10\nShape nonzero 1 2 3 4\n", EF_ERR_SYNTAX, 2, 1 },            /* unknown directive */
+        { "scene 10 10\nShape nonzero 1 2 3 4\n", EF_ERR_SYNTAX, 2, 1 }, /* unknown directive */
         { "scene 10 10\nshape nonzero 1 2 3 4\ncontour 0 0 1 0 1 1\vx\n", EF_ERR_SYNTAX, 3, 19 },
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
@@ -957,14 +990,14 @@ static void test_scene_builder(void **state)
     ef_scene s;
     ef_scene_init(&s, 8, 4);
     ef_point pts[3] = { { 0, 0 }, { 256, 0 }, { 256, 256 } };
-    assert_int_equal(ef_scene_add_contour(&s, pts, 3), EF_ERR_ARG);      /* no shape yet */
+    assert_int_equal(ef_scene_add_contour(&s, pts, 3), EF_ERR_ARG); /* no shape yet */
     ef_rgba8 c = { 1, 2, 3, 4 };
     assert_int_equal(ef_scene_begin_shape(&s, EF_RULE_EVENODD, c), EF_OK);
     ef_polygon p = ef_scene_polygon(&s, 0);
     assert_int_equal(p.ncontours, 0);
     assert_non_null(p.start);
     assert_int_equal(ef_scene_add_contour(&s, pts, 3), EF_OK);
-    assert_int_equal(ef_scene_add_contour(&s, pts, 2), EF_OK);          /* allowed, draws nothing */
+    assert_int_equal(ef_scene_add_contour(&s, pts, 2), EF_OK); /* allowed, draws nothing */
     ef_point far = { EF_COORD_LIMIT, 0 };
     assert_int_equal(ef_scene_add_contour(&s, &far, 1), EF_ERR_RANGE);
     p = ef_scene_polygon(&s, 0);
@@ -1001,7 +1034,7 @@ static void test_robustness(void **state)
     assert_int_equal(ef_scene_add_contour(&s, pts, 3), EF_OK);
     assert_int_equal(ef_scene_add_contour(&s, pts, 1), EF_ERR_LIMIT);
     assert_int_equal(ef_scene_begin_shape(&s, EF_RULE_NONZERO, c), EF_OK);
-    assert_int_equal(ef_scene_add_contour(&s, pts, 3), EF_OK);        /* the next shape starts afresh */
+    assert_int_equal(ef_scene_add_contour(&s, pts, 3), EF_OK); /* the next shape starts afresh */
     ef_scene_free(&s);
     free(pts);
 
@@ -1087,7 +1120,8 @@ static void test_shared_svgs(void **state)
         ef_load_opts o = { 0, 0, on_note, &nt };
         snprintf(path, sizeof path, "%s/%s", svg_dir(), files[i].file);
         ef_status st = ef_scene_load_file(path, &o, &s, &e);
-        if (st == EF_ERR_IO) continue;
+        if (st == EF_ERR_IO)
+            continue;
         found++;
         must(st, &e);
         if (s.nshapes != files[i].shapes || s.ncontours != files[i].contours || s.npoints < files[i].min_pts ||

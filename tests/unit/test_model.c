@@ -12,15 +12,15 @@
 #include <cmocka.h>
 
 #include "edgeflag.h"
-#include "internal.h"   /* ef_gather_pads, tested exhaustively below */
+#include "internal.h" /* ef_gather_pads, tested exhaustively below */
 
-#define PX(v) ((int32_t)((v) * 256))
+#define PX(v) ((int32_t)((v)*256))
 
 typedef struct grid {
     int32_t w, h;
-    uint32_t *mask;   /* per pixel, OR of reported masks */
+    uint32_t *mask; /* per pixel, OR of reported masks */
     int spans;
-    int overlaps;     /* a pixel reported twice would be a filler bug */
+    int overlaps; /* a pixel reported twice would be a filler bug */
 } grid;
 
 static void grid_span(void *user, int32_t y, int32_t x, int32_t len, uint32_t mask)
@@ -77,7 +77,7 @@ static void test_aligned_rect(void **state)
                     int in = x >= 2 && x < 5 && y >= 1 && y < 4;
                     assert_int_equal(g.mask[y * 10 + x], in ? full_mask(ns[t]) : 0);
                 }
-            assert_int_equal(g.spans, 3);   /* one solid span per row */
+            assert_int_equal(g.spans, 3); /* one solid span per row */
             free(g.mask);
             ef_ctx_destroy(ctx);
         }
@@ -201,8 +201,11 @@ static void test_pentagram_rules(void **state)
     /* Vertices of a pentagram inscribed in a circle of radius 40 about (50, 50),
      * visiting every second point: (50,10) (73.51,82.36) (11.96,37.64) (88.04,37.64)
      * (26.49,82.36), rounded to 1/256 px by hand. */
-    ef_point pts[5] = { { PX(50), PX(10) }, { 73 * 256 + 131, 82 * 256 + 92 }, { 11 * 256 + 246, 37 * 256 + 164 },
-                        { 88 * 256 + 10, 37 * 256 + 164 }, { 26 * 256 + 125, 82 * 256 + 92 } };
+    ef_point pts[5] = { { PX(50), PX(10) },
+                        { 73 * 256 + 131, 82 * 256 + 92 },
+                        { 11 * 256 + 246, 37 * 256 + 164 },
+                        { 88 * 256 + 10, 37 * 256 + 164 },
+                        { 26 * 256 + 125, 82 * 256 + 92 } };
     uint32_t start[2] = { 0, 5 };
     ef_ctx *ctx;
     assert_int_equal(ef_ctx_create(&ctx, 100, 100, 16), EF_OK);
@@ -211,7 +214,7 @@ static void test_pentagram_rules(void **state)
     assert_int_equal(g.mask[55 * 100 + 50], full_mask(16));
     render(ctx, pts, start, 1, EF_RULE_EVENODD, &g);
     assert_int_equal(g.mask[55 * 100 + 50], 0);
-    assert_int_equal(g.mask[20 * 100 + 50], full_mask(16));   /* a spike: winding 1 */
+    assert_int_equal(g.mask[20 * 100 + 50], full_mask(16)); /* a spike: winding 1 */
     free(g.mask);
     ef_ctx_destroy(ctx);
 }
@@ -250,14 +253,14 @@ static void test_coverage_alpha(void **state)
     (void)state;
     assert_int_equal(ef_coverage_alpha(0, 8), 0);
     assert_int_equal(ef_coverage_alpha(0xff, 8), 255);
-    assert_int_equal(ef_coverage_alpha(0x1, 8), 32);      /* 31.875 rounds to 32 */
-    assert_int_equal(ef_coverage_alpha(0xf, 8), 128);     /* 127.5 ties up */
-    assert_int_equal(ef_coverage_alpha(0x1, 16), 16);     /* 15.9375 */
-    assert_int_equal(ef_coverage_alpha(0x1, 32), 8);      /* 7.97 */
+    assert_int_equal(ef_coverage_alpha(0x1, 8), 32);  /* 31.875 rounds to 32 */
+    assert_int_equal(ef_coverage_alpha(0xf, 8), 128); /* 127.5 ties up */
+    assert_int_equal(ef_coverage_alpha(0x1, 16), 16); /* 15.9375 */
+    assert_int_equal(ef_coverage_alpha(0x1, 32), 8);  /* 7.97 */
     assert_int_equal(ef_coverage_alpha(UINT32_MAX, 32), 255);
     for (uint32_t a = 0; a < 256; a++)
         for (uint32_t b = 0; b < 256; b++) {
-            uint32_t exact2 = 2 * a * b;          /* round(ab/255) with ties up: floor((2ab + 255) / 510) */
+            uint32_t exact2 = 2 * a * b; /* round(ab/255) with ties up: floor((2ab + 255) / 510) */
             assert_int_equal(ef_mul255(a, b), (exact2 + 255) / 510);
         }
 }
@@ -277,7 +280,7 @@ static void test_composite(void **state)
     ef_polygon p1 = { full, start, 1 }, p2 = { half, start, 1 };
     assert_int_equal(ef_fill(ctx, &img, &p1, EF_RULE_NONZERO, (ef_rgba8){ 255, 0, 0, 255 }), EF_OK);
     assert_int_equal(ef_fill(ctx, &img, &p2, EF_RULE_NONZERO, (ef_rgba8){ 0, 0, 255, 128 }), EF_OK);
-    const uint8_t *px = img.px + 4;    /* pixel (1, 0) */
+    const uint8_t *px = img.px + 4; /* pixel (1, 0) */
     /* cov = 128; P = (0, 0, 128, 128); s = (0, 0, 64, 64); sa = 64.
      * d' = d + s - mul(d, 64): R 255 - 64 = 191, B 0 + 64 = 64, A 255 + 64 - 64 = 255. */
     assert_int_equal(px[0], 191);

@@ -123,8 +123,8 @@ static void test_not_worse_than_original(void **state)
     (void)state;
     static const uint8_t c8[8] = { 5, 0, 3, 6, 1, 4, 7, 2 };
     static const uint8_t c16[16] = { 1, 8, 4, 15, 11, 2, 6, 14, 10, 3, 7, 12, 0, 9, 5, 13 };
-    static const uint8_t c32[32] = { 28, 13, 6, 23, 0, 17, 10, 27, 4, 21, 14, 31, 8, 25, 18, 3,
-                                     12, 29, 22, 7, 16, 1, 26, 11, 20, 5, 30, 15, 24, 9, 2, 19 };
+    static const uint8_t c32[32] = { 28, 13, 6,  23, 0,  17, 10, 27, 4,  21, 14, 31, 8,  25, 18, 3,
+                                     12, 29, 22, 7,  16, 1,  26, 11, 20, 5,  30, 15, 24, 9,  2,  19 };
     const uint8_t *code[3] = { c8, c16, c32 };
     for (int i = 0; i < 3; i++) {
         int n = sizes[i];
@@ -158,14 +158,10 @@ static void test_rejects_bad_input(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_tables_are_nrooks),
-        cmocka_unit_test(test_paper_table_8),
-        cmocka_unit_test(test_score_paper8),
-        cmocka_unit_test(test_score_diagonal),
-        cmocka_unit_test(test_symmetry_invariance),
-        cmocka_unit_test(test_not_worse_than_original),
-        cmocka_unit_test(test_rejects_bad_input),
-        cmocka_unit_test(test_search_reproduces_tables),
+        cmocka_unit_test(test_tables_are_nrooks),   cmocka_unit_test(test_paper_table_8),
+        cmocka_unit_test(test_score_paper8),        cmocka_unit_test(test_score_diagonal),
+        cmocka_unit_test(test_symmetry_invariance), cmocka_unit_test(test_not_worse_than_original),
+        cmocka_unit_test(test_rejects_bad_input),   cmocka_unit_test(test_search_reproduces_tables),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -29,7 +29,7 @@ typedef struct stats {
     uint64_t n[EF_IF_COUNT];
     uint64_t last_cycle[EF_IF_COUNT];
     uint64_t max_cycle;
-    int ordered;                /* every interface strictly increasing in cycle */
+    int ordered; /* every interface strictly increasing in cycle */
     uint64_t span_pixels, pix_left;
     uint64_t span_cycle;
     uint32_t span_x, span_y, span_mask, next_pix_x;
@@ -65,7 +65,7 @@ static void sink(void *user, const ef_txn *t)
         break;
     case EF_IF_SPAN:
         if (s->pix_left)
-            s->pix_ok = 0;                 /* COV accepted a span before finishing the last */
+            s->pix_ok = 0; /* COV accepted a span before finishing the last */
         s->span_y = (uint32_t)ef_txn_field(t, 0);
         s->span_x = s->next_pix_x = (uint32_t)ef_txn_field(t, 1);
         s->pix_left = ef_txn_field(t, 2);
@@ -75,14 +75,12 @@ static void sink(void *user, const ef_txn *t)
         break;
     case EF_IF_PIX:
         if (!s->pix_left || ef_txn_field(t, 0) != s->span_y || ef_txn_field(t, 1) != s->next_pix_x ||
-            t->cycle < s->span_cycle + EF_L_COV ||
-            ef_txn_field(t, 2) != ef_coverage_alpha(s->span_mask, s->samples))
+            t->cycle < s->span_cycle + EF_L_COV || ef_txn_field(t, 2) != ef_coverage_alpha(s->span_mask, s->samples))
             s->pix_ok = 0;
         s->pix_left--;
         s->next_pix_x++;
         break;
-    default:
-        break;
+    default: break;
     }
 }
 
@@ -136,7 +134,7 @@ static void check_scene(const char *name, const ef_scene *sc)
             assert_true(st.edge_ok);
             assert_int_equal(st.pix_left, 0);
             assert_int_equal(st.span_pixels, st.n[EF_IF_PIX]);
-            assert_int_equal(st.plots_since_last, 0);           /* the final plot carried `last` */
+            assert_int_equal(st.plots_since_last, 0); /* the final plot carried `last` */
             assert_true(traced.cycles == st.max_cycle + 1);
             /* FRAME + per shape SHAPE, EDGEs, SHAPE_END + FRAME_END */
             assert_int_equal(st.n[EF_IF_CMD], 2 + 2 * (uint64_t)sc->nshapes + traced.diag.edges_in);
@@ -177,7 +175,7 @@ static void shared_svgs(void **state)
     assert_true(n >= 20);
 }
 
-#define PX(v) ((int32_t)((v) * 256))
+#define PX(v) ((int32_t)((v)*256))
 
 static void add(ef_scene *sc, ef_rule rule, ef_rgba8 c, const ef_point *p, uint32_t n)
 {
@@ -197,7 +195,7 @@ static void edge_cases(void **state)
     add(&sc, EF_RULE_NONZERO, (ef_rgba8){ 200, 30, 40, 255 }, wide, 4);
     const ef_point tri[3] = { { PX(3.1), PX(3.3) }, { PX(30.9), PX(8.45) }, { PX(7), PX(21.2) } };
     assert_int_equal(ef_scene_begin_shape(&sc, EF_RULE_NONZERO, (ef_rgba8){ 10, 200, 90, 128 }), EF_OK);
-    for (int k = 0; k < 140; k++)                                  /* winding 140 */
+    for (int k = 0; k < 140; k++) /* winding 140 */
         assert_int_equal(ef_scene_add_contour(&sc, tri, 3), EF_OK);
     const ef_point flat[4] = { { PX(1), PX(5) }, { PX(9), PX(5) }, { PX(9), PX(5) }, { PX(1), PX(5) } };
     add(&sc, EF_RULE_EVENODD, (ef_rgba8){ 0, 0, 255, 255 }, flat, 4);
@@ -258,7 +256,7 @@ static void fields(void **state)
     }
     assert_null(ef_iface_get(EF_IF_COUNT));
     assert_int_equal(ef_iface_find("nope"), -1);
-    assert_int_equal(ef_iface_find("edge"), EF_IF_SEG);    /* the old name, still read */
+    assert_int_equal(ef_iface_find("edge"), EF_IF_SEG); /* the old name, still read */
 }
 
 /* Every interface and field name must be usable as a wire's name in a
@@ -307,11 +305,8 @@ static void names_not_keywords(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(fields),
-        cmocka_unit_test(names_not_keywords),
-        cmocka_unit_test(disable),
-        cmocka_unit_test(edge_cases),
-        cmocka_unit_test(shared_svgs),
+        cmocka_unit_test(fields),     cmocka_unit_test(names_not_keywords), cmocka_unit_test(disable),
+        cmocka_unit_test(edge_cases), cmocka_unit_test(shared_svgs),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -26,7 +26,10 @@
 #include "ef_scene.h"
 #include "ef_trace.h"
 
-static const struct { ef_filter f; ef_subpixel s; } settings[] = {
+static const struct {
+    ef_filter f;
+    ef_subpixel s;
+} settings[] = {
     { EF_FILTER_TENT, EF_SUBPIXEL_NONE }, { EF_FILTER_TENT, EF_SUBPIXEL_RGB }, { EF_FILTER_TENT, EF_SUBPIXEL_BGR },
     { EF_FILTER_BOX, EF_SUBPIXEL_RGB },   { EF_FILTER_BOX, EF_SUBPIXEL_BGR },
 };
@@ -51,7 +54,8 @@ static void sink(void *user, const ef_txn *t)
         s->frame_c = ef_txn_field(t, 3);
     if (i == EF_IF_PLOT)
         s->plots_since_last = ef_txn_field(t, 0) ? 0 : s->plots_since_last + 1;
-    if (i == EF_IF_SPAN && (ef_txn_field(t, 0) >= (uint64_t)s->hm || ef_txn_field(t, 1) + ef_txn_field(t, 2) > (uint64_t)s->wm))
+    if (i == EF_IF_SPAN &&
+        (ef_txn_field(t, 0) >= (uint64_t)s->hm || ef_txn_field(t, 1) + ef_txn_field(t, 2) > (uint64_t)s->wm))
         s->spans_ok = 0;
 }
 
@@ -138,7 +142,7 @@ static void shared_svgs(void **state)
     assert_true(n >= 20);
 }
 
-#define PX(v) ((int32_t)((v) * 256))
+#define PX(v) ((int32_t)((v)*256))
 
 /* Clamping and clipping on every side of the mask canvas, windings past 127,
  * a shape covering the whole canvas, one outside, a translucent one. */

@@ -19,7 +19,7 @@
 #include <cmocka.h>
 
 #include "ef_vec.h"
-#include "ef_vec_read.h"   /* EF_VEC_FMT_* of the table's readers */
+#include "ef_vec_read.h" /* EF_VEC_FMT_* of the table's readers */
 
 /* ------------------------------------------------------------ helpers */
 
@@ -74,13 +74,13 @@ static void test_crc32(void **state)
     uint8_t all[768];
     uint32_t c = 0;
     (void)state;
-    assert_true(ef_vec_crc32(0, "123456789", 9) == UINT32_C(0xCBF43926));   /* the catalogue's check */
+    assert_true(ef_vec_crc32(0, "123456789", 9) == UINT32_C(0xCBF43926)); /* the catalogue's check */
     assert_true(ef_vec_crc32(0, "", 0) == 0);
     assert_true(ef_vec_crc32(0, fox, strlen(fox)) == UINT32_C(0x414FA339));
     for (int i = 0; i < 768; i++)
         all[i] = (uint8_t)i;
-    assert_true(ef_vec_crc32(0, all, sizeof all) == UINT32_C(0xB0C0DF2A));   /* zlib.crc32 */
-    for (size_t i = 0; i < sizeof all; i += 7)                                /* chained in pieces */
+    assert_true(ef_vec_crc32(0, all, sizeof all) == UINT32_C(0xB0C0DF2A)); /* zlib.crc32 */
+    for (size_t i = 0; i < sizeof all; i += 7)                             /* chained in pieces */
         c = ef_vec_crc32(c, all + i, sizeof all - i < 7 ? sizeof all - i : 7);
     assert_true(c == UINT32_C(0xB0C0DF2A));
 }
@@ -99,7 +99,8 @@ static void test_sha256_fips(void **state)
     sha_hex("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq", 56, h);
     assert_string_equal(h, "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
     sha_hex("abcdefghbcdefghicdefghijdefghijkefghijklfghijklmghijklmnhijklmnoijklmnopjklmnopqklmnopqrlmnopqrsm"
-            "nopqrstnopqrstu", 112, h);
+            "nopqrstnopqrstu",
+            112, h);
     assert_string_equal(h, "cf5b16a778af8380036ce59e7b0492370b249b11e8f07a51afac45037afee9d1");
 }
 
@@ -112,7 +113,7 @@ static void test_sha256_million_a(void **state)
     (void)state;
     memset(a, 'a', sizeof a);
     ef_vec_sha256_init(&s);
-    while (done < 1000000) {                   /* uneven pieces: 1, 2, ... 999 bytes */
+    while (done < 1000000) { /* uneven pieces: 1, 2, ... 999 bytes */
         size_t n = step < 1000000 - done ? step : 1000000 - done;
         ef_vec_sha256_update(&s, a, n);
         done += n;
@@ -127,7 +128,10 @@ static void test_sha256_million_a(void **state)
  * blocks), against Python's hashlib, whole and byte by byte. */
 static void test_sha256_boundaries(void **state)
 {
-    static const struct { size_t n; const char *hex; } v[] = {
+    static const struct {
+        size_t n;
+        const char *hex;
+    } v[] = {
         { 55, "e7313d333c272e639f790978283f9eb392e843d0f29b7016828bb1daa4aac70b" },
         { 56, "4324d65f3c103567f5589c710bc08f8523f929a9272e3af36fc968e52abc6c27" },
         { 63, "81c80242132f230c3bd41b3e63bbcff16107339549214a99614ff26664625055" },
@@ -201,10 +205,10 @@ static void test_collect_refuses(void **state)
     ef_vec_collect_init(&c, EF_IF_ALL);
     t = txn(EF_IF_PLOT, 5, (const int64_t[]){ 0, 1, 2, 3, 0 });
     assert_int_equal(ef_vec_collect_add(&c, &t), EF_OK);
-    t.cycle = 5;                                   /* second transfer in one cycle */
+    t.cycle = 5; /* second transfer in one cycle */
     assert_int_equal(ef_vec_collect_add(&c, &t), EF_ERR_ARG);
     assert_non_null(strstr(c.why, "plot transaction at cycle 5"));
-    t.cycle = 9;                                   /* dropped after the first failure */
+    t.cycle = 9; /* dropped after the first failure */
     assert_int_equal(ef_vec_collect_add(&c, &t), EF_ERR_ARG);
     assert_int_equal(ef_vec_collect_count(&c, EF_IF_PLOT), 1);
     ef_vec_collect_free(&c);
@@ -216,11 +220,11 @@ static void test_collect_refuses(void **state)
 
     ef_vec_collect_init(&c, EF_IF_ALL);
     t.cycle = 1;
-    t.w[0] |= UINT64_C(1) << 36;                   /* above plot's 36 bits */
+    t.w[0] |= UINT64_C(1) << 36; /* above plot's 36 bits */
     assert_int_equal(ef_vec_collect_add(&c, &t), EF_ERR_ARG);
     ef_vec_collect_free(&c);
 
-    ef_vec_collect_init(&c, 1u << EF_IF_PIX);      /* plot not enabled */
+    ef_vec_collect_init(&c, 1u << EF_IF_PIX); /* plot not enabled */
     t = txn(EF_IF_PLOT, 5, (const int64_t[]){ 0, 1, 2, 3, 0 });
     assert_int_equal(ef_vec_collect_add(&c, &t), EF_ERR_ARG);
     ef_vec_collect_free(&c);
@@ -229,13 +233,19 @@ static void test_collect_refuses(void **state)
 static void test_merge_order(void **state)
 {
     /* Arrival interleaves interfaces; each interface is in cycle order. */
-    static const struct { int iface; uint64_t cycle; } in[] = {
-        { EF_IF_PIX, 5 }, { EF_IF_CMD, 0 }, { EF_IF_SPAN, 5 }, { EF_IF_PIX, 6 }, { EF_IF_PLOT, 3 },
+    static const struct {
+        int iface;
+        uint64_t cycle;
+    } in[] = {
+        { EF_IF_PIX, 5 }, { EF_IF_CMD, 0 }, { EF_IF_SPAN, 5 },  { EF_IF_PIX, 6 },  { EF_IF_PLOT, 3 },
         { EF_IF_CMD, 5 }, { EF_IF_CMD, 6 }, { EF_IF_ET_RD, 2 }, { EF_IF_PLOT, 4 },
     };
-    static const struct { int iface; uint64_t cycle; } want[] = {
-        { EF_IF_CMD, 0 }, { EF_IF_ET_RD, 2 }, { EF_IF_PLOT, 3 }, { EF_IF_PLOT, 4 }, { EF_IF_CMD, 5 },
-        { EF_IF_SPAN, 5 }, { EF_IF_PIX, 5 }, { EF_IF_CMD, 6 }, { EF_IF_PIX, 6 },
+    static const struct {
+        int iface;
+        uint64_t cycle;
+    } want[] = {
+        { EF_IF_CMD, 0 },  { EF_IF_ET_RD, 2 }, { EF_IF_PLOT, 3 }, { EF_IF_PLOT, 4 }, { EF_IF_CMD, 5 },
+        { EF_IF_SPAN, 5 }, { EF_IF_PIX, 5 },   { EF_IF_CMD, 6 },  { EF_IF_PIX, 6 },
     };
     static const int64_t zero[EF_IF_MAX_FIELDS] = { 0 };
     ef_vec_collect c;
@@ -247,7 +257,7 @@ static void test_merge_order(void **state)
     ef_vec_collect_init(&c, EF_IF_ALL);
     for (size_t i = 0; i < sizeof in / sizeof in[0]; i++) {
         t = txn(in[i].iface, in[i].cycle, zero);
-        t.w[0] = i;                                /* tag: which arrival */
+        t.w[0] = i; /* tag: which arrival */
         assert_int_equal(ef_vec_collect_add(&c, &t), EF_OK);
     }
     ef_vec_merge_init(&m, &c, EF_IF_ALL);
@@ -311,30 +321,29 @@ static void test_vcd_small(void **state)
     (void)state;
     small_run(&r, 1u << EF_IF_ET_RD);
     got = capture(write_vcd, &r, &n, NULL);
-    assert_string_equal(got,
-                        "$comment\n"
-                        "  edgeflag vectors format 1\n"
-                        "  generator edgeflag " EF_VERSION_STRING "; input a\\x24b.scene; size 7x5; samples 8; "
-                        "rule evenodd; seed 42\n"
-                        "  cycles 4; cycle c: clk falls at 10c ns, rises (transfers) at 10c+5 ns\n"
-                        "$end\n"
-                        "$version\n  edgeflag " EF_VERSION_STRING "\n$end\n"
-                        "$timescale 1ns $end\n"
-                        "$scope module edgeflag $end\n"
-                        "$var wire 1 ! clk $end\n"
-                        "$scope module et_rd $end\n"
-                        "$var wire 1 \" valid $end\n"
-                        "$var wire 1 # ready $end\n"
-                        "$var wire 14 % row [13:0] $end\n"
-                        "$var wire 22 & eid [21:0] $end\n"
-                        "$upscope $end\n"
-                        "$upscope $end\n"
-                        "$enddefinitions $end\n"
-                        "#0\n$dumpvars\n0!\n1\"\n1#\nb1 %\nb10 &\n$end\n#5\n1!\n"
-                        "#10\n0!\nb11 &\n#15\n1!\n"           /* same row: only eid changes */
-                        "#20\n0!\n0\"\n#25\n1!\n"              /* idle: valid drops, fields hold */
-                        "#30\n0!\n1\"\nb101 %\n#35\n1!\n"
-                        "#40\n0!\n0\"\n");                     /* the end: 10 * cycles */
+    assert_string_equal(got, "$comment\n"
+                             "  edgeflag vectors format 1\n"
+                             "  generator edgeflag " EF_VERSION_STRING "; input a\\x24b.scene; size 7x5; samples 8; "
+                             "rule evenodd; seed 42\n"
+                             "  cycles 4; cycle c: clk falls at 10c ns, rises (transfers) at 10c+5 ns\n"
+                             "$end\n"
+                             "$version\n  edgeflag " EF_VERSION_STRING "\n$end\n"
+                             "$timescale 1ns $end\n"
+                             "$scope module edgeflag $end\n"
+                             "$var wire 1 ! clk $end\n"
+                             "$scope module et_rd $end\n"
+                             "$var wire 1 \" valid $end\n"
+                             "$var wire 1 # ready $end\n"
+                             "$var wire 14 % row [13:0] $end\n"
+                             "$var wire 22 & eid [21:0] $end\n"
+                             "$upscope $end\n"
+                             "$upscope $end\n"
+                             "$enddefinitions $end\n"
+                             "#0\n$dumpvars\n0!\n1\"\n1#\nb1 %\nb10 &\n$end\n#5\n1!\n"
+                             "#10\n0!\nb11 &\n#15\n1!\n" /* same row: only eid changes */
+                             "#20\n0!\n0\"\n#25\n1!\n"   /* idle: valid drops, fields hold */
+                             "#30\n0!\n1\"\nb101 %\n#35\n1!\n"
+                             "#40\n0!\n0\"\n"); /* the end: 10 * cycles */
     free(got);
     ef_vec_collect_free(&r.c);
 }
@@ -388,9 +397,9 @@ static void test_bin(void **state)
     size_t n;
     unsigned char *b;
     (void)state;
-    small_run(&r, 1u << EF_IF_ET_RD | 1u << EF_IF_PIX);   /* pix recorded, but empty */
+    small_run(&r, 1u << EF_IF_ET_RD | 1u << EF_IF_PIX); /* pix recorded, but empty */
     b = (unsigned char *)capture(write_bin, &r, &n, NULL);
-    assert_int_equal(n, 104 + 3 * (10 + 5));                /* et_rd: 36 bits, 5 bytes */
+    assert_int_equal(n, 104 + 3 * (10 + 5)); /* et_rd: 36 bits, 5 bytes */
     assert_memory_equal(b, magic, 8);
     assert_true(le(b + 8, 2) == 1 && le(b + 10, 2) == 104);
     assert_true(b[12] == 8 && b[13] == 1 && le(b + 14, 2) == 0);
@@ -542,14 +551,14 @@ static void test_seed(void **state)
     assert_true(s == 20070101);
     assert_int_equal(ef_vec_scene_seed("# seed 18446744073709551615\r\n", 29, &s), 1);
     assert_true(s == UINT64_MAX);
-    assert_int_equal(ef_vec_scene_seed("\n   \n# x\n# seed 5", 17, &s), 1);   /* blank lines, no newline */
+    assert_int_equal(ef_vec_scene_seed("\n   \n# x\n# seed 5", 17, &s), 1); /* blank lines, no newline */
     assert_true(s == 5);
     s = 7;
-    assert_int_equal(ef_vec_scene_seed("# seed 18446744073709551616\n", 28, &s), 0);   /* 2^64 */
+    assert_int_equal(ef_vec_scene_seed("# seed 18446744073709551616\n", 28, &s), 0); /* 2^64 */
     assert_int_equal(ef_vec_scene_seed("# seed 12x\n", 11, &s), 0);
     assert_int_equal(ef_vec_scene_seed("# seed \n", 8, &s), 0);
     assert_int_equal(ef_vec_scene_seed("#seed 3\n", 8, &s), 0);
-    assert_int_equal(ef_vec_scene_seed("scene 1 1\n# seed 3\n", 19, &s), 0);   /* after the drawing started */
+    assert_int_equal(ef_vec_scene_seed("scene 1 1\n# seed 3\n", 19, &s), 0); /* after the drawing started */
     assert_int_equal(ef_vec_scene_seed("<svg># seed 3\n", 14, &s), 0);
     assert_int_equal(ef_vec_scene_seed("", 0, &s), 0);
     assert_true(s == 7);

@@ -67,9 +67,9 @@ static void test_pix_word_fields(void **state)
     assert_int_equal(d.seq[EF_IF_PIX].loc[0], 1);
     ef_vec_dump_txn(&d, EF_IF_PIX, 0, &t);
     assert_int_equal(t.cycle, 5);
-    assert_int_equal(ef_txn_field(&t, 0), 3);       /* y */
-    assert_int_equal(ef_txn_field(&t, 1), 2);       /* x */
-    assert_int_equal(ef_txn_field(&t, 2), 0x80);    /* alpha */
+    assert_int_equal(ef_txn_field(&t, 0), 3);    /* y */
+    assert_int_equal(ef_txn_field(&t, 1), 2);    /* x */
+    assert_int_equal(ef_txn_field(&t, 2), 0x80); /* alpha */
     assert_int_equal(ef_txn_field(&t, 3), 0x11223344u);
     ef_vec_dump_free(&d);
 }
@@ -110,8 +110,8 @@ static void test_readmemh_leniency(void **state)
         "000000000005_000c_0028_0112_23344\r\n",
         "\n\n  /* a comment */ 000000000005000c0028011223344 // trailing\n",
         "/* multi\n line */\n000000000005000c0028011223344",
-        "5000c0028011223344\n",   /* leading zeros may be left out */
-        "00000000000000000005000c0028011223344\n",   /* or added: a 128-bit register's %h */
+        "5000c0028011223344\n",                    /* leading zeros may be left out */
+        "00000000000000000005000c0028011223344\n", /* or added: a 128-bit register's %h */
     };
     (void)state;
     for (size_t k = 0; k < sizeof forms / sizeof forms[0]; k++) {
@@ -173,7 +173,10 @@ static void put_le(uint8_t *p, unsigned n, uint64_t v)
 static size_t build_bin(uint8_t *b)
 {
     memset(b, 0, 104 + 2 * 19);
-    memcpy(b, "\x89" "EFV\r\n\x1a\n", 8);
+    memcpy(b,
+           "\x89"
+           "EFV\r\n\x1a\n",
+           8);
     put_le(b + 8, 2, 1);
     put_le(b + 10, 2, 104);
     b[12] = 8;
@@ -185,9 +188,9 @@ static size_t build_bin(uint8_t *b)
     for (unsigned r = 0; r < 2; r++) {
         uint8_t *p = b + 104 + 19 * r;
         p[0] = EF_IF_PIX;
-        p[1] = 9;                                   /* ceil(68 / 8) */
+        p[1] = 9; /* ceil(68 / 8) */
         put_le(p + 2, 8, r ? 9 : 5);
-        put_le(p + 10, 8, UINT64_C(0x0c0028011223344) + r);  /* y 3, x 2, alpha 0x80, rgba */
+        put_le(p + 10, 8, UINT64_C(0x0c0028011223344) + r); /* y 3, x 2, alpha 0x80, rgba */
     }
     put_le(b + 96, 4, ef_vec_read_crc32(0, b + 104, 38));
     put_le(b + 100, 4, ef_vec_read_crc32(0, b, 100));
@@ -243,7 +246,7 @@ static void test_binary(void **state)
     c[104 + 19 + 1] = 8;
     expect_bin_error(c, n, EF_VEC_AT_RECORD, 2, 123, "payload length 8, interface pix has 9 bytes");
     memcpy(c, b, n);
-    c[104 + 18] = 0x10;   /* bit 68 of record 1's payload */
+    c[104 + 18] = 0x10; /* bit 68 of record 1's payload */
     put_le(c + 96, 4, ef_vec_read_crc32(0, c + 104, 38));
     put_le(c + 100, 4, ef_vec_read_crc32(0, c, 100));
     expect_bin_error(c, n, EF_VEC_AT_RECORD, 1, 104, "payload bits above bit 67");
@@ -308,8 +311,7 @@ static void test_manifest(void **state)
           "files[0].count: a file's count must be an integer 0..2^64-1" },
         { "{ \"files\": [ { \"name\": \"a\", \"count\": 1.5 } ] }", 0, 0,
           "files[0].count: a file's count must be an integer 0..2^64-1" },
-        { "{ \"files\": [ { \"name\": \"a\", \"role\": 3 } ] }", 0, 0,
-          "files[0].role: a string or null expected" },
+        { "{ \"files\": [ { \"name\": \"a\", \"role\": 3 } ] }", 0, 0, "files[0].role: a string or null expected" },
         { "{ \"width\": 0 }", 0, 0, "width: must be an integer 1..16384" },
         { "{ \"height\": \"1\" }", 0, 0, "height: must be an integer 1..16384" },
         { "{ \"x\": 1 } x", 1, 12, "the end of the file expected, 'x' found" },
@@ -333,7 +335,8 @@ static void test_manifest(void **state)
     }
     /* A NUL byte (json-c would end its input there) is refused at its place. */
     static const char nul[] = "{ \"x\": \"a\0b\" }";
-    assert_int_equal(ef_vec_read_manifest("manifest.json", (const uint8_t *)nul, sizeof nul - 1, &m, &e), EF_ERR_SYNTAX);
+    assert_int_equal(ef_vec_read_manifest("manifest.json", (const uint8_t *)nul, sizeof nul - 1, &m, &e),
+                     EF_ERR_SYNTAX);
     assert_true(e.line == 1 && e.col == 10 && strncmp(e.msg, "JSON: a NUL byte", 16) == 0);
     static const char nul_after[] = "{ }\n\0";
     assert_int_equal(ef_vec_read_manifest("manifest.json", (const uint8_t *)nul_after, sizeof nul_after - 1, &m, &e),
@@ -341,7 +344,9 @@ static void test_manifest(void **state)
     assert_true(e.line == 2 && e.col == 1 && strncmp(e.msg, "the end of the file expected", 28) == 0);
     /* Counts and sizes beyond 32 bits, up to 2^64 - 1, are read exactly. */
     assert_int_equal(manifest("{ \"files\": [ { \"name\": \"a\", \"count\": 18446744073709551615 },"
-                              " { \"name\": \"b\", \"count\": 9223372036854775808 } ] }", &m, &e), EF_OK);
+                              " { \"name\": \"b\", \"count\": 9223372036854775808 } ] }",
+                              &m, &e),
+                     EF_OK);
     assert_true(m.files[0].count == UINT64_MAX && m.files[1].count == UINT64_C(9223372036854775808));
     ef_vec_manifest_free(&m);
     char deep[200];
@@ -363,7 +368,7 @@ static void test_streaming(void **state)
     assert_non_null(text);
     n += (size_t)snprintf(text + n, cap - n, "// edgeflag vectors format 1: interface pix (COV -> memory)\n");
     for (unsigned k = 0; n + 80 < cap; k++) {
-        if (k % 7 == 0)   /* comments of both kinds between and after words */
+        if (k % 7 == 0) /* comments of both kinds between and after words */
             n += (size_t)snprintf(text + n, cap - n, "/* %u */ ", k);
         n += (size_t)snprintf(text + n, cap - n, "%012x%017x%s\n", k, 0x1234u + k, k % 7 ? "" : " // c");
     }
