@@ -18,6 +18,12 @@
 #      "Failed to expand region ... of N ICESTORM_LCs") is reported as such,
 #      not as a failure (the counts of step 1 say what it needs); any other
 #      nextpnr failure is a failure.
+#   3. optional, when nextpnr-ecp5 is on PATH or named by EF_SYNTH_ECP5
+#      (Debian 12 does not package it; a SKIP line says so otherwise): the
+#      whole ef_raster at each NS with synth_ecp5 (prints LUT4, TRELLIS_FF,
+#      DP16KD, LUT RAM, CCU2C, MULT18X18D) and, through the same wrapper,
+#      nextpnr-ecp5 on EF_SYNTH_ECP5_DEVICE (25k) in EF_SYNTH_ECP5_PKG
+#      (CABGA381): utilisation, Fmax and the critical path's ends.
 #
 # Environment: EF_SYNTH_NS ("8 16": the whole design's sample counts; the
 # blocks run at the first), EF_SYNTH_E (255), EF_SYNTH_W (320), EF_SYNTH_H
@@ -44,10 +50,64 @@ for t in yosys nextpnr-ice40 python3; do
     command -v $t >/dev/null 2>&1 || { echo "rtl-synth: $t not installed ('make deps-test' installs it)"; exit 1; }
 done
 echo "rtl-synth: $(yosys -V); $(nextpnr-ice40 --version 2>&1 | head -n 1)"
+# step 3 needs nextpnr-ecp5, which Debian 12 does not package
+ecp5_pnr=${EF_SYNTH_ECP5:-$(command -v nextpnr-ecp5)} ecp5_dev=${EF_SYNTH_ECP5_DEVICE:-25k} ecp5_pkg=${EF_SYNTH_ECP5_PKG:-CABGA381}
+if [ -n "$ecp5_pnr" ] && [ -x "$ecp5_pnr" ]; then
+    echo "rtl-synth: ECP5 step with $("$ecp5_pnr" --version 2>&1 | head -n 1) ($ecp5_pnr)"
+elif [ -n "${EF_SYNTH_ECP5:-}" ]; then
+    echo "rtl-synth: EF_SYNTH_ECP5=$EF_SYNTH_ECP5 is not an executable"; exit 1
+else
+    ecp5_pnr=""
+    echo "rtl-synth: SKIP the ECP5 step (the whole design on an ECP5): no nextpnr-ecp5 on PATH and no EF_SYNTH_ECP5 (Debian 12 does not package it; OSS CAD Suite or a source build of nextpnr with prjtrellis provides it)"
+fi
 rc=0
 
 # count CELL: the number of cells of that type (or prefix, for SB_DFF*) in a stat
 count() { awk -v c="$2" '$1 ~ "^"c { s += $2 } END { print s + 0 }' "$1"; }
+
+# wrap TAG TOP 'PARAMS' 'CHPARAM ARGS' 'FILES': the pin-light wrapper in $out/TAG_pins.v
+wrap() {
+    yosys -q -p "read_verilog -defer $5; chparam$4 $2; hierarchy -top $2; proc; write_json $out/$1.ports.json" \
+        >/dev/null 2>&1 &&
+        python3 "$root/tests/rtl/synth/pins_wrap.py" "$out/$1.ports.json" "$2" "$3" \
+            >"$out/${1}_pins.v" 2>"$out/$1.wrap.txt"
+}
+
+# ecp5 TAG TOP 'PARAMS' FILES...: step 3, the whole design on an ECP5
+ecp5() {
+    local tag=${1}_ecp5 top=$2 params=$3; shift 3
+    local files="$*" chp="" p t0=$SECONDS
+    for p in $params; do chp="$chp -set ${p%%=*} ${p#*=}"; done
+    if ! yosys -q -l "$out/$tag.log" -p "read_verilog -defer $files; chparam$chp $top; hierarchy -top $top; synth_ecp5 -top $top; tee -o $out/$tag.stat stat" \
+        >/dev/null 2>&1; then
+        grep -E 'ERROR' "$out/$tag.log" | head -n 3; echo "rtl-synth: $tag: yosys failed ($out/$tag.log)"; rc=1; return
+    fi
+    if grep -qE 'Latch inferred|^Warning' "$out/$tag.log"; then
+        grep -E 'Latch inferred|^Warning' "$out/$tag.log" | head; echo "rtl-synth: $tag: a latch or a Yosys warning"; rc=1
+    fi
+    local c s=""
+    for c in LUT4 TRELLIS_FF DP16KD TRELLIS_DPR16X4 CCU2C MULT18X18D; do s="$s, $(count "$out/$tag.stat" $c) $c"; done
+    echo "rtl-synth: $tag ($top $params): synth_ecp5${s#,} ($((SECONDS - t0)) s)"
+    echo "    yosys -p 'read_verilog -defer $(echo "$files" | sed "s|$root/||g"); chparam$chp $top; hierarchy -top $top; synth_ecp5 -top $top; stat'"
+    t0=$SECONDS
+    wrap "$tag" "$top" "$params" "$chp" "$files" &&
+        yosys -q -l "$out/${tag}_pins.log" -p "read_verilog -defer $out/${tag}_pins.v $files; hierarchy -top ${top}_pins; synth_ecp5 -top ${top}_pins -json $out/${tag}_pins.json" \
+            >/dev/null 2>&1 || { echo "rtl-synth: $tag: the pin-light wrapper did not synthesise ($out/${tag}_pins.log)"; rc=1; return; }
+    if ! "$ecp5_pnr" --"$ecp5_dev" --package "$ecp5_pkg" --json "$out/${tag}_pins.json" --freq 12 >"$out/$tag.pnr.log" 2>&1; then
+        tail -n 5 "$out/$tag.pnr.log"; echo "rtl-synth: $tag: nextpnr-ecp5 failed ($out/$tag.pnr.log)"; rc=1; return
+    fi
+    local use="" fmax path
+    for c in TRELLIS_COMB TRELLIS_FF DP16KD MULT18X18D; do
+        use="$use; $(grep -E "^Info:[[:space:]]*$c:" "$out/$tag.pnr.log" | tail -n 1 | tr -s ' \t' ' ' | sed 's/^Info: *//')"
+    done
+    fmax=$(grep -E 'Max frequency for clock' "$out/$tag.pnr.log" | tail -n 1 | sed 's/^Info: *//')
+    # the clock's critical path (nextpnr's first report after routing): its first source and last sink
+    path=$(awk '/Critical path report for clock/ { n++ } /Critical path report for cross-domain/ { n = 9 }
+        n == 1 && / Source / && s == "" { s = $NF } n == 1 && / Sink / { k = $NF } n == 1 && /ns logic/ { t = $2 " ns logic, " $5 " ns routing" }
+        END { print s " -> " k " (" t ")" }' "$out/$tag.pnr.log")
+    echo "rtl-synth: $tag placed and routed on the ECP5 $ecp5_dev ($ecp5_pkg) with a $(sed 's/.*: //' "$out/$tag.wrap.txt")-bit input shift register: ${use#; }; $fmax; critical path $path ($((SECONDS - t0)) s)"
+    echo "    nextpnr-ecp5 --$ecp5_dev --package $ecp5_pkg --json ${tag}_pins.json --freq 12"
+}
 
 # synth TAG TOP 'PARAMS' FILES...: one configuration, steps 1 and 2
 synth() {
@@ -84,10 +144,7 @@ YS
     fi
     # step 2: the pin-light wrapper, placed and routed
     t0=$SECONDS
-    yosys -q -p "read_verilog -defer $files; chparam$chp $top; hierarchy -top $top; proc; write_json $out/$tag.ports.json" \
-        >/dev/null 2>&1 &&
-        python3 "$root/tests/rtl/synth/pins_wrap.py" "$out/$tag.ports.json" "$top" "$params" \
-            >"$out/${tag}_pins.v" 2>"$out/$tag.wrap.txt" &&
+    wrap "$tag" "$top" "$params" "$chp" "$files" &&
         yosys -q -l "$out/${tag}_pins.log" -p "read_verilog -defer $out/${tag}_pins.v $files; hierarchy -top ${top}_pins; synth_ice40 -top ${top}_pins -json $out/${tag}_pins.json" \
             >/dev/null 2>&1 || { echo "rtl-synth: $tag: the pin-light wrapper did not synthesise ($out/${tag}_pins.log)"; rc=1; return; }
     if ! nextpnr-ice40 --"$dev" --package "$pkg" --json "$out/${tag}_pins.json" --freq 12 >"$out/$tag.pnr.log" 2>&1; then
@@ -124,6 +181,10 @@ for b in $only; do
             synth raster_ns${ns}_w${W}_h${H}_e$E ef_raster "NS=$ns W_MAX=$W H_MAX=$H E_MAX=$E" \
                 "$R/ef_raster.v" "$R/ef_dec.v" $A_SETUP "$R/ef_etm.v" "$R/ef_aet.v" "$R/ef_plot.v" \
                 "$R/ef_slb_fill.v" "$R/ef_cov.v"
+            [ -z "$ecp5_pnr" ] ||
+                ecp5 raster_ns${ns}_w${W}_h${H}_e$E ef_raster "NS=$ns W_MAX=$W H_MAX=$H E_MAX=$E" \
+                    "$R/ef_raster.v" "$R/ef_dec.v" $A_SETUP "$R/ef_etm.v" "$R/ef_aet.v" "$R/ef_plot.v" \
+                    "$R/ef_slb_fill.v" "$R/ef_cov.v"
         done ;;
     *) echo "rtl-synth: unknown block $b"; rc=1 ;;
     esac
