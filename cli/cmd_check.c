@@ -212,6 +212,8 @@ int ef_cli_check(int argc, char **argv)
     ef_check_opts o;
     ef_check_result res;
     int rc = ef_cli_check_parse(argc, argv, &a);
+    if (rc >= 0)
+        return rc;
 #if defined(__GLIBC__) && defined(M_MMAP_THRESHOLD) && defined(M_TRIM_THRESHOLD)
     /* Each pair of files is read into arrays sized from their counts and
      * freed after the comparison.  As glibc's own mmap'd blocks every pair's
@@ -222,8 +224,6 @@ int ef_cli_check(int argc, char **argv)
     mallopt(M_MMAP_THRESHOLD, 256 << 20);
     mallopt(M_TRIM_THRESHOLD, 512 << 20);
 #endif
-    if (rc >= 0)
-        return rc;
 
     ef_check_opts_init(&o);
     o.expected = a.expected;

@@ -14,8 +14,9 @@
  * remainder with sixteen independent lookups (16 KiB of tables: they stay
  * in the L1 cache; by 16 measured about 1.4x faster than by 8 here, on
  * vectors.bin and on check's reading of it).  Bytes are assembled by shifts,
- * so the host's byte order does not matter.  The tables are built once, under call_once: two threads (two
- * DPI-C models, say) starting together cannot race on them.
+ * so the host's byte order does not matter.  The tables are built once,
+ * under call_once: two threads (two DPI-C models, say) starting together
+ * cannot race on them.
  */
 #include "ef_vec.h"
 
