@@ -7,6 +7,7 @@
 #   tools/install-deps.sh portability   the same (what `make portability` needs)
 #   tools/install-deps.sh bench    + the peers and plotting for `make bench` (bench/README.md)
 #   tools/install-deps.sh synth    + Yosys, nextpnr-ice40 and icestorm for `make rtl-synth` (docs/synthesis.md)
+#   tools/install-deps.sh venv     + python3-venv for tools/install-venv.sh (PyPI tools in build/venv)
 #   tools/install-deps.sh farm     + GNU parallel, Slurm and munge for `make farm-test` (docs/regress.md)
 set -euo pipefail
 
@@ -43,6 +44,10 @@ fi
 if [ "${1:-}" = synth ]; then
     # make rtl-synth (docs/synthesis.md): Yosys synth_ice40, nextpnr-ice40 and its chip database
     pkgs+=(yosys nextpnr-ice40 fpga-icestorm)
+fi
+if [ "${1:-}" = venv ]; then
+    # tools/install-venv.sh: Python's venv module and pip (the PyPI tools live in build/venv)
+    pkgs+=(python3-venv python3-pip)
 fi
 if [ "${1:-}" = bench ]; then
     pkgs+=(g++ libagg-dev libcairo2-dev libfreetype-dev libstb-dev fonts-dejavu-core gnuplot-nox python3)
