@@ -76,6 +76,11 @@ static void drain(dut_soc *d)
             for (unsigned k = 0; k < 4 && i + k < len && i + k < 32; k++)
                 r[10 + i + k] = (uint8_t)(p >> (8 * k));
         }
+#ifdef EF_SOC_FAULT_PIX /* tests/board/soc_sim.sh: a planted firmware fault, never in a real build */
+        static unsigned npix;
+        if (r[0] == 6 && ++npix == 20)
+            r[10 + 4] ^= 1u; /* the 20th pix record's alpha, bit 0 (rgba is bytes 0-3) */
+#endif
         if (d->running && (len > 32 || ef_board_emit(d->b, r, 10u + len) != 0))
             fail(d, len > 32 ? "the peripheral sent a record longer than any interface's" : "out of memory");
     }

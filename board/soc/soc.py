@@ -84,7 +84,7 @@ class _CRGSim(Module):
 
 
 class EdgeflagSoC(SoCCore):
-    def __init__(self, target, ns, rom_init, sys_clk, ef_clk, main_ram):
+    def __init__(self, target, ns, rom_init, sys_clk, ef_clk, main_ram, cpu_variant="lite"):
         if target == "sim":
             from litex.build.sim import SimPlatform
             platform = SimPlatform("SIM", _sim_io)
@@ -102,7 +102,7 @@ class EdgeflagSoC(SoCCore):
         platform.add_source(os.path.join(HERE, "ef_gate_sim.v" if target == "sim" else "ef_gate_ecp5.v"))
         SoCCore.__init__(self, platform, sys_clk,
                          ident="edgeflag board", ident_version=False,
-                         cpu_type="vexriscv", cpu_variant="minimal",
+                         cpu_type="vexriscv", cpu_variant=cpu_variant,
                          integrated_rom_size=0x4000, integrated_rom_init=rom_init,
                          integrated_sram_size=0x2000,
                          integrated_main_ram_size=main_ram,
@@ -140,18 +140,21 @@ def main():
     ap.add_argument("--ef-clk", type=float, default=15e6)
     ap.add_argument("--main-ram", type=lambda s: int(s, 0), default=None,
                     help="block RAM main RAM bytes (sim default 4 MiB; the board: 0, the heap in SRAM)")
+    ap.add_argument("--cpu-variant", default="lite", choices=["minimal", "lite"],
+                    help="VexRiscv variant: lite (rv32im, 2 KiB instruction and data caches: the default) or minimal (rv32i)")
     ap.add_argument("--seed", type=int, default=1, help="nextpnr's placement seed")
     a = ap.parse_args()
     if a.sys_clk % 3e6:
         sys.exit("soc.py: --sys-clk must be a multiple of 3 MHz (the UART's 3 Mbaud divides it exactly)")
     rom = get_mem_data(a.rom, endianness="little") if a.rom else []
     main_ram = a.main_ram if a.main_ram is not None else (0x400000 if a.target == "sim" else 0)
-    soc = EdgeflagSoC(a.target, a.ns, rom, a.sys_clk, a.ef_clk, main_ram)
+    soc = EdgeflagSoC(a.target, a.ns, rom, a.sys_clk, a.ef_clk, main_ram, a.cpu_variant)
     if a.target == "sim":
         # Only the Verilog and the memory images: board/sim has its own Verilator harness, so
         # LiteX's simulator (its C modules, its tap/ethernet data package) is not used.
         import litex.build.sim.verilator as lsv
         lsv._generate_sim_variables = lambda *args, **kwargs: None
+        lsv._build_sim = lambda *args, **kwargs: None
     builder = Builder(soc, output_dir=a.out, compile_software=False,
                       compile_gateware=not (a.headers_only or a.target == "sim"))
     if a.headers_only:
@@ -162,7 +165,7 @@ def main():
         kw = dict(seed=a.seed, timingstrict=True)
         builder.build(**kw)
     else:
-        builder.build(run=False, build=False, build_name="sim")
+        builder.build(run=False, build_name="sim")
         # the Verilog the harness compiles, in order (the CPU's, the RTL's, the SoC's)
         with open(os.path.join(a.out, "gateware", "sources.txt"), "w") as f:
             for src in soc.platform.sources:
