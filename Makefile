@@ -68,6 +68,7 @@ include rtl_vectors/module.mk
 include rtl_vectors/dpi/module.mk
 include cli/module.mk
 include host/module.mk
+include python/module.mk
 include tests/module.mk
 include bench/module.mk
 
