@@ -813,6 +813,17 @@ class ModelStream:
             return ModelStream.END
         raise EdgeflagError(self._msg() or "pop", status=st)
 
+    def peek(self, iface):
+        """pop() without removing the transaction."""
+        st = vec.ef_mstream_peek(self._m, _iface(iface), self._t)
+        if st == 0:
+            return _txn_from_c(self._t)
+        if st == 1:
+            return None
+        if st == 2:
+            return ModelStream.END
+        raise EdgeflagError(self._msg() or "peek", status=st)
+
     def pending(self, iface):
         return int(vec.ef_mstream_pending(self._m, _iface(iface)))
 
