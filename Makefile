@@ -65,8 +65,10 @@ $(BUILD)/%.o: %.c
 include fixed/module.mk
 include model/module.mk
 include rtl_vectors/module.mk
-include rtl_vectors/dpi/module.mk
+include dv/dpi/module.mk
 include cli/module.mk
+include proto/module.mk
+include board/module.mk
 include host/module.mk
 include python/module.mk
 include tests/module.mk

@@ -33,7 +33,7 @@ typedef struct run {
 
 static int send_start(run *b, uint32_t mode, uint32_t kib)
 {
-    uint8_t p[EF_BOARD_START_LEN] = { 0 };
+    uint8_t p[EF_PROTO_START_LEN] = { 0 };
     ef_put32(p + 8, mode);
     ef_put32(p + 12, kib);
     return b->ops->write(b->l, b->f, ef_frame_put(b->f, EF_FT_START, 0, 0, p, sizeof p), b->timeout);
@@ -49,7 +49,7 @@ static int pump(run *b, uint32_t ndata, uint32_t chunk, int want_done, uint64_t 
     int done = !want_done;
     double idle = now_s();
     for (uint32_t i = 0; i < chunk; i++)
-        b->f[EF_BOARD_HEADER + i] = (uint8_t)(i * 7u);
+        b->f[EF_PROTO_HEADER + i] = (uint8_t)(i * 7u);
     while (base <= last || !done) {
         while (next <= last && next - base < b->window) {
             const uint8_t type = next == last ? EF_FT_END : EF_FT_DATA;
@@ -60,7 +60,7 @@ static int pump(run *b, uint32_t ndata, uint32_t chunk, int want_done, uint64_t 
             next++;
         }
         size_t n = 0;
-        int r = b->ops->read(b->l, b->r + b->rlen, 4 * EF_BOARD_FRAME_MAX - b->rlen, &n,
+        int r = b->ops->read(b->l, b->r + b->rlen, 4 * EF_PROTO_FRAME_MAX - b->rlen, &n,
                              next <= last && next - base < b->window ? 0 : 10);
         if (r < 0 && r != EF_HOST_ETIMEDOUT)
             return r;
@@ -93,7 +93,7 @@ static int pump(run *b, uint32_t ndata, uint32_t chunk, int want_done, uint64_t 
         memmove(b->r, b->r + pos, b->rlen - pos);
         b->rlen -= pos;
         if (unacked >= 4 || (unacked && (done || base > last))) {
-            uint8_t p[4], a[EF_BOARD_HEADER + 4 + EF_BOARD_TRAILER];
+            uint8_t p[4], a[EF_PROTO_HEADER + 4 + EF_PROTO_TRAILER];
             ef_put32(p, res_next);
             if ((r = b->ops->write(b->l, a, ef_frame_put(a, EF_FT_ACKR, 0, 0, p, 4), b->timeout)) < 0)
                 return r;
@@ -113,9 +113,9 @@ static int median_cmp(const void *a, const void *b)
 
 int ef_bench_link(const ef_transport_ops *ops, ef_link *l, uint64_t bytes, int timeout_ms, ef_bench_result out[4])
 {
-    run b = { ops, l, timeout_ms > 0 ? timeout_ms : 2000, malloc(EF_BOARD_FRAME_MAX), malloc(4 * EF_BOARD_FRAME_MAX),
+    run b = { ops, l, timeout_ms > 0 ? timeout_ms : 2000, malloc(EF_PROTO_FRAME_MAX), malloc(4 * EF_PROTO_FRAME_MAX),
               0,   16 };
-    uint8_t id[EF_BOARD_IDENTIFY_LEN], st[EF_BOARD_STATUS_LEN];
+    uint8_t id[EF_PROTO_IDENTIFY_LEN], st[EF_PROTO_STATUS_LEN];
     int r = 0;
     memset(out, 0, 4 * sizeof *out);
     out[0].name = "sink", out[1].name = "source", out[2].name = "loopback", out[3].name = "latency";
@@ -128,7 +128,7 @@ int ef_bench_link(const ef_transport_ops *ops, ef_link *l, uint64_t bytes, int t
     b.window = (uint32_t)(id[6] | id[7] << 8);
     if (!b.window)
         b.window = 1;
-    const uint32_t chunk = EF_BOARD_PAYLOAD_MAX;
+    const uint32_t chunk = EF_PROTO_PAYLOAD_MAX;
     const uint32_t ndata = (uint32_t)((bytes + chunk - 1) / chunk);
     const int is_null = strcmp(ops->name, "null") == 0;
 

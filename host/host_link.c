@@ -62,7 +62,7 @@ typedef struct hl {
     uint64_t part_bytes, records, counts[EF_IF_COUNT];
     uint32_t results_crc;
     int done;
-    uint8_t done_payload[EF_BOARD_DONE_LEN];
+    uint8_t done_payload[EF_PROTO_DONE_LEN];
 
     char dir[4096], part_path[4200], state_path[4200];
     uint32_t vec_crc; /* identifies the vectors file for --resume */
@@ -93,9 +93,9 @@ int ef_host_exit_code(int err)
 }
 
 /* ------------------------------------------------------------- identify */
-int ef_host_ident_parse(const uint8_t r[EF_BOARD_IDENTIFY_LEN], ef_host_ident *id)
+int ef_host_ident_parse(const uint8_t r[EF_PROTO_IDENTIFY_LEN], ef_host_ident *id)
 {
-    if (memcmp(r, EF_BOARD_MAGIC, 4) != 0)
+    if (memcmp(r, EF_PROTO_MAGIC, 4) != 0)
         return EF_HOST_EPROTO;
     id->protocol = r[4] | (unsigned)r[5] << 8;
     id->window = r[6] | (unsigned)r[7] << 8;
@@ -110,7 +110,7 @@ int ef_host_ident_parse(const uint8_t r[EF_BOARD_IDENTIFY_LEN], ef_host_ident *i
     for (char *p = id->serial; *p; p++)
         if (*p < 0x20 || *p > 0x7e)
             *p = '?';
-    return id->protocol == EF_BOARD_PROTOCOL ? 0 : EF_HOST_EPROTO;
+    return id->protocol == EF_PROTO_PROTOCOL ? 0 : EF_HOST_EPROTO;
 }
 
 void ef_host_ident_describe(const ef_host_ident *id, char *buf, size_t size)
@@ -118,7 +118,7 @@ void ef_host_ident_describe(const ef_host_ident *id, char *buf, size_t size)
     char s[32] = "";
     size_t k = 0;
     for (unsigned n = 8; n <= 32; n *= 2)
-        if (id->samples_mask >> ef_board_samples_bit(n) & 1u)
+        if (id->samples_mask >> ef_proto_samples_bit(n) & 1u)
             k += (size_t)snprintf(s + k, sizeof s - k, "%s%u", k ? "/" : "", n);
     snprintf(buf, size,
              "serial %s, protocol %u, samples %s, canvas up to %" PRIu32 "x%" PRIu32 ", %" PRIu32 " edges, window %u",
@@ -215,7 +215,7 @@ static int put_frame(hl *h, uint32_t seq)
 {
     size_t n;
     if (seq == 0) {
-        uint8_t p[EF_BOARD_START_LEN];
+        uint8_t p[EF_PROTO_START_LEN];
         ef_put32(p, h->start_payload_mask);
         ef_put32(p + 4, (uint32_t)h->samples);
         ef_put32(p + 8, EF_MODE_DUT);
@@ -227,8 +227,8 @@ static int put_frame(hl *h, uint32_t seq)
     } else {
         const uint64_t first = (uint64_t)(seq - 1) * h->per_frame;
         const uint64_t k = h->ncmds - first < h->per_frame ? h->ncmds - first : h->per_frame;
-        n = ef_frame_put(h->fbuf, EF_FT_DATA, 0, seq, h->cmds + first * EF_BOARD_CMD_BYTES,
-                         (uint32_t)(k * EF_BOARD_CMD_BYTES));
+        n = ef_frame_put(h->fbuf, EF_FT_DATA, 0, seq, h->cmds + first * EF_PROTO_CMD_BYTES,
+                         (uint32_t)(k * EF_PROTO_CMD_BYTES));
     }
     h->rep->frames_sent++;
     return h->ops->write(h->l, h->fbuf, n, h->o->timeout_ms);
@@ -240,7 +240,7 @@ static int send_ackr(hl *h, int resend)
         return fail(h, EF_HX_OUTPUT, "cannot write the results: %s", strerror(errno));
     if (save_state(h) != 0)
         return fail(h, EF_HX_OUTPUT, "cannot write the resume state: %s", strerror(errno));
-    uint8_t p[4], f[EF_BOARD_HEADER + 4 + EF_BOARD_TRAILER];
+    uint8_t p[4], f[EF_PROTO_HEADER + 4 + EF_PROTO_TRAILER];
     ef_put32(p, h->res_next);
     const int r =
         h->ops->write(h->l, f, ef_frame_put(f, EF_FT_ACKR, resend ? EF_ACKR_RESEND : 0, 0, p, 4), h->o->timeout_ms);
@@ -339,9 +339,9 @@ static int take(hl *h, const ef_frame *f, int *progress)
             /* DONE is acknowledged only once the results are on disk (run's end):
              * a board keeps it until then, so a host killed in between gets it
              * again on --resume */
-            if (f->len != EF_BOARD_DONE_LEN)
+            if (f->len != EF_PROTO_DONE_LEN)
                 return fail(h, EF_HX_BOARD, "the board sent a malformed DONE");
-            memcpy(h->done_payload, f->payload, EF_BOARD_DONE_LEN);
+            memcpy(h->done_payload, f->payload, EF_PROTO_DONE_LEN);
             h->done = 1;
             return 0;
         }
@@ -397,7 +397,7 @@ static void draw_progress(hl *h, double t0, int final)
         return;
     last = t;
     const double frac = h->last_seq ? (double)h->base / (h->last_seq + 1) : 1.0;
-    const double mb = (double)h->base * h->per_frame * EF_BOARD_CMD_BYTES / 1e6;
+    const double mb = (double)h->base * h->per_frame * EF_PROTO_CMD_BYTES / 1e6;
     const double el = t - t0, rate = el > 0 ? mb / el : 0, eta = frac > 0 ? el / frac - el : 0;
     char bar[31];
     int k = (int)(frac * 30);
@@ -494,20 +494,20 @@ static int load_vectors(hl *h)
     }
     const ef_vec_seq *s = &d.seq[EF_IF_CMD];
     h->ncmds = s->n;
-    h->cmds = malloc(s->n * EF_BOARD_CMD_BYTES);
+    h->cmds = malloc(s->n * EF_PROTO_CMD_BYTES);
     if (!h->cmds) {
         ef_vec_dump_free(&d);
         return fail(h, EF_HX_INTERNAL, "out of memory");
     }
     for (size_t k = 0; k < s->n; k++) {
-        uint8_t *c = h->cmds + k * EF_BOARD_CMD_BYTES;
+        uint8_t *c = h->cmds + k * EF_PROTO_CMD_BYTES;
         const uint64_t w0 = s->pay[k * s->nw], w1 = s->pay[k * s->nw + 1];
         for (int i = 0; i < 8; i++)
             c[i] = (uint8_t)(w0 >> (8 * i));
         for (int i = 0; i < 5; i++)
             c[8 + i] = (uint8_t)(w1 >> (8 * i));
     }
-    h->input_crc = ef_frame_crc32(0, h->cmds, s->n * EF_BOARD_CMD_BYTES);
+    h->input_crc = ef_frame_crc32(0, h->cmds, s->n * EF_PROTO_CMD_BYTES);
     h->vec_size = (uint64_t)sb.st_size;
     h->vec_crc = h->input_crc;
     memset(&h->info, 0, sizeof h->info);
@@ -554,20 +554,20 @@ static int run(hl *h)
     if ((code = prepare_dir(h)) != 0)
         return code;
 
-    uint8_t raw[EF_BOARD_IDENTIFY_LEN];
+    uint8_t raw[EF_PROTO_IDENTIFY_LEN];
     int r = h->ops->identify(h->l, raw);
     ef_host_ident id;
     if (r < 0)
         return r == EF_HOST_ENODEV || r == EF_HOST_ETIMEDOUT ? lost(h, r) : link_fail(h, "identify", r);
     if ((r = ef_host_ident_parse(raw, &id)) != 0) {
-        if (memcmp(raw, EF_BOARD_MAGIC, 4) == 0) {
+        if (memcmp(raw, EF_PROTO_MAGIC, 4) == 0) {
             char b[64];
             snprintf(b, sizeof b, "%u", id.protocol);
             return fail(h, EF_HX_BOARD, "the board speaks protocol version %s; this edgeflag-host speaks 1", b);
         }
         return fail(h, EF_HX_BOARD, "the device did not answer identify as an edgeflag board (no \"EFB1\")");
     }
-    if (!(id.samples_mask >> ef_board_samples_bit((unsigned)h->samples) & 1u) ||
+    if (!(id.samples_mask >> ef_proto_samples_bit((unsigned)h->samples) & 1u) ||
         (uint32_t)h->info.width > id.width_max || (uint32_t)h->info.height > id.height_max) {
         char b[300], d[200];
         ef_host_ident_describe(&id, d, sizeof d);
@@ -587,10 +587,10 @@ static int run(hl *h)
             return fail(h, EF_HX_USAGE,
                         s == -1 ? "--resume: no resume state in the results folder (nothing was interrupted)"
                                 : "--resume: the resume state belongs to another vectors file or is damaged");
-        uint8_t st[EF_BOARD_STATUS_LEN];
+        uint8_t st[EF_PROTO_STATUS_LEN];
         if ((r = h->ops->status(h->l, st)) < 0)
             return r == EF_HOST_ENODEV || r == EF_HOST_ETIMEDOUT ? lost(h, r) : link_fail(h, "status", r);
-        if (memcmp(st, EF_BOARD_MAGIC, 4) != 0)
+        if (memcmp(st, EF_PROTO_MAGIC, 4) != 0)
             return fail(h, EF_HX_BOARD, "the board's status answer is malformed");
         const uint32_t rx_seq = ef_get32(st + 8), res_made = ef_get32(st + 12);
         if (st[6] == EF_BS_IDLE || rx_seq == 0)
@@ -600,7 +600,7 @@ static int run(hl *h)
         uint64_t taken = (uint64_t)(rx_seq - 1) * h->per_frame; /* commands in the DATA frames it took */
         if (taken > h->ncmds)
             taken = h->ncmds;
-        if (ef_get32(st + 20) != ef_frame_crc32(0, h->cmds, (size_t)taken * EF_BOARD_CMD_BYTES))
+        if (ef_get32(st + 20) != ef_frame_crc32(0, h->cmds, (size_t)taken * EF_PROTO_CMD_BYTES))
             return fail(h, EF_HX_BOARD,
                         "the board's run is not this vectors file (its input CRC differs); run "
                         "again without --resume");
@@ -616,9 +616,9 @@ static int run(hl *h)
         if ((r = send_ackr(h, 1)) != 0)
             return r >= 1000 ? lost(h, -(r - 1000)) : r;
     } else {
-        unsigned per = o->frame_cmds ? o->frame_cmds : EF_BOARD_PAYLOAD_MAX / EF_BOARD_CMD_BYTES;
-        if (per > EF_BOARD_PAYLOAD_MAX / EF_BOARD_CMD_BYTES)
-            per = EF_BOARD_PAYLOAD_MAX / EF_BOARD_CMD_BYTES;
+        unsigned per = o->frame_cmds ? o->frame_cmds : EF_PROTO_PAYLOAD_MAX / EF_PROTO_CMD_BYTES;
+        if (per > EF_PROTO_PAYLOAD_MAX / EF_PROTO_CMD_BYTES)
+            per = EF_PROTO_PAYLOAD_MAX / EF_PROTO_CMD_BYTES;
         h->per_frame = per;
         h->start_payload_mask = o->iface_mask ? o->iface_mask : 1u << EF_IF_PIX;
         h->last_seq = (uint32_t)((h->ncmds + per - 1) / per) + 1;
@@ -631,8 +631,8 @@ static int run(hl *h)
             return fail(h, EF_HX_OUTPUT, "cannot write the resume state: %s", strerror(errno));
     }
 
-    h->fbuf = malloc(EF_BOARD_FRAME_MAX);
-    h->rcap = 4 * EF_BOARD_FRAME_MAX;
+    h->fbuf = malloc(EF_PROTO_FRAME_MAX);
+    h->rcap = 4 * EF_PROTO_FRAME_MAX;
     h->rbuf = malloc(h->rcap);
     if (!h->fbuf || !h->rbuf)
         return fail(h, EF_HX_INTERNAL, "out of memory");
@@ -698,7 +698,7 @@ static int run(hl *h)
     unlink(h->state_path);
     unlink(h->part_path);
     /* now DONE may go; a board that misses this ACKR still holds a finished run */
-    uint8_t p[4], fr[EF_BOARD_HEADER + 4 + EF_BOARD_TRAILER];
+    uint8_t p[4], fr[EF_PROTO_HEADER + 4 + EF_PROTO_TRAILER];
     ef_put32(p, h->res_next + 1);
     (void)h->ops->write(h->l, fr, ef_frame_put(fr, EF_FT_ACKR, 0, 0, p, 4), h->o->timeout_ms);
     (void)h->ops->flush(h->l, h->o->timeout_ms);

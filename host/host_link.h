@@ -39,7 +39,7 @@ typedef struct ef_host_ident {
     char serial[17];
 } ef_host_ident;
 /* 0, or EF_HOST_EPROTO when the bytes are not an edgeflag board's. */
-int ef_host_ident_parse(const uint8_t raw[EF_BOARD_IDENTIFY_LEN], ef_host_ident *id);
+int ef_host_ident_parse(const uint8_t raw[EF_PROTO_IDENTIFY_LEN], ef_host_ident *id);
 void ef_host_ident_describe(const ef_host_ident *id, char *buf, size_t size);
 
 typedef struct ef_host_stream_opts {

@@ -196,7 +196,7 @@ static int parse(int argc, char **argv, args *a)
         case O_RESULTS: a->results = optarg; break;
         case O_RESUME: a->resume = 1; break;
         case O_FRAMECMDS:
-            if (!ef_cli_parse_int(optarg, 1, EF_BOARD_PAYLOAD_MAX / EF_BOARD_CMD_BYTES, &v))
+            if (!ef_cli_parse_int(optarg, 1, EF_PROTO_PAYLOAD_MAX / EF_PROTO_CMD_BYTES, &v))
                 return usage_error("--frame-cmds must be 1..5041, not '%s'", optarg);
             a->frame_cmds = (unsigned)v;
             break;
@@ -368,7 +368,7 @@ static int cmd_stream(args *a, int verify)
     if (code)
         return code;
     if (verify && !a->interfaces) { /* every interface both the file and the board have, but cmd */
-        uint8_t raw[EF_BOARD_IDENTIFY_LEN];
+        uint8_t raw[EF_PROTO_IDENTIFY_LEN];
         ef_host_ident id;
         if (ops->identify(l, raw) == 0 && ef_host_ident_parse(raw, &id) == 0)
             mask |= file_mask(a->vectors) & id.iface_mask & ~(1u << EF_IF_CMD);
@@ -489,7 +489,7 @@ int main(int argc, char **argv)
         return EF_HX_OK;
     }
     if (strcmp(argv[1], "--version") == 0) {
-        printf("edgeflag-host %s (board protocol %d)\n", EF_VERSION_STRING, EF_BOARD_PROTOCOL);
+        printf("edgeflag-host %s (board protocol %d)\n", EF_VERSION_STRING, EF_PROTO_PROTOCOL);
         for (size_t i = 0; i < NTRANSPORTS; i++)
             printf("  %-5s %s\n", TRANSPORTS[i]->name, TRANSPORTS[i]->version());
         return EF_HX_OK;

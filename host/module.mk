@@ -1,18 +1,18 @@
 # host/: edgeflag-host, the board protocol's host side, its transports and the
-# board engine (host/board/) that the simulated and emulated boards run.
+# board engine (board/) that the simulated and emulated boards run.
 # docs/board.md.  USB and GPIO come from host/usb.mk and host/gpio.mk, which
 # build their transport when libusb-1.0 / libgpiod is installed and a table
 # saying "built without ..." otherwise (WITH_USB=0 / WITH_GPIO=0 force that).
-HOST_BOARD_SRC := $(wildcard host/board/*.c)
+HOST_BOARD_SRC := $(wildcard board/*.c proto/*.c)
 HOST_SRC := host/main.c host/host_link.c host/bench_link.c host/transport.c host/transport_sim.c \
             host/transport_null.c host/transport_socket.c
-HOST_CPPFLAGS := -Ihost -Ihost/board -Icli
+HOST_CPPFLAGS := -Ihost -Iboard -Iproto -Icli
 HOST_LIBS := $(shell $(PKG_CONFIG) --libs zlib 2>/dev/null || echo -lz)
 include host/usb.mk
 include host/gpio.mk
-include host/rtl_dut.mk
+include board/rtl_dut.mk
 HOST_BOARD_OBJ := $(HOST_BOARD_SRC:%.c=$(BUILD)/%.o)
-# with the RTL DUT (host/rtl_dut.mk) its real dut_rtl.o replaces the stub
+# with the RTL DUT (board/rtl_dut.mk) its real dut_rtl.o replaces the stub
 HOST_BOARD_LINK := $(filter-out $(HOST_RTL_DUT_STUB),$(HOST_BOARD_OBJ)) $(HOST_RTL_DUT_OBJS)
 HOST_OBJ := $(HOST_SRC:%.c=$(BUILD)/%.o) $(HOST_USB_OBJS) $(HOST_GPIO_OBJS)
 # the edgeflag CLI's objects but its main: verify runs `edgeflag check` in-process

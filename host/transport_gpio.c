@@ -17,9 +17,9 @@
 #include <string.h>
 #include <time.h>
 
-#include "board/ef_board.h"
-#include "board/ef_frame.h"
-#include "board/gpio_bus.h"
+#include "ef_board.h"
+#include "ef_frame.h"
+#include "gpio_bus.h"
 #include "gpio_lib.h"
 #include "transport_gpio.h"
 
@@ -533,12 +533,12 @@ static int timeout_of(int t) { return t > 0 ? t : DEFAULT_TIMEOUT_MS; }
 
 static int gpio_identify(ef_link *l, uint8_t out[48])
 {
-    return control(l, EF_GB_REQ_IDENTIFY, out, EF_BOARD_IDENTIFY_LEN, l->timeout_ms, "identify");
+    return control(l, EF_GB_REQ_IDENTIFY, out, EF_PROTO_IDENTIFY_LEN, l->timeout_ms, "identify");
 }
 
 static int gpio_status(ef_link *l, uint8_t out[40])
 {
-    return control(l, EF_GB_REQ_STATUS, out, EF_BOARD_STATUS_LEN, l->timeout_ms, "status");
+    return control(l, EF_GB_REQ_STATUS, out, EF_PROTO_STATUS_LEN, l->timeout_ms, "status");
 }
 
 static int gpio_reset(ef_link *l)
@@ -681,9 +681,9 @@ static int gpio_probe(const ef_host_opts *o, ef_found *found, int max)
             char want[64], e3[160];
             if (resolve_chip(o->chip, want, sizeof want, e3, sizeof e3) == 0 && strcmp(want, paths[i]) == 0) {
                 ef_link *l;
-                uint8_t id[EF_BOARD_IDENTIFY_LEN];
+                uint8_t id[EF_PROTO_IDENTIFY_LEN];
                 if (gpio_open(&l, o, e3, sizeof e3) == 0) {
-                    f->ok = gpio_identify(l, id) == 0 && memcmp(id, EF_BOARD_MAGIC, 4) == 0;
+                    f->ok = gpio_identify(l, id) == 0 && memcmp(id, EF_PROTO_MAGIC, 4) == 0;
                     gpio_close(l);
                 }
             }

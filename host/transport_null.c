@@ -15,7 +15,7 @@
 typedef struct null_link {
     uint32_t next; /* one past the highest numbered frame seen */
     int ack_due;
-    uint8_t ack[EF_BOARD_HEADER + 12 + EF_BOARD_TRAILER];
+    uint8_t ack[EF_PROTO_HEADER + 12 + EF_PROTO_TRAILER];
 } null_link;
 
 static int null_open(ef_link **out, const ef_host_opts *o, char *err, size_t errlen)
@@ -32,8 +32,8 @@ static int null_identify(ef_link *l, uint8_t out[48])
 {
     (void)l;
     memset(out, 0, 48);
-    memcpy(out, EF_BOARD_MAGIC, 4);
-    out[4] = EF_BOARD_PROTOCOL;
+    memcpy(out, EF_PROTO_MAGIC, 4);
+    out[4] = EF_PROTO_PROTOCOL;
     out[6] = 64; /* window */
     ef_put32(out + 16, 1u << 3 | 1u << 4 | 1u << 5);
     ef_put32(out + 20, 16384);
@@ -46,8 +46,8 @@ static int null_identify(ef_link *l, uint8_t out[48])
 static int null_status(ef_link *l, uint8_t out[40])
 {
     memset(out, 0, 40);
-    memcpy(out, EF_BOARD_MAGIC, 4);
-    out[4] = EF_BOARD_PROTOCOL;
+    memcpy(out, EF_PROTO_MAGIC, 4);
+    out[4] = EF_PROTO_PROTOCOL;
     ef_put32(out + 8, ((null_link *)l)->next);
     return 0;
 }
@@ -62,7 +62,7 @@ static int null_write(ef_link *l, const uint8_t *buf, size_t len, int timeout_ms
 {
     null_link *n = (null_link *)l;
     (void)timeout_ms;
-    if (len >= EF_BOARD_HEADER && buf[4] != EF_FT_ACKR) {
+    if (len >= EF_PROTO_HEADER && buf[4] != EF_FT_ACKR) {
         n->next = ef_get32(buf + 8) + 1;
         n->ack_due = 1;
     }

@@ -17,7 +17,7 @@
  * answers it with protocol version N.
  *
  * --sim-dut rtl puts the Verilated reference RTL behind the engine instead
- * of the model (host/board/dut_rtl.c, when built in: host/rtl_dut.mk);
+ * of the model (board/dut_rtl.c, when built in: board/rtl_dut.mk);
  * identify then says the RTL's own limits and sample counts.
  */
 #include <errno.h>
@@ -135,8 +135,8 @@ static int pull(sim_link *s)
         s->in_len += n;
     }
     size_t pos = 0;
-    while (s->in_len - pos >= EF_BOARD_HEADER) {
-        const size_t size = EF_BOARD_HEADER + ef_get32(s->in + pos + 12) + EF_BOARD_TRAILER;
+    while (s->in_len - pos >= EF_PROTO_HEADER) {
+        const size_t size = EF_PROTO_HEADER + ef_get32(s->in + pos + 12) + EF_PROTO_TRAILER;
         if (s->in_len - pos < size)
             break;
         s->rframes++;
@@ -169,14 +169,14 @@ static int replay(sim_link *s, const char *path)
     FILE *f = fopen(path, "rb");
     if (!f)
         return errno == ENOENT ? 0 : EF_HOST_EIO;
-    uint8_t *buf = malloc(EF_BOARD_FRAME_MAX + 16);
+    uint8_t *buf = malloc(EF_PROTO_FRAME_MAX + 16);
     uint8_t n[4], sink[65536];
     int r = buf ? 0 : EF_HOST_ENOMEM;
     while (!r && fread(n, 1, 4, f) == 4) {
         const uint32_t len = ef_get32(n);
         if (len == LOG_RESET) {
             ef_board_reset(s->b);
-        } else if (len > EF_BOARD_FRAME_MAX + 16 || fread(buf, 1, len, f) != len) {
+        } else if (len > EF_PROTO_FRAME_MAX + 16 || fread(buf, 1, len, f) != len) {
             r = EF_HOST_EIO; /* a log cut short by a crash: the tail is lost */
         } else {
             ef_board_rx(s->b, buf, len);
@@ -199,8 +199,8 @@ static int sim_open(ef_link **out, const ef_host_opts *o, char *err, size_t errl
         free(s);
         return r;
     }
-    ef_board_info info = { "EFSIM0001",
-                           EF_BOARD_CAP_RESULTS | EF_BOARD_CAP_RESUME | EF_BOARD_CAP_INTERNAL,
+    ef_proto_info info = { "EFSIM0001",
+                           EF_PROTO_CAP_RESULTS | EF_PROTO_CAP_RESUME | EF_PROTO_CAP_INTERNAL,
                            1u << 3 | 1u << 4 | 1u << 5,
                            16384,
                            16384,

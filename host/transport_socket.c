@@ -84,7 +84,7 @@ static size_t take_reply(sock_link *s, size_t p, size_t size)
     const uint32_t tag = ef_get32(s->in + p + 8), n = ef_get32(s->in + p + 12);
     const int ours = s->want_type && type == s->want_type && tag == s->tag && !s->got;
     if (ours) {
-        memcpy(s->reply, s->in + p + EF_BOARD_HEADER, n);
+        memcpy(s->reply, s->in + p + EF_PROTO_HEADER, n);
         s->reply_len = n;
         s->got = 1;
     }
@@ -109,31 +109,31 @@ static void scan(sock_link *s)
             continue;
         }
         const size_t avail = s->len - p;
-        if (memcmp(s->in + p, EF_BOARD_MAGIC, avail < 4 ? avail : 4) != 0) {
+        if (memcmp(s->in + p, EF_PROTO_MAGIC, avail < 4 ? avail : 4) != 0) {
             const uint8_t *e = memchr(s->in + p + 1, 'E', avail - 1);
             p = e ? (size_t)(e - s->in) : s->len; /* no frame here: host_link resyncs */
             continue;
         }
-        if (avail < EF_BOARD_HEADER)
+        if (avail < EF_PROTO_HEADER)
             break;
         const uint8_t type = s->in[p + 4];
         const uint32_t n = ef_get32(s->in + p + 12);
-        if (s->in[p + 6] || s->in[p + 7] || n > EF_BOARD_PAYLOAD_MAX) {
+        if (s->in[p + 6] || s->in[p + 7] || n > EF_PROTO_PAYLOAD_MAX) {
             p++;
             continue;
         }
         if ((type & 0xf0) != 0x90) {
-            s->skip = EF_BOARD_HEADER + n + EF_BOARD_TRAILER;
+            s->skip = EF_PROTO_HEADER + n + EF_PROTO_TRAILER;
             continue;
         }
-        const size_t size = EF_BOARD_HEADER + n + EF_BOARD_TRAILER;
+        const size_t size = EF_PROTO_HEADER + n + EF_PROTO_TRAILER;
         if (n > CTL_PAYLOAD_MAX) {
             p++;
             continue;
         }
         if (avail < size)
             break;
-        if (ef_frame_crc32(0, s->in + p, EF_BOARD_HEADER + n) != ef_get32(s->in + p + EF_BOARD_HEADER + n)) {
+        if (ef_frame_crc32(0, s->in + p, EF_PROTO_HEADER + n) != ef_get32(s->in + p + EF_PROTO_HEADER + n)) {
             p++; /* damaged: never seen, the request is retried */
             continue;
         }
@@ -321,7 +321,7 @@ static int control(sock_link *s, int type, uint8_t *out, uint32_t want_len)
 {
     static const char *const NAME[] = { "identify", "status", "reset" };
     for (int t = 0; t < CTL_TRIES; t++) {
-        uint8_t req[EF_BOARD_HEADER + EF_BOARD_TRAILER];
+        uint8_t req[EF_PROTO_HEADER + EF_PROTO_TRAILER];
         s->tag++;
         s->want_type = type | CTL_REPLY;
         s->got = 0;
@@ -357,12 +357,12 @@ static int control(sock_link *s, int type, uint8_t *out, uint32_t want_len)
 
 static int sock_identify(ef_link *l, uint8_t out[48])
 {
-    return control((sock_link *)l, CTL_IDENTIFY, out, EF_BOARD_IDENTIFY_LEN);
+    return control((sock_link *)l, CTL_IDENTIFY, out, EF_PROTO_IDENTIFY_LEN);
 }
 
 static int sock_status(ef_link *l, uint8_t out[40])
 {
-    return control((sock_link *)l, CTL_STATUS, out, EF_BOARD_STATUS_LEN);
+    return control((sock_link *)l, CTL_STATUS, out, EF_PROTO_STATUS_LEN);
 }
 
 static int sock_reset(ef_link *l) { return control((sock_link *)l, CTL_RESET, NULL, 0); }

@@ -31,9 +31,9 @@
 #include "usb_ids.h"
 
 /* The control requests carry the engine's bytes unchanged (docs/board-usb.md 3). */
-_Static_assert(EF_USB_IDENTIFY_LEN == EF_BOARD_IDENTIFY_LEN, "IDENTIFY's wLength is the engine's identify size");
-_Static_assert(EF_USB_STATUS_LEN == EF_BOARD_STATUS_LEN, "STATUS's wLength is the engine's status size");
-_Static_assert(EF_USB_PROTOCOL == EF_BOARD_PROTOCOL, "one protocol version");
+_Static_assert(EF_USB_IDENTIFY_LEN == EF_PROTO_IDENTIFY_LEN, "IDENTIFY's wLength is the engine's identify size");
+_Static_assert(EF_USB_STATUS_LEN == EF_PROTO_STATUS_LEN, "STATUS's wLength is the engine's status size");
+_Static_assert(EF_USB_PROTOCOL == EF_PROTO_PROTOCOL, "one protocol version");
 
 /* Defaults: 8 x 64 KiB each way is 512 KiB in flight, 9.8 ms of USB 2.0
  * High-Speed's 53.248 MB/s: enough to keep the bus busy through a host

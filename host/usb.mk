@@ -27,11 +27,11 @@ $(HOST_USB_OBJS): CPPFLAGS += $(HOST_USB_CFLAGS)
 HOST_LIBS    += $(HOST_USB_LIBS)
 USB_EMU      := $(BUILD)/tests/host/usb_emu
 USB_EMU_OBJ  := $(BUILD)/tests/host/usb_emu.o
-USB_EMU_BOARD_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(wildcard host/board/*.c))
+USB_EMU_BOARD_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(wildcard board/*.c proto/*.c))
 UMOCKDEV_CFLAGS = $(shell $(PKG_CONFIG) --cflags umockdev-1.0 2>/dev/null)
 UMOCKDEV_LIBS   = $(shell $(PKG_CONFIG) --libs umockdev-1.0 2>/dev/null || echo -lumockdev -lgobject-2.0 -lglib-2.0)
 # GLib's headers are not -Wstrict-prototypes clean.
-$(USB_EMU_OBJ): CPPFLAGS += -Ihost -Ihost/board $(UMOCKDEV_CFLAGS)
+$(USB_EMU_OBJ): CPPFLAGS += -Ihost -Iboard -Iproto $(UMOCKDEV_CFLAGS)
 $(USB_EMU_OBJ): WARN += -Wno-strict-prototypes
 $(USB_EMU): $(USB_EMU_OBJ) $(USB_EMU_BOARD_OBJ) $(RTLV_OBJ) $(LIB_A)
 	$(CC) $(LDFLAGS_ALL) -o $@ $^ $(UMOCKDEV_LIBS) -lpthread $(PNG_LIBS) $(EXPAT_LIBS) $(VEC_LIBS) -lz

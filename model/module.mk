@@ -42,7 +42,7 @@ $(LIB_PC): model/edgeflag.pc.in
 .PHONY: install
 install: lib cli
 	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/include/edgeflag $(DESTDIR)$(PREFIX)/lib/pkgconfig
-	install -m 755 $(EDGEFLAG) rtl_vectors/regress/ef-regress-shard rtl_vectors/regress/ef-regress-merge \
+	install -m 755 $(EDGEFLAG) tools/regress/ef-regress-shard tools/regress/ef-regress-merge \
 	    $(DESTDIR)$(PREFIX)/bin/
 	install -m 644 $(PUBLIC_H) $(DESTDIR)$(PREFIX)/include/edgeflag/
 	install -m 644 $(LIB_A) $(DESTDIR)$(PREFIX)/lib/

@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
 # tests/dpi/run.sh - `make test-dpi`: the reference model as a command stream
-# (rtl_vectors/dpi/ef_model_stream.h) and its DPI-C lockstep bench (docs/dpi.md).
+# (dv/dpi/ef_model_stream.h) and its DPI-C lockstep bench (docs/dpi.md).
 #
 #   1. the stream against the files `edgeflag vectors` wrote for the same
 #      scenes (tests/dpi/test_model_stream.c, cmocka): the tiger at 160x120
 #      (8 samples, each shape's rule; 16 samples with the rule override
 #      against a --rule evenodd run) and an `edgeflag gen` random case of
 #      several shapes at 32 samples;
-#   2. Verilator (--binary --timing) builds rtl_vectors/dpi/tb_lockstep.sv:
+#   2. Verilator (--binary --timing) builds dv/dpi/tb_lockstep.sv:
 #      ef_slb_fill fed the model's plots, its spans checked by the model
 #      through DPI-C, in lockstep, cycle for cycle; it must PASS on the tiger
 #      (each shape's rule, and +rule=evenodd) and on the gen case, with as
@@ -27,7 +27,7 @@
 # most of this stage's time; the simulations take well under a second).
 #
 # usage: bash tests/dpi/run.sh BUILD_DIR   (EF_DPI_KEEP=1 keeps the work dir;
-#        EF_DPI_RTL=DIR takes the RTL from DIR instead of rtl_vectors/rtl)
+#        EF_DPI_RTL=DIR takes the RTL from DIR instead of rtl)
 # Skips part 2 and 3, saying so, without verilator.  Ends with "N passed,
 # M failed"; exit 0 only if nothing failed.
 set -u
@@ -38,8 +38,8 @@ build=${1:?usage: tests/dpi/run.sh BUILD_DIR}
 root=$(cd "$(dirname "$0")/../.." && pwd)
 case $build in /*) ;; *) build=$PWD/$build ;; esac
 EF=$build/edgeflag
-DPI=$root/rtl_vectors/dpi
-R=${EF_DPI_RTL:-$root/rtl_vectors/rtl}     # EF_DPI_RTL: another RTL folder (the same file names)
+DPI=$root/dv/dpi
+R=${EF_DPI_RTL:-$root/rtl}     # EF_DPI_RTL: another RTL folder (the same file names)
 RTL_SLB="$R/ef_slb_fill.v $R/ef_slb_ram.v"
 RTL_RASTER="$R/ef_raster.v $R/ef_dec.v $R/ef_setup.v $R/ef_div.v $R/ef_etm.v $R/ef_aet.v $R/ef_plot.v $RTL_SLB $R/ef_cov.v"
 for f in "$EF" "$build/tests/test_model_stream"; do
@@ -135,7 +135,7 @@ if [ -e "$R/ef_raster.v" ]; then
     DUT=raster; CHECKS="cmd seg et_wr et_rd plot span pix"
 else
     DUT=slb; CHECKS="span"
-    echo "test-dpi: no rtl_vectors/rtl/ef_raster.v: the lockstep DUT is ef_slb_fill alone"
+    echo "test-dpi: no rtl/ef_raster.v: the lockstep DUT is ef_slb_fill alone"
 fi
 echo "test-dpi: DUT $DUT, checked in lockstep: $CHECKS"
 vl_build ns8 $DUT 8 160 120 & vl_build ns32 $DUT 32 160 120 &
@@ -236,7 +236,7 @@ fi
 
 # --------------------------------------------------------------- 3. faults
 # The first expected span: its cycle (the word's top 48 bits) and fields.
-# The RTL's fault EF_FAULT_SPAN (rtl_vectors/rtl/ef_slb_fill.v) cuts every
+# The RTL's fault EF_FAULT_SPAN (rtl/ef_slb_fill.v) cuts every
 # span of two or more pixels one short: the first such span of the files is
 # where the bench must stop.  A span word is 123 bits in 31 digits: its first
 # 13 digits are bits 123..72 and the cycle, bits 122..75, is their value

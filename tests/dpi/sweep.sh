@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # tests/dpi/sweep.sh - `make dpi-sweep` (not in `make test`): the lockstep
-# bench (rtl_vectors/dpi/tb_lockstep.sv, docs/dpi.md) with the SLB + FILL DUT
+# bench (dv/dpi/tb_lockstep.sv, docs/dpi.md) with the SLB + FILL DUT
 # (-DEF_TB_DUT_SLB) over every `edgeflag gen`
 # level-1 case at NS = 8, 16, 32 under each shape's own rule, non-zero and
 # even-odd: 261 x 9 = 2,349 runs, each a PASS with every span checked in
@@ -19,8 +19,8 @@ build=${1:?usage: tests/dpi/sweep.sh BUILD_DIR}
 root=$(cd "$(dirname "$0")/../.." && pwd)
 case $build in /*) ;; *) build=$PWD/$build ;; esac
 EF=$build/edgeflag
-DPI=$root/rtl_vectors/dpi
-RTL="$root/rtl_vectors/rtl/ef_slb_fill.v $root/rtl_vectors/rtl/ef_slb_ram.v"
+DPI=$root/dv/dpi
+RTL="$root/rtl/ef_slb_fill.v $root/rtl/ef_slb_ram.v"
 command -v verilator >/dev/null 2>&1 || { echo "dpi-sweep: verilator is not installed"; exit 1; }
 for f in "$EF" "$build/libef_dpi.a"; do [ -e "$f" ] || { echo "dpi-sweep: $f not built"; exit 1; }; done
 

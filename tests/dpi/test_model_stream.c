@@ -1,6 +1,6 @@
 /*
  * test_model_stream.c - the model fed one command at a time
- * (rtl_vectors/dpi/ef_model_stream.h) against the files `edgeflag vectors`
+ * (dv/dpi/ef_model_stream.h) against the files `edgeflag vectors`
  * wrote for the same scene: an independent path (the CLI renders the scene's
  * polygons and writes files; here only the command words of cmd.stim.hex go
  * in and every interface's transactions come out of the stream).

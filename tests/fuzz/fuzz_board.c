@@ -1,5 +1,5 @@
 /*
- * fuzz_board.c - libFuzzer target for the board engine (host/board/): its
+ * fuzz_board.c - libFuzzer target for the board engine (board/): its
  * frame parser, the protocol state machine and, behind it, the C model DUT's
  * command decoder (docs/board.md sections 2-4).
  *
@@ -49,7 +49,7 @@ static void take(ef_board *b, out *o)
 
 static void run(const uint8_t *data, size_t size, out *o, uint64_t *fed)
 {
-    const ef_board_info info = { "FUZZ", 7, 1u << 3 | 1u << 4 | 1u << 5, 256, 256, 4096, 4, 0x7f };
+    const ef_proto_info info = { "FUZZ", 7, 1u << 3 | 1u << 4 | 1u << 5, 256, 256, 4096, 4, 0x7f };
     ef_board *b = ef_board_new(&info, ef_board_dut_model());
     FUZZ_CHECK(b, "ef_board_new failed");
     *fed = 0;
@@ -62,11 +62,11 @@ static void run(const uint8_t *data, size_t size, out *o, uint64_t *fed)
                 k = size - i;
             ef_board_rx(b, data + i, k);
             i += k;
-            *fed += k / EF_BOARD_HEADER + 1; /* at most this many frames could have ended here */
+            *fed += k / EF_PROTO_HEADER + 1; /* at most this many frames could have ended here */
             take(b, o);
         }
     } else if (size) {
-        uint8_t *f = malloc(EF_BOARD_FRAME_MAX);
+        uint8_t *f = malloc(EF_PROTO_FRAME_MAX);
         FUZZ_CHECK(f, "out of memory");
         size_t i = 1;
         while (size - i >= 4) {
@@ -84,7 +84,7 @@ static void run(const uint8_t *data, size_t size, out *o, uint64_t *fed)
         free(f);
     }
     take(b, o);
-    uint8_t st[EF_BOARD_STATUS_LEN];
+    uint8_t st[EF_PROTO_STATUS_LEN];
     ef_board_status(b, st);
     FUZZ_CHECK(ef_get32(st + 8) <= *fed, "status says %u frames taken, %llu fed", ef_get32(st + 8),
                (unsigned long long)*fed);
@@ -106,7 +106,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         FUZZ_CHECK(r == EF_FRAME_OK, "board output at byte %zu is not a whole good frame (%d)", pos, r);
         if (f.type >= (EF_FT_IDENTIFY | EF_FT_REPLY) && f.type <= (EF_FT_RESET | EF_FT_REPLY)) {
             /* a control reply (docs/board.md 5.5): its fixed size; after a reset, numbering restarts */
-            static const uint32_t LEN[] = { EF_BOARD_IDENTIFY_LEN, EF_BOARD_STATUS_LEN, 0 };
+            static const uint32_t LEN[] = { EF_PROTO_IDENTIFY_LEN, EF_PROTO_STATUS_LEN, 0 };
             FUZZ_CHECK(f.len == LEN[f.type - (EF_FT_IDENTIFY | EF_FT_REPLY)], "control reply 0x%02x of %u bytes",
                        f.type, f.len);
             if (f.type == (EF_FT_RESET | EF_FT_REPLY))

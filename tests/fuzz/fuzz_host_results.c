@@ -166,7 +166,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     if (!dir[0]) {
         make_vectors();
-        sealbuf = malloc(EF_BOARD_FRAME_MAX);
+        sealbuf = malloc(EF_PROTO_FRAME_MAX);
         FUZZ_CHECK(sealbuf, "out of memory");
     }
     if (size == 0)

@@ -51,7 +51,7 @@ FUZZ_HOST_OBJ = $(BUILD)/host/host_link.o $(BUILD)/host/transport.o $(HOST_BOARD
 $(BUILD)/fuzz/fuzz_host_results: $(FUZZ_HOST_OBJ) $(FUZZ_CLI_OBJ)
 $(BUILD)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/fuzz_common.h $(LIB_A)
 	@mkdir -p $(dir $@)
-	$(CC) $(CPPFLAGS) -Itests/fuzz -Itests/oracle -Icli -Ihost -Ihost/board $(CFLAGS_ALL) -fsanitize=fuzzer $< \
+	$(CC) $(CPPFLAGS) -Itests/fuzz -Itests/oracle -Icli -Ihost -Iboard -Iproto $(CFLAGS_ALL) -fsanitize=fuzzer $< \
 	    $(if $(filter fuzz_render,$(notdir $@)),$(ORACLE_OBJ)) \
 	    $(if $(filter fuzz_cli_args,$(notdir $@)),$(FUZZ_CLI_OBJ)) \
 	    $(if $(filter fuzz_vec_read,$(notdir $@)),$(RTLV_OBJ)) \

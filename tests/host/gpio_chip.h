@@ -3,7 +3,7 @@
  * the GPIO transport's tests (docs/board-gpio.md section 8).  umockdev
  * presents /dev/gpiochip0; the ioctl handler answers libgpiod's uAPI v1 and v2
  * calls and plays the board's side of the bus: the real board engine
- * (host/board) behind the real bus logic (host/board/gpio_bus.c), at the
+ * (board) behind the real bus logic (board/gpio_bus.c), at the
  * line offsets of `wiring`.  In-process only (docs/board-gpio.md explains).
  */
 #ifndef EF_TEST_GPIO_CHIP_H
@@ -11,8 +11,8 @@
 
 #include <stdint.h>
 
-#include "board/ef_board.h"
-#include "board/gpio_bus.h"
+#include "ef_board.h"
+#include "gpio_bus.h"
 
 #define EMU_LINES 32
 #define EMU_SIGNALS 24

@@ -6,7 +6,7 @@
  *
  *   gpio_emu VECTORS.bin RESULTS_DIR     (tests/host/gpio.sh gives both)
  *
- * Checks: the board's side of the bus alone (host/board/gpio_bus.c: underrun,
+ * Checks: the board's side of the bus alone (board/gpio_bus.c: underrun,
  * control errors, RESET, a control request between stream bytes), listing, line maps (names and offsets, and bad ones), identify and
  * status byte for byte against the engine, a vectors stream end to end
  * through host_link.c (results written for `edgeflag check`), and the faults:
@@ -23,8 +23,8 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "board/ef_board.h"
-#include "board/gpio_bus.h"
+#include "ef_board.h"
+#include "gpio_bus.h"
 #include "ef_frame.h"
 #include "ef_trace.h"
 #include "gpio_chip.h"
@@ -61,10 +61,10 @@ static const char *LINES = "clk=EF_CLK,valid=EF_VALID,take=EF_TAKE,ctl=EF_CTL,d=
 
 static ef_board *new_board(void)
 {
-    ef_board_info info = { .serial = "EMU-GPIO-1",
-                           .capabilities = EF_BOARD_CAP_RESULTS | EF_BOARD_CAP_RESUME | EF_BOARD_CAP_INTERNAL,
-                           .samples_mask = 1u << ef_board_samples_bit(8) | 1u << ef_board_samples_bit(16) |
-                                           1u << ef_board_samples_bit(32),
+    ef_proto_info info = { .serial = "EMU-GPIO-1",
+                           .capabilities = EF_PROTO_CAP_RESULTS | EF_PROTO_CAP_RESUME | EF_PROTO_CAP_INTERNAL,
+                           .samples_mask = 1u << ef_proto_samples_bit(8) | 1u << ef_proto_samples_bit(16) |
+                                           1u << ef_proto_samples_bit(32),
                            .width_max = 4096,
                            .height_max = 4096,
                            .edges_max = 1u << 20,
@@ -130,8 +130,8 @@ static void test_bad_maps(void)
 
 static void test_identify(ef_link *l, ef_board *b)
 {
-    uint8_t got[EF_BOARD_IDENTIFY_LEN], want[EF_BOARD_IDENTIFY_LEN];
-    uint8_t sgot[EF_BOARD_STATUS_LEN], swant[EF_BOARD_STATUS_LEN];
+    uint8_t got[EF_PROTO_IDENTIFY_LEN], want[EF_PROTO_IDENTIFY_LEN];
+    uint8_t sgot[EF_PROTO_STATUS_LEN], swant[EF_PROTO_STATUS_LEN];
     int rc = ef_transport_gpio.identify(l, got);
     ef_board_identify(b, want);
     check(rc == 0 && memcmp(got, want, sizeof got) == 0, "identify: rc %d (%s) or bytes differ from the engine's", rc,
@@ -256,9 +256,9 @@ static void test_stream(emu_chip *e, ef_link *l, const char *vectors, const char
 static void test_duplex(emu_chip *e, ef_link *l)
 {
     enum { NDATA = 6, CHUNK = 250 }; /* 6 RESULT + DONE fit the board's window of 8 */
-    static uint8_t f[EF_BOARD_HEADER + CHUNK + EF_BOARD_TRAILER], sent[NDATA * CHUNK], back[NDATA * CHUNK + 1];
+    static uint8_t f[EF_PROTO_HEADER + CHUNK + EF_PROTO_TRAILER], sent[NDATA * CHUNK], back[NDATA * CHUNK + 1];
     static uint8_t rx[16384];
-    uint8_t start[EF_BOARD_START_LEN] = { 0 };
+    uint8_t start[EF_PROTO_START_LEN] = { 0 };
     size_t nback = 0, rlen = 0, pos = 0;
     int bad = 0, done = 0, rc;
     uint32_t x = 12345;
@@ -268,7 +268,7 @@ static void test_duplex(emu_chip *e, ef_link *l)
     double t0 = now_s();
     rc = ef_transport_gpio.write(l, f, ef_frame_put(f, EF_FT_START, 0, 0, start, sizeof start), 1000);
     for (uint32_t seq = 1; rc == 0 && seq <= NDATA + 1; seq++) {
-        uint8_t *p = f + EF_BOARD_HEADER;
+        uint8_t *p = f + EF_PROTO_HEADER;
         uint32_t len = seq <= NDATA ? CHUNK : 0;
         for (uint32_t i = 0; i < len; i++)
             x = x * 1103515245u + 12345u, p[i] = sent[(seq - 1) * CHUNK + i] = (uint8_t)(x >> 16);
@@ -338,7 +338,7 @@ static void test_faults(emu_chip *e, ef_link *l, const char *vectors, const char
     code = stream(l, vectors, dir, 500, &rep, told, sizeof told);
     check(code == EF_HX_BOARD && strstr(told, "injected by the GPIO emulator"), "engine failure: exit %d, told '%s'",
           code, told);
-    uint8_t st[EF_BOARD_STATUS_LEN];
+    uint8_t st[EF_PROTO_STATUS_LEN];
     check(ef_transport_gpio.status(l, st) == 0, "engine failure: status unreadable");
     ef_board_stats bs;
     ef_board_get_stats(b, &bs);
@@ -398,7 +398,7 @@ static void test_faults(emu_chip *e, ef_link *l, const char *vectors, const char
 
     /* 5. Nothing answers on the lines. */
     emu_chip_set_faults(e, EMU_FAULT_MUTE);
-    uint8_t id[EF_BOARD_IDENTIFY_LEN];
+    uint8_t id[EF_PROTO_IDENTIFY_LEN];
     t0 = now_s();
     rc = ef_transport_gpio.identify(l, id);
     dt = now_s() - t0;
@@ -407,7 +407,7 @@ static void test_faults(emu_chip *e, ef_link *l, const char *vectors, const char
     b = fresh_board(e, l, b);
 }
 
-/* ---- the board's side alone (host/board/gpio_bus.c against docs/board-gpio.md 4-5) ---- */
+/* ---- the board's side alone (board/gpio_bus.c against docs/board-gpio.md 4-5) ---- */
 
 static void bus_edge(ef_gpio_bus *g, uint8_t d, unsigned ctrl, ef_gpio_bus_lines *o)
 {
@@ -434,7 +434,7 @@ static void test_bus_side(void)
     ef_board *b = new_board();
     ef_gpio_bus *g = ef_gpio_bus_new(b);
     ef_gpio_bus_lines o;
-    uint8_t r[64], want[EF_BOARD_IDENTIFY_LEN];
+    uint8_t r[64], want[EF_PROTO_IDENTIFY_LEN];
     ef_gpio_bus_outputs(g, &o);
     check(o.ready && !o.avail && !o.err && !o.done, "bus: idle lines ready %d avail %d err %d done %d", o.ready,
           o.avail, o.err, o.done);
@@ -452,7 +452,7 @@ static void test_bus_side(void)
 
     /* a START frame goes in; its ACK waits on q while IDENTIFY runs in the
      * control view, and is still whole afterwards */
-    uint8_t f[EF_BOARD_HEADER + EF_BOARD_START_LEN + EF_BOARD_TRAILER], start[EF_BOARD_START_LEN] = { 0 };
+    uint8_t f[EF_PROTO_HEADER + EF_PROTO_START_LEN + EF_PROTO_TRAILER], start[EF_PROTO_START_LEN] = { 0 };
     ef_put32(start + 8, EF_MODE_SINK);
     size_t flen = ef_frame_put(f, EF_FT_START, 0, 0, start, sizeof start);
     for (size_t i = 0; i < flen; i++)
@@ -496,7 +496,7 @@ static void test_bus_side(void)
 static void check_timing(emu_chip *e, ef_link *l, unsigned S, unsigned H)
 {
     uint64_t su, ho, sets, gets, edges;
-    uint8_t id[EF_BOARD_IDENTIFY_LEN];
+    uint8_t id[EF_PROTO_IDENTIFY_LEN];
     emu_chip_timing(e, &su, &ho, &sets, &gets, &edges);
     unsigned long long c0 = ef_gpio_link_cycles(l);
     int rc = ef_transport_gpio.identify(l, id);

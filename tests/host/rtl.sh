@@ -15,7 +15,7 @@
 #      edgeflag-host built without the RTL DUT: `--sim-dut rtl` exit 7 naming make host-rtl,
 #      and --version says whether it is built in.
 # usage: bash tests/host/rtl.sh BUILD_DIR   (`make test-host-rtl`; EF_RTL_DUT_SRC: another
-#        RTL folder than rtl_vectors/rtl).  Builds what it needs (about 30 s on two cores).
+#        RTL folder than rtl).  Builds what it needs (about 30 s on two cores).
 # Skips (exit 0, saying so) only when verilator is not installed.
 # Ends with "N passed, M failed"; exit status 0 only if nothing failed.
 set -u

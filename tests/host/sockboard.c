@@ -1,5 +1,5 @@
 /*
- * sockboard.c - the board engine of host/board/ with the C model as its DUT,
+ * sockboard.c - the board engine of board/ with the C model as its DUT,
  * behind a unix socket (docs/board.md section 5.5): what a Verilator
  * simulation or a TCP bridge in front of a board does, so that the engine's
  * own answers to the control frames (identify, status, reset in the byte
@@ -86,8 +86,8 @@ int main(int argc, char **argv)
     const struct sigaction sa = { .sa_handler = on_term };
     sigaction(SIGTERM, &sa, NULL);
     sigaction(SIGINT, &sa, NULL);
-    const ef_board_info info = { "EFSOCK0001",
-                                 EF_BOARD_CAP_RESULTS | EF_BOARD_CAP_RESUME | EF_BOARD_CAP_INTERNAL,
+    const ef_proto_info info = { "EFSOCK0001",
+                                 EF_PROTO_CAP_RESULTS | EF_PROTO_CAP_RESUME | EF_PROTO_CAP_INTERNAL,
                                  1u << 3 | 1u << 4 | 1u << 5,
                                  16384,
                                  16384,

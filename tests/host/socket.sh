@@ -5,7 +5,7 @@
 # its exit code, what it told the user and what the board received (pyboard's counters) and
 # returned (results byte for byte against the simulated board's, and `edgeflag check`).
 #   1. verify over unix: and tcp:127.0.0.1:PORT, PASS, results identical to --transport sim's;
-#      the board engine of host/board/ behind a socket (sockboard) the same way;
+#      the board engine of board/ behind a socket (sockboard) the same way;
 #   2. each pyboard fault: a host frame dropped or corrupted, a reply dropped or corrupted
 #      (exit 0), the connection closed mid-commands and mid-results and a stall (exit 5,
 #      then --resume: exit 0 and byte-identical results), a reset (6), another protocol

@@ -7,7 +7,7 @@
  * IN 0x81, 512-byte packets) and a device node whose ioctls come to this
  * program.  The ioctl handler plays the kernel's usbfs: it takes URBs
  * (submit, reap, discard), answers control transfers and capability queries,
- * and behind it runs the real board engine (host/board/ef_board.c) with the C
+ * and behind it runs the real board engine (board/ef_board.c) with the C
  * model as its DUT: bulk OUT bytes go into ef_board_rx(), ef_board_tx() fills
  * bulk IN URBs, and the vendor control requests call ef_board_identify(),
  * ef_board_status() and ef_board_reset().
@@ -140,11 +140,11 @@ static int w_start(void *self, ef_board *b, uint32_t mask, int samples)
     return w->inner.start(w->inner.self, b, mask, samples);
 }
 
-static int w_push(void *self, const uint8_t cmd[EF_BOARD_CMD_BYTES])
+static int w_push(void *self, const uint8_t cmd[EF_PROTO_CMD_BYTES])
 {
     dut_wrap *w = self;
     if (w->e->dut_log)
-        fwrite(cmd, 1, EF_BOARD_CMD_BYTES, w->e->dut_log);
+        fwrite(cmd, 1, EF_PROTO_CMD_BYTES, w->e->dut_log);
     return w->inner.push(w->inner.self, cmd);
 }
 
@@ -276,7 +276,7 @@ static void pull_from_board(emu_board *eb)
         memcpy(eb->deliver + eb->deliver_len, eb->stage + pos, used);
         if (r == EF_FRAME_OK && eb->frames_to_host == f->corrupt_in) {
             /* a bit of the payload (or of the CRC when there is none) */
-            eb->deliver[eb->deliver_len + EF_BOARD_HEADER + (fr.len ? fr.len / 2 : 0)] ^= 0x10;
+            eb->deliver[eb->deliver_len + EF_PROTO_HEADER + (fr.len ? fr.len / 2 : 0)] ^= 0x10;
             eb->frames_corrupted++;
         }
         eb->deliver_len += used;
@@ -840,9 +840,9 @@ int main(int argc, char **argv)
         snprintf(eb->serial, sizeof eb->serial, "%s", serials[i]);
         /* What the simulated board reports (transport_sim.c): the C model
          * can do every size, sample count and interface. */
-        ef_board_info info = { .capabilities = EF_BOARD_CAP_RESULTS | EF_BOARD_CAP_RESUME | EF_BOARD_CAP_INTERNAL,
-                               .samples_mask = 1u << ef_board_samples_bit(8) | 1u << ef_board_samples_bit(16) |
-                                               1u << ef_board_samples_bit(32),
+        ef_proto_info info = { .capabilities = EF_PROTO_CAP_RESULTS | EF_PROTO_CAP_RESUME | EF_PROTO_CAP_INTERNAL,
+                               .samples_mask = 1u << ef_proto_samples_bit(8) | 1u << ef_proto_samples_bit(16) |
+                                               1u << ef_proto_samples_bit(32),
                                .width_max = 16384,
                                .height_max = 16384,
                                .edges_max = 1u << 22,

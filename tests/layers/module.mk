@@ -9,6 +9,8 @@ layers-print:
 	@echo "input|$(LAYER_INC_input)"
 	@echo "rtl_vectors|$(LAYER_INC_rtl_vectors)"
 	@echo "cli|$(LAYER_INC_cli)"
+	@echo "proto|$(LAYER_INC_proto)"
+	@echo "board|$(LAYER_INC_board)"
 
 test-layers: $(CORE_STAGED_H)
 	@bash tests/layers/run.sh $(BUILD)

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # tests/regress/farm.sh - `make farm-test`: the regression of docs/regress.md on a real scheduler.
 # Starts a single-node Slurm (tools/slurm-local.sh), submits level 1 as a job array of 6 shards
-# with rtl_vectors/regress/ef-regress.sbatch, cancels shard 4 while the array runs (a shard that
+# with tools/regress/ef-regress.sbatch, cancels shard 4 while the array runs (a shard that
 # dies), waits, merges, and demands: shards 1-3 and 5-6 complete and passed, shard 4 MISSING or
 # UNFINISHED, RESULT FAIL, a well-formed merged JUnit with a "missing shard" failure; then
 # resubmits shard 4 alone and demands a PASS over all 261 cases.  Stops Slurm at the end.
@@ -22,16 +22,16 @@ trap cleanup EXIT
 env_line=$(bash "$root/tools/slurm-local.sh" start "$scratch/slurm") || { echo "farm: Slurm did not start"; echo "0 passed, 1 failed"; exit 1; }
 eval "$env_line"
 echo "farm: single-node Slurm up ($(sinfo -h -o '%n %c CPUs %t'))"
-export EF_REGRESS_OUT=$scratch/out EF_REGRESS_SEED=20070101 EF_REGRESS_LEVEL=1 EF_REGRESS_HOME=$root/rtl_vectors/regress
+export EF_REGRESS_OUT=$scratch/out EF_REGRESS_SEED=20070101 EF_REGRESS_LEVEL=1 EF_REGRESS_HOME=$root/tools/regress
 mkdir -p "$EF_REGRESS_OUT"
 cd "$scratch" || exit 1
 
 t0=$(date +%s)
-jid=$(sbatch --parsable --array=1-6 "$root/rtl_vectors/regress/ef-regress.sbatch") || { bad "sbatch"; exit 1; }
+jid=$(sbatch --parsable --array=1-6 "$root/tools/regress/ef-regress.sbatch") || { bad "sbatch"; exit 1; }
 scancel "${jid}_4"
 for _ in $(seq 600); do [ -z "$(squeue -h -j "$jid" 2>/dev/null)" ] && break; sleep 1; done
 wall=$(($(date +%s) - t0))
-"$root/rtl_vectors/regress/ef-regress-merge" "$EF_REGRESS_OUT" >merge1.out 2>&1
+"$root/tools/regress/ef-regress-merge" "$EF_REGRESS_OUT" >merge1.out 2>&1
 mrc=$?
 sum=$EF_REGRESS_OUT/merged/summary.txt
 done_ok=1
@@ -45,9 +45,9 @@ fi
 
 # The missing shard rerun alone (the array's size stated, as the sbatch comment says).
 t1=$(date +%s)
-jid2=$(EF_REGRESS_SHARDS=6 sbatch --parsable --array=4 "$root/rtl_vectors/regress/ef-regress.sbatch")
+jid2=$(EF_REGRESS_SHARDS=6 sbatch --parsable --array=4 "$root/tools/regress/ef-regress.sbatch")
 for _ in $(seq 600); do [ -z "$(squeue -h -j "$jid2" 2>/dev/null)" ] && break; sleep 1; done
-"$root/rtl_vectors/regress/ef-regress-merge" "$EF_REGRESS_OUT" >merge2.out 2>&1
+"$root/tools/regress/ef-regress-merge" "$EF_REGRESS_OUT" >merge2.out 2>&1
 mrc=$?
 runs=$(sed -n 's/^runs: \([0-9]*\) in 6 of 6 shards.*/\1/p' "$sum")
 if [ $mrc = 0 ] && grep -q '^RESULT: PASS' "$sum" && [ "$runs" = "$("$EDGEFLAG" gen --list | grep -c '^[0-9]')" ]; then

@@ -1,4 +1,4 @@
-# The farm flow (docs/regress.md): rtl_vectors/regress/ef-regress-shard and ef-regress-merge.
+# The farm flow (docs/regress.md): tools/regress/ef-regress-shard and ef-regress-merge.
 #   make test-regress   level 1 in 4 shards under GNU parallel, merged; killed and missing shards,
 #                       wrong, silent and hanging DUTs, shards that do not belong together
 #   make farm-test      the same flow as a Slurm job array on a single-node Slurm that

@@ -14,8 +14,8 @@ build=${1:?usage: tests/regress/run.sh BUILD_DIR}
 root=$(cd "$(dirname "$0")/../.." && pwd)
 case $build in /*) ;; *) build=$PWD/$build ;; esac
 export EDGEFLAG=$build/edgeflag
-SHARD=$root/rtl_vectors/regress/ef-regress-shard
-MERGE=$root/rtl_vectors/regress/ef-regress-merge
+SHARD=$root/tools/regress/ef-regress-shard
+MERGE=$root/tools/regress/ef-regress-merge
 pass=0 fail=0
 ok() { pass=$((pass + 1)); echo "ok - $1"; }
 bad() { fail=$((fail + 1)); echo "FAIL - $1${2:+: $2}"; }

@@ -3,9 +3,9 @@
 # block by block, each fed from its upstream interface's expected hex and
 # checked cycle for cycle with `edgeflag check --cycles` on its own output:
 #
-#   DEC   (ef_dec.v)              cmd.stim.hex     -> seg    (tests/rtl/tb_dec.v)
-#   SETUP (ef_setup.v + ef_div.v + ef_slb_ram.v) seg.expected.hex -> et_wr  (tests/rtl/tb_setup.v)
-#   ETM   (ef_etm.v)              et_wr.expected.hex -> et_rd (tests/rtl/tb_etm.v)
+#   DEC   (ef_dec.v)              cmd.stim.hex     -> seg    (dv/tb/tb_dec.v)
+#   SETUP (ef_setup.v + ef_div.v + ef_slb_ram.v) seg.expected.hex -> et_wr  (dv/tb/tb_setup.v)
+#   ETM   (ef_etm.v)              et_wr.expected.hex -> et_rd (dv/tb/tb_etm.v)
 #
 # on two shared SVGs at 40x30 (8/16/32 samples x both rules) and eleven
 # `edgeflag gen` level-1 cases (directed: top/bottom clip, extreme
@@ -13,7 +13,7 @@
 # samples, under Icarus; one SVG configuration under Verilator.  The benches
 # take every bit position from ef_ifaces.vh, which `edgeflag vectors
 # --rtl-headers` writes here first (docs/vectors.md section 8), and the
-# SystemVerilog package is checked by tests/rtl/tb_ifaces_pkg.sv.  Lint:
+# SystemVerilog package is checked by dv/tb/tb_ifaces_pkg.sv.  Lint:
 # verilator --lint-only -Wall and iverilog -g2005 -Wall silent for every
 # block at NS 8/16/32.  Negative control: the divider without its floor
 # correction (-DEF_FAULT_DIV_FLOOR) must fail with the first mismatch on
@@ -21,7 +21,7 @@
 # correction in both lanes; which one shows first depends on the first edge
 # whose remainder needs it).
 
-RTLA=$root/rtl_vectors/rtl
+RTLA=$root/rtl
 A_DEC="$RTLA/ef_dec.v"
 A_SETUP="$RTLA/ef_setup.v $RTLA/ef_div.v $RTLA/ef_slb_ram.v"
 A_ETM="$RTLA/ef_etm.v $RTLA/ef_slb_ram.v"

@@ -1,6 +1,6 @@
 # The vectors in a real hardware flow (issue 5): Icarus and Verilator read
 # every hex file with $readmemh and write it back for `edgeflag check`, and
-# the RTL scanline buffer + filler (rtl_vectors/rtl/ef_slb_fill.v, written
+# the RTL scanline buffer + filler (rtl/ef_slb_fill.v, written
 # from docs/microarch.md) must reproduce the model's spans cycle for cycle.
 #   make test-rtl    tests/rtl/run.sh (skips, saying so, without iverilog)
 .PHONY: test-rtl
@@ -18,4 +18,4 @@ rtl-regress: cli
 	@bash tests/rtl/rtl-regress.sh $(BUILD)
 rtl-synth:
 	@bash tools/install-deps.sh synth
-	@bash tests/rtl/rtl-synth.sh
+	@bash syn/rtl-synth.sh

@@ -15,7 +15,7 @@ build=${1:?usage: tests/rtl/rtl-regress.sh BUILD_DIR}
 root=$(cd "$(dirname "$0")/../.." && pwd)
 case $build in /*) ;; *) build=$PWD/$build ;; esac
 EF=$build/edgeflag
-R=$root/rtl_vectors/rtl
+R=$root/rtl
 RTL="$R/ef_raster.v $R/ef_dec.v $R/ef_setup.v $R/ef_div.v $R/ef_etm.v $R/ef_aet.v $R/ef_plot.v $R/ef_slb_fill.v $R/ef_slb_ram.v $R/ef_cov.v"
 jobs=${EF_RTL_JOBS:-2}
 slice=${EF_RTL_SLICE:-1}
@@ -27,10 +27,10 @@ work=$(mktemp -d "${TMPDIR:-/tmp}/edgeflag-rtlregress.XXXXXX") || exit 1
 for ns in 8 16 32; do
     verilator --binary --timing -O2 -Wno-fatal -Wno-WIDTH --Mdir "$work/vl_$ns" --top-module tb_raster \
         -GNS=$ns -GW_MAX=2048 -GH_MAX=2048 -GE_MAX=8192 -GFB_BITS=20 -GCMD_MAX=1048576 \
-        "$root/tests/rtl/tb_raster.v" $RTL >"$work/build_$ns.log" 2>&1 || { tail "$work/build_$ns.log"; exit 1; }
+        "$root/dv/tb/tb_raster.v" $RTL >"$work/build_$ns.log" 2>&1 || { tail "$work/build_$ns.log"; exit 1; }
     verilator --binary --timing -O2 -Wno-fatal -Wno-WIDTH --Mdir "$work/vlw_$ns" --top-module tb_raster \
         -GNS=$ns -GW_MAX=16384 -GH_MAX=16384 -GE_MAX=8192 -GFB_BITS=21 -GCMD_MAX=1048576 \
-        "$root/tests/rtl/tb_raster.v" $RTL >"$work/buildw_$ns.log" 2>&1 || { tail "$work/buildw_$ns.log"; exit 1; }
+        "$root/dv/tb/tb_raster.v" $RTL >"$work/buildw_$ns.log" 2>&1 || { tail "$work/buildw_$ns.log"; exit 1; }
 done
 "$EF" gen -o "$work/gen" >/dev/null || exit 1
 one() {   # one NAME INPUT NS RULE SIZE

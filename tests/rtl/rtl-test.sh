@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # tests/rtl/rtl-test.sh - the whole pipeline in RTL (issue 18): ef_raster
-# (rtl_vectors/rtl/) turns cmd.stim.hex into pix cycle for cycle, and every
+# (rtl/) turns cmd.stim.hex into pix cycle for cycle, and every
 # internal interface with it, under Icarus and Verilator.
 #
 #   1. lint: verilator --lint-only -Wall of ef_raster at NS 8/16/32 and
@@ -32,8 +32,8 @@ build=${1:?usage: tests/rtl/rtl-test.sh BUILD_DIR}
 root=$(cd "$(dirname "$0")/../.." && pwd)
 case $build in /*) ;; *) build=$PWD/$build ;; esac
 EF=$build/edgeflag
-TB=$root/tests/rtl
-R=$root/rtl_vectors/rtl
+TB=$root/dv/tb
+R=$root/rtl
 RTL="$R/ef_raster.v $R/ef_dec.v $R/ef_setup.v $R/ef_div.v $R/ef_etm.v $R/ef_aet.v $R/ef_plot.v $R/ef_slb_fill.v $R/ef_slb_ram.v $R/ef_cov.v"
 jobs=${EF_RTL_JOBS:-2}
 slice=${EF_RTL_SLICE:-11}

@@ -3,10 +3,10 @@
 # simulators read them, and an RTL block written from docs/microarch.md alone
 # reproduces the model's spans cycle for cycle.
 #
-#   1. lint: `verilator --lint-only -Wall` of rtl_vectors/rtl/ (ef_slb_fill +
+#   1. lint: `verilator --lint-only -Wall` of rtl/ (ef_slb_fill +
 #      ef_slb_ram) at NS = 8, 16, 32 and a small W_MAX must be silent, and
 #      Icarus must compile it as Verilog-2005 without a warning;
-#   2. $readmemh round trip: tests/rtl/tb_readmem.v loads every interface's
+#   2. $readmemh round trip: dv/tb/tb_readmem.v loads every interface's
 #      hex file of a tiger vector set (160x120, 8 samples), and of gen's
 #      empty-scene (every interface but cmd empty), with $readmemh,
 #      checks the header's interface, word width and count against the
@@ -17,9 +17,9 @@
 #      build of tb_readmem_all.v, seven instances); negative controls: a
 #      file with one word dropped, two stamps swapped, or the wrong width
 #      must FAIL the testbench;
-#   3. SLB + FILL in RTL (rtl_vectors/rtl/ef_slb_fill.v) replays
+#   3. SLB + FILL in RTL (rtl/ef_slb_fill.v) replays
 #      plot.expected.hex at the stamped cycles with the canvas width and
-#      rules from cmd.stim.hex, records its spans (tests/rtl/tb_slb_fill.v),
+#      rules from cmd.stim.hex, records its spans (dv/tb/tb_slb_fill.v),
 #      and `edgeflag check span.expected.hex span.actual.hex --cycles` must
 #      pass: the tiger at 160x120 and directed + random `edgeflag gen`
 #      level-1 cases, each at 8/16/32 samples x nonzero/evenodd (and the
@@ -45,8 +45,8 @@ build=${1:?usage: tests/rtl/run.sh BUILD_DIR}
 root=$(cd "$(dirname "$0")/../.." && pwd)
 case $build in /*) ;; *) build=$PWD/$build ;; esac
 EF=$build/edgeflag
-RTL="$root/rtl_vectors/rtl/ef_slb_fill.v $root/rtl_vectors/rtl/ef_slb_ram.v"
-TB=$root/tests/rtl
+RTL="$root/rtl/ef_slb_fill.v $root/rtl/ef_slb_ram.v"
+TB=$root/dv/tb
 jobs=${EF_RTL_JOBS:-$(nproc 2>/dev/null || echo 2)}
 
 if ! command -v iverilog >/dev/null 2>&1 || ! command -v vvp >/dev/null 2>&1; then
@@ -310,10 +310,10 @@ mutant() {
         no-forwarding)
             # The read-first RAM then misses the write made at the same edge.
             sed 's/wire          fwd  = lw_valid \&\&/wire          fwd  = 1'"'"'b0 \&\&/' \
-                "$root/rtl_vectors/rtl/ef_slb_fill.v" >"$d/ef_slb_fill.v"
-            cmp -s "$d/ef_slb_fill.v" "$root/rtl_vectors/rtl/ef_slb_fill.v" &&
+                "$root/rtl/ef_slb_fill.v" >"$d/ef_slb_fill.v"
+            cmp -s "$d/ef_slb_fill.v" "$root/rtl/ef_slb_fill.v" &&
                 { echo "RESULT FAIL mutant $kind: the sed did not apply"; return; }
-            rtl="$d/ef_slb_fill.v $root/rtl_vectors/rtl/ef_slb_ram.v" ;;
+            rtl="$d/ef_slb_fill.v $root/rtl/ef_slb_ram.v" ;;
         cov-lag) lag=1; elastic=1 ;;
     esac
     iverilog -g2005 -o "$d/slb.vvp" -Ptb_slb_fill.NS=8 -Ptb_slb_fill.NPLOT="$np" -Ptb_slb_fill.NCMD="$nc" \
