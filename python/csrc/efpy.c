@@ -4,8 +4,8 @@
  * package should not know (ef_vec_collect, ef_vec_out with its hash state),
  * FILE streams (the writers and the checker print to them), and the sizes of
  * the structures it does declare, so a test can prove its declarations match
- * the headers (python/tests/test_layout.py).  Linked with the vectors and
- * checker library (rtl_vectors/) and the model stream (rtl_vectors/dpi/)
+ * the headers (python/tests/test_api.py).  Linked with the vectors and
+ * checker library (rtl_vectors/) and the model stream (dv/dpi/)
  * into libefpy.so (python/module.mk); docs/python.md.
  */
 #define _GNU_SOURCE /* open_memstream */

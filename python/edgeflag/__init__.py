@@ -285,7 +285,7 @@ class Scene:
 
     def __del__(self):
         s = getattr(self, "_s", None)
-        if s is not None:
+        if s is not None and lib is not None:  # (lib is None at interpreter shutdown)
             lib.ef_scene_free(s)
             self._s = None
 
@@ -766,7 +766,7 @@ class StreamMismatch(AssertionError):
 
 
 class ModelStream:
-    """The model fed one `cmd` word at a time (rtl_vectors/dpi/ef_model_stream.h, docs/dpi.md):
+    """The model fed one `cmd` word at a time (dv/dpi/ef_model_stream.h, docs/dpi.md):
     each interface's expected transactions come out with the reference schedule's cycle stamps.
     `rule` overrides every SHAPE's rule (None: each command's own)."""
 

@@ -1,6 +1,6 @@
 """The C declarations the package uses, copied by hand from the public headers (include/edgeflag/)
 and from rtl_vectors/ (ef_vec.h, ef_vec_read.h, ef_check.h, ef_gen.h, dpi/ef_model_stream.h).
-cffi in ABI mode reads them; tests/test_layout.py compares every structure's size with the C
+cffi in ABI mode reads them; tests/test_api.py compares every structure's size with the C
 compiler's (efpy_sizeof), so a header change that this file misses fails a test, not a user."""
 
 import os
