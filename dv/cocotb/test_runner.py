@@ -41,7 +41,7 @@ def build(sim, ns, define=None, emax=EM):
     key = (sim, ns, define, emax)
     if key in _built:
         return _built[key]
-    d = BUILD / "cocotb" / "sim" / f"{sim}_ns{ns}{'_' + define if define else ''}_e{emax}"
+    d = BUILD / "cocotb" / f"sim-{SET}" / f"{sim}_ns{ns}{'_' + define if define else ''}_e{emax}"
     r = get_runner(sim)
     params = {"NS": ns, "W_MAX": WM, "H_MAX": HM, "E_MAX": emax}
     args = []
