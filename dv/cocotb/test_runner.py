@@ -163,6 +163,7 @@ FAULTS = [  # define, case, interface, a field the fault changes (as tests/rtl/r
 ]
 
 
+@pytest.mark.skipif(SET == "measure", reason="a measurement")
 @pytest.mark.parametrize("define,case,iface,field", FAULTS, ids=[f[0] for f in FAULTS])
 def test_rtl_fault_is_caught(define, case, iface, field, monkeypatch):
     c = dict(case, expect="fail", dump=True, name=f"{define}_{case['name']}")
@@ -177,6 +178,7 @@ def test_rtl_fault_is_caught(define, case, iface, field, monkeypatch):
     assert chk.status == 1 and chk.mismatch_count > 0, chk
 
 
+@pytest.mark.skipif(SET == "measure", reason="a measurement")
 def test_model_side_mismatches_and_nothing_checked(monkeypatch):
     """Three runs that must fail, in one simulation: the model told the wrong rule (the first
     difference is the SHAPE command's rule field `a` on cmd: the model's cmd carries it), the
@@ -209,7 +211,15 @@ def test_regress_level1(ns):
     run("verilator", ns, cases, f"regress_ns{ns}")
 
 
+@pytest.mark.skipif(SET != "measure", reason="dv/cocotb/measure.sh")
+def test_measure():
+    size = [int(v) for v in os.environ.get("EF_MEASURE_SIZE", "64x48").split("x")]
+    c = {"name": "measure", "file": os.environ.get("EF_MEASURE_SVG", str(SVG / "tiger.svg")), "size": size}
+    run("verilator", 8, [c], "measure")
+
+
 # ------------------------------------------------------------------ the report
+@pytest.mark.skipif(SET == "measure", reason="no report for a measurement")
 def test_zz_coverage_report():
     from ef_coverage import load_points
     points = load_points()
@@ -223,7 +233,7 @@ def test_zz_coverage_report():
     lines = [f"edgeflag cocotb coverage ({SET}): {hit} of {len(total)} points hit "
              f"({100.0 * hit / len(total):.1f} %), over {len(runs)} simulation runs"]
     for name, sec, _ in points:
-        lines.append(f"  {'HIT ' if total[name] else 'hole'} {total[name]:>9}  {name}  (spec {sec})")
+        lines.append(f"  {'HIT ' if total[name] else 'hole'} {total[name]:>9}  {name}  ({sec})")
     speed = {}
     for f in sorted(OUT.glob("*.summary.json")):
         s = json.loads(f.read_text())
