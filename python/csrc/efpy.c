@@ -110,8 +110,8 @@ EFPY_API void efpy_free(void *p) { free(p); }
  * a name not listed. */
 EFPY_API size_t efpy_sizeof(const char *name)
 {
-#define S(T)                                                                                                           \
-    if (strcmp(name, #T) == 0)                                                                                         \
+#define S(T) \
+    if (strcmp(name, #T) == 0) \
     return sizeof(T)
     S(ef_point);
     S(ef_polygon);
