@@ -71,6 +71,7 @@ include proto/module.mk
 include board/module.mk
 include board/soc.mk
 include host/module.mk
+include python/module.mk
 include tests/module.mk
 include bench/module.mk
 
