@@ -50,7 +50,7 @@ bitstream: $(BOARD_TOOLS)
 BOARD_SIM_VFLAGS := --cc --exe --build -j 2 -O2 --x-assign fast --x-initial fast --no-assert -Wno-fatal \
                     -Wno-lint -Wno-style -Wno-MULTIDRIVEN -Wno-UNOPTFLAT -Wno-COMBDLY -Wno-TIMESCALEMOD \
                     --top-module sim
-$(BOARD_SIM_DIR)/gateware/sim.v: $(BOARD_SIM_DIR)/firmware.bin
+$(BOARD_SIM_DIR)/gateware/sim.v: $(BOARD_SIM_DIR)/firmware.bin $(BOARD_SOC_SRC)
 	$(EF_VENV_PY) board/soc/soc.py --target sim --ns $(BOARD_NS) --out $(BOARD_SIM_DIR) \
 	    --rom $(BOARD_SIM_DIR)/firmware.bin >$(BOARD_SIM_DIR)/gateware.log 2>&1 || \
 	    { tail -n 20 $(BOARD_SIM_DIR)/gateware.log; exit 1; }
