@@ -8,7 +8,8 @@
 #   make rtl-coverage    the full code coverage (rtl-test's cases + the level-1 regression at
 #                        8/16/32 x 3 rules), HTML in build/rtl-coverage/html; targets required
 #   make rtl-mutants     the mutation run over rtl/ (EF_MUT_SAMPLE, EF_MUT_SEED: see the script)
-.PHONY: test-coverage test-fusesoc test-rtl-cov rtl-coverage rtl-mutants
+#   make c-mutants       mutants of board/ef_board.c and host/host_link.c against make test-host
+.PHONY: test-coverage test-fusesoc test-rtl-cov rtl-coverage rtl-mutants c-mutants
 test-coverage: cli
 	@bash tests/cov/run.sh $(BUILD)
 test-fusesoc: cli
@@ -21,3 +22,5 @@ rtl-coverage: cli
 	@EF_COV_REQUIRE=1 bash tests/cov/rtl-coverage.sh $(BUILD)
 rtl-mutants: cli
 	@bash tests/mutants/rtl-mutants.sh $(BUILD)
+c-mutants: cli host
+	@bash tests/mutants/c-mutants.sh $(BUILD)
