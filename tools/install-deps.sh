@@ -4,6 +4,7 @@
 #   tools/install-deps.sh test     + cmocka, clang, 32-bit multilib, Icarus, Verilator, GTKWave (the
 #                                  test suite), and the
 #                                  aarch64/s390x cross C libraries and qemu-user (best effort)
+#                                  lcov (genhtml: make rtl-coverage's report),
 #   tools/install-deps.sh portability   the same (what `make portability` needs)
 #   tools/install-deps.sh bench    + the peers and plotting for `make bench` (bench/README.md)
 #   tools/install-deps.sh synth    + Yosys, nextpnr-ice40 and icestorm for `make rtl-synth` (docs/synthesis.md)
@@ -34,6 +35,8 @@ if [ "${1:-}" = test ] || [ "${1:-}" = portability ]; then
     pkgs+=(python3)
     # test-dpi runs the DPI-C lockstep bench once under valgrind's memcheck (docs/dpi.md)
     pkgs+=(valgrind)
+    # make rtl-coverage and its slice in make test: verilator_coverage's lcov output to HTML (genhtml)
+    pkgs+=(lcov)
     # `make portability` builds static aarch64 and s390x (big-endian) programs
     # with clang --target and runs them under qemu-user.  gcc-aarch64-linux-gnu
     # cannot be installed beside gcc-multilib in Debian 12; these can.  Best
