@@ -8,7 +8,10 @@
 #   2. verify of a bundled SVG at a small canvas in full-record mode: PASS cycle-exact on every
 #      interface the board returns (seg, et_wr, et_rd, plot, span, pix);
 #   3. the same in digest mode, when edgeflag-host has one (else said: SKIP, not counted);
-#   4. a planted firmware fault (dut_soc.c built with EF_SOC_FAULT_PIX: one pix record's alpha
+#   4. faults on the wire (serial only: tests/host/ptyboard as a relay in front of the board's
+#      pty): a bit flipped on the way to the board, a byte to the host dropped and another
+#      duplicated, in one run: recovered (exit 0), results byte-identical to run 2's;
+#   5. a planted firmware fault (dut_soc.c built with EF_SOC_FAULT_PIX: one pix record's alpha
 #      changed on its way to the engine), in the same simulated SoC's ROM: verify exits 1 and names
 #      pix, nothing else.
 # usage: bash tests/board/soc_sim.sh SIM_DIR   (`make board-sim-test`: SIM_DIR is
@@ -72,7 +75,7 @@ full=()
 "$H" --help 2>&1 | grep -q -- '--digest' && full=(--digest off)
 
 # ---------------------------------------------------------------- vectors
-svg=stress_pixi_figure8.svg size=48x32
+svg=stress_pixi_fill_rule_star_nonzero.svg size=32x32
 if ! "$E" vectors "$SVG/$svg" -o "$tmp/v" --size $size --samples 8 >"$tmp/vec.log" 2>&1; then
     cat "$tmp/vec.log"; bad "edgeflag vectors $svg"; finish
 fi
@@ -121,7 +124,33 @@ else
     echo "SKIP - digest mode: this edgeflag-host has no --digest yet (not counted)"
 fi
 
-# ---------------------------------------------------------------- 4. a firmware fault
+# ---------------------------------------------------------------- 4. faults on the wire
+PB=$build/tests/host/ptyboard
+if [ $mode = serial ] && [ -x "$PB" ]; then
+    start_board "$sim/gateware" || { bad "the simulated board did not come up"; finish; }
+    "$PB" --to "$(cat "$tmp/pty")" --link "$tmp/tty" --faults flip=300,drop-down=4000,dup-down=8000 \
+        >"$tmp/relay.out" 2>"$tmp/relay.err" &
+    rpid=$!
+    for _ in $(seq 100); do [ -s "$tmp/relay.out" ] && break; sleep 0.1; done
+    t0=$(date +%s%N)
+    "$H" verify "$tmp/v/vectors.bin" --transport serial --port "$tmp/tty" --timeout 30000 "${full[@]}" \
+        --results "$tmp/wire" >"$tmp/wire.out" 2>&1
+    rc=$?
+    ms=$((($(date +%s%N) - t0) / 1000000))
+    kill "$rpid" 2>/dev/null
+    wait "$rpid" 2>/dev/null
+    if [ $rc = 0 ] && grep -q 'edgeflag check: PASS' "$tmp/wire.out" &&
+       cmp -s "$tmp/wire/vectors.actual.bin" "$tmp/full/vectors.actual.bin"; then
+        ok "wire faults (a bit flipped to the board, a byte to the host dropped, one duplicated): PASS, results identical ($ms ms)"
+    else
+        bad "wire faults" "exit $rc; $(tail -n 6 "$tmp/wire.out")"
+    fi
+    stop_board
+else
+    echo "SKIP - wire faults: need the serial transport and tests/host/ptyboard (not counted)"
+fi
+
+# ---------------------------------------------------------------- 5. a firmware fault
 # the faulty firmware in a copy of the gateware folder's memory images (the ROM is $readmemh'd)
 fdir=$tmp/fault-gw
 mkdir -p "$fdir"
