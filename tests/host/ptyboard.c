@@ -40,8 +40,8 @@
 #include "ef_frame.h"
 
 enum { F_FLIP, F_DROP, F_DUP, F_FLIP_DOWN, F_DROP_DOWN, F_DUP_DOWN, F_STALL, F_UNPLUG, F_RESET, F_KINDS };
-static const char *const KIND[F_KINDS] = { "flip",      "drop",  "dup",    "flip-down", "drop-down",
-                                           "dup-down",  "stall", "unplug", "reset" };
+static const char *const KIND[F_KINDS] = { "flip",     "drop",  "dup",    "flip-down", "drop-down",
+                                           "dup-down", "stall", "unplug", "reset" };
 static unsigned long long fault_at[F_KINDS];
 
 static volatile sig_atomic_t stop;
