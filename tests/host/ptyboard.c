@@ -291,7 +291,7 @@ int main(int argc, char **argv)
                 ef_board_rx(b, up.b + up.head, up.len);
                 q_drop(&up, up.len);
                 last_rx = t;
-            } else if (t - last_rx > 0.05) { /* a line idle for 50 ms: no frame is still coming */
+            } else if (t - last_rx > 0.25) { /* a line idle for 250 ms: no frame is still coming */
                 ef_board_rx_idle(b);
                 last_rx = t;
             }
