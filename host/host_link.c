@@ -566,6 +566,10 @@ static int load_digests(hl *h, digests *g)
     for (size_t o = 0; o + EF_PROTO_DIGEST_LEN <= n && !code; o += EF_PROTO_DIGEST_LEN) {
         const unsigned i = p[o];
         const uint32_t w = ef_get32(p + o + 2);
+        if (w >= n / EF_PROTO_DIGEST_LEN) { /* windows are numbered from 0 without a gap */
+            code = fail(h, EF_HX_BOARD, "the board's digests of %s skip windows", ef_iface_get((int)i)->name);
+            break;
+        }
         if (w >= g->nw[i]) {
             const uint64_t cap = w + 1 > 2 * g->nw[i] ? (uint64_t)w + 1 : 2 * g->nw[i];
             dwin *t = realloc(g->w[i], cap * sizeof *t);
