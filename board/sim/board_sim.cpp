@@ -16,8 +16,8 @@
 //             [--max-seconds S] [--quiet]
 //
 // --dir: where the memory images (sim_rom.init, ...) are.  With --pty-link
-// the pseudo-terminal's name (/dev/pts/N) is written into FILE (and on
-// stdout); with --listen the board listens on the unix socket PATH instead
+// the pseudo-terminal's name (/dev/pts/N) is written into FILE; it is always
+// the first line of the standard output; with --listen the board listens on the unix socket PATH instead
 // (one host at a time; a host's disconnection keeps the board's run, as a
 // powered board keeps it).  On SIGTERM or SIGINT, or after --max-seconds of
 // wall time, it prints the cycles simulated and the bytes moved, and exits 0.
@@ -115,7 +115,7 @@ int main(int argc, char **argv)
             }
             close(sfd);
         }
-        std::printf("board_sim: pty %s\n", name);
+        std::printf("%s\n", name); // the path alone on the first line (tests/host/serial.sh reads it)
         if (pty_link) {
             std::string tmp = std::string(pty_link) + ".tmp";
             FILE *f = std::fopen(tmp.c_str(), "w");
