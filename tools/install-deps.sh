@@ -13,6 +13,7 @@
 #                                  ULX3S board's firmware, SoC and simulation (docs/board-ulx3s.md);
 #                                  the FPGA tools and LiteX come from PyPI (tools/install-venv.sh fpga soc)
 #   tools/install-deps.sh farm     + GNU parallel, Slurm and munge for `make farm-test` (docs/regress.md)
+#   tools/install-deps.sh loaded   + stress-ng for `make test-host-loaded` (docs/testing.md)
 set -euo pipefail
 
 pkgs=(gcc make pkg-config libexpat1-dev libpng-dev nettle-dev libjson-c-dev zlib1g-dev)
@@ -46,6 +47,10 @@ if [ "${1:-}" = test ] || [ "${1:-}" = portability ]; then
 fi
 if [ "${1:-}" = farm ]; then
     pkgs+=(parallel libxml2-utils slurm-wlm munge)
+fi
+if [ "${1:-}" = loaded ]; then
+    # make test-host-loaded: the host stages again and again with both cores kept busy
+    pkgs+=(stress-ng)
 fi
 if [ "${1:-}" = synth ]; then
     # make rtl-synth (docs/synthesis.md): Yosys synth_ice40, nextpnr-ice40 and its chip database

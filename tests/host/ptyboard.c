@@ -40,8 +40,8 @@
 #include "ef_frame.h"
 
 enum { F_FLIP, F_DROP, F_DUP, F_FLIP_DOWN, F_DROP_DOWN, F_DUP_DOWN, F_STALL, F_UNPLUG, F_RESET, F_KINDS };
-static const char *const KIND[F_KINDS] = { "flip",      "drop",  "dup",    "flip-down", "drop-down",
-                                           "dup-down",  "stall", "unplug", "reset" };
+static const char *const KIND[F_KINDS] = { "flip",     "drop",  "dup",    "flip-down", "drop-down",
+                                           "dup-down", "stall", "unplug", "reset" };
 static unsigned long long fault_at[F_KINDS];
 
 static volatile sig_atomic_t stop;
@@ -291,7 +291,7 @@ int main(int argc, char **argv)
                 ef_board_rx(b, up.b + up.head, up.len);
                 q_drop(&up, up.len);
                 last_rx = t;
-            } else if (t - last_rx > 0.05) { /* a line idle for 50 ms: no frame is still coming */
+            } else if (t - last_rx > 0.25) { /* a line idle for 250 ms: no frame is still coming */
                 ef_board_rx_idle(b);
                 last_rx = t;
             }
