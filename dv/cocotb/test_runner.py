@@ -236,6 +236,39 @@ def test_measure():
     run("verilator", 8, [c], "measure")
 
 
+@pytest.mark.skipif(SET == "measure", reason="a measurement")
+def test_coverage_model_agrees_with_edgeflag_coverage(tmp_path):
+    """One coverage model: the bench's (ef_coverage.py, fed the model's transactions in cycle order,
+    as its monitors see them from a DUT that passes) and `edgeflag coverage`'s (cli/cmd_coverage.c,
+    issue 27) give the same count for every point of points.tsv on the same vectors."""
+    from ef_coverage import CoverageModel
+    runs = [(ef.Scene.load(SVG / f"{f}.svg", fit=(24, 18)), n, r) for f, n, r in
+            [("lion", 8, None), ("tiger", 16, "evenodd"), ("stress_pixi_fill_rule_star_nonzero", 32, "nonzero"),
+             ("antiloop2", 8, None)]]
+    runs += [(c.scene, n, None) for c in ef.gen_cases(level=1, select=[0, 17, 22, 35, 36, 44, 47, 52, 74])
+             for n in (8, 32)]
+    compared = 0
+    for k, (scene, n, rule) in enumerate(runs):
+        tr = ef.trace(scene, samples=n, rule=rule)
+        d = tmp_path / str(k)
+        tr.write(d, formats=("hex",))
+        cm = CoverageModel(n, EM)
+        for t in tr.merged():
+            cm(t)
+        p = subprocess.run([str(BUILD / "edgeflag"), "coverage", str(d)], capture_output=True, text=True)
+        assert p.returncode == 0, p.stderr
+        theirs = {}
+        for ln in p.stdout.splitlines():
+            f = ln.split()
+            if len(f) >= 3 and f[1] in cm.hits:
+                theirs[f[1]] = int(f[2])
+        assert set(theirs) == set(cm.hits), "the two tools list different points"
+        diff = {x: (cm.hits[x], theirs[x]) for x in cm.hits if cm.hits[x] != theirs[x]}
+        assert not diff, f"run {k} (NS {n}): bench vs edgeflag coverage: {diff}"
+        compared += sum(1 for v in theirs.values() if v)
+    assert compared > 100
+
+
 # ------------------------------------------------------------------ the report
 @pytest.mark.skipif(SET == "measure", reason="no report for a measurement")
 def test_zz_coverage_report():
