@@ -122,9 +122,7 @@ ef_status ef_edges_setup(ef_ctx *ctx, const ef_polygon *poly, int32_t *row_min, 
                        0,
                        ctx->h,
                        ctx->c,
-                       ctx->samples == 8    ? 5u
-                       : ctx->samples == 16 ? 4u
-                                            : 3u,
+                       8u - ef_samples_log2(ctx->samples),
                        ctx->samples * ctx->height - 1,
                        INT32_MAX,
                        -1 };
