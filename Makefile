@@ -69,7 +69,9 @@ include dv/dpi/module.mk
 include cli/module.mk
 include proto/module.mk
 include board/module.mk
+include board/soc.mk
 include host/module.mk
+include python/module.mk
 include tests/module.mk
 include bench/module.mk
 

@@ -8,6 +8,9 @@
 #   tools/install-deps.sh bench    + the peers and plotting for `make bench` (bench/README.md)
 #   tools/install-deps.sh synth    + Yosys, nextpnr-ice40 and icestorm for `make rtl-synth` (docs/synthesis.md)
 #   tools/install-deps.sh venv     + python3-venv for tools/install-venv.sh (PyPI tools in build/venv)
+#   tools/install-deps.sh board    + the RISC-V cross compiler, picolibc, Verilator and python3-venv for the
+#                                  ULX3S board's firmware, SoC and simulation (docs/board-ulx3s.md);
+#                                  the FPGA tools and LiteX come from PyPI (tools/install-venv.sh fpga soc)
 #   tools/install-deps.sh farm     + GNU parallel, Slurm and munge for `make farm-test` (docs/regress.md)
 set -euo pipefail
 
@@ -44,6 +47,10 @@ fi
 if [ "${1:-}" = synth ]; then
     # make rtl-synth (docs/synthesis.md): Yosys synth_ice40, nextpnr-ice40 and its chip database
     pkgs+=(yosys nextpnr-ice40 fpga-icestorm)
+fi
+if [ "${1:-}" = board ]; then
+    # board/firmware (ef_board.c as the SoC's firmware), board/sim (the SoC under Verilator), the venv
+    pkgs+=(gcc-riscv64-unknown-elf picolibc-riscv64-unknown-elf verilator g++ python3-venv python3-pip)
 fi
 if [ "${1:-}" = venv ]; then
     # tools/install-venv.sh: Python's venv module and pip (the PyPI tools live in build/venv)

@@ -1,0 +1,144 @@
+#!/usr/bin/env bash
+# tests/board/soc_sim.sh - the whole ULX3S board simulated (docs/board-ulx3s.md, "The board
+# simulated"): the SoC's Verilog (VexRiscv running board/ef_board.c as its firmware, ef_raster,
+# its frame memory, the UART) in Verilator (board/sim/board_sim.cpp), its UART behind a
+# pseudo-terminal when edgeflag-host has the serial transport (else a unix socket and the socket
+# transport: the same bytes), driven by the unmodified edgeflag-host:
+#   1. identify: the board's true limits (W_MAX, H_MAX, E_MAX, samples, interfaces, serial);
+#   2. verify of a bundled SVG at a small canvas in full-record mode: PASS cycle-exact on every
+#      interface the board returns (seg, et_wr, et_rd, plot, span, pix);
+#   3. the same in digest mode, when edgeflag-host has one (else said: SKIP, not counted);
+#   4. a planted firmware fault (dut_soc.c built with EF_SOC_FAULT_PIX: one pix record's alpha
+#      changed on its way to the engine), in the same simulated SoC's ROM: verify exits 1 and names
+#      pix, nothing else.
+# usage: bash tests/board/soc_sim.sh SIM_DIR   (`make board-sim-test`: SIM_DIR is
+#        build/board/sim-ns8, built by `make board-sim`)
+# Ends with "N passed, M failed"; exit status 0 only if nothing failed.
+set -u
+export LC_ALL=C
+sim=${1:?usage: tests/board/soc_sim.sh SIM_DIR}
+root=$(cd "$(dirname "$0")/../.." && pwd)
+case $sim in /*) ;; *) sim=$root/$sim ;; esac
+build=${EF_BUILD:-$root/build}
+E=$build/edgeflag H=$build/edgeflag-host BS=$sim/obj/board_sim
+SVG=$root/tests/data/svg
+pass=0 fail=0
+ok() { pass=$((pass + 1)); echo "ok - $1"; }
+bad() { fail=$((fail + 1)); echo "FAIL - $1${2:+: $2}"; }
+finish() { echo "$pass passed, $fail failed"; [ "$fail" -eq 0 ]; exit $?; }
+for f in "$E" "$H" "$BS" "$sim/firmware.elf"; do
+    [ -e "$f" ] || { bad "missing $f (make board-sim builds it)"; finish; }
+done
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/edgeflag-socsim.XXXXXX") || exit 1
+chmod 700 "$tmp"
+bpid=
+stop_board() {
+    if [ -n "$bpid" ]; then
+        kill "$bpid" 2>/dev/null
+        wait "$bpid" 2>/dev/null
+        bpid=
+    fi
+}
+trap 'stop_board; rm -rf "$tmp"' EXIT
+
+# The serial transport when this edgeflag-host has it (the pty), else the socket one.
+if "$H" --help 2>&1 | grep -q -- '--transport.*serial\|serial.*--port'; then
+    mode=serial
+else
+    mode=socket
+fi
+# start_board GATEWARE_DIR: the simulated board, its link in $link (LINK OPTIONS in ${L[@]})
+start_board() {
+    stop_board
+    rm -f "$tmp/pty" "$tmp/sock"
+    if [ $mode = serial ]; then
+        "$BS" --dir "$1" --pty-link "$tmp/pty" --baud 0 >"$tmp/board.log" 2>&1 &
+        bpid=$!
+        for _ in $(seq 100); do [ -s "$tmp/pty" ] && break; sleep 0.1; done
+        [ -s "$tmp/pty" ] || return 1
+        L=(--transport serial --port "$(cat "$tmp/pty")")
+    else
+        "$BS" --dir "$1" --listen "$tmp/sock" --baud 0 >"$tmp/board.log" 2>&1 &
+        bpid=$!
+        for _ in $(seq 100); do [ -S "$tmp/sock" ] && break; sleep 0.1; done
+        [ -S "$tmp/sock" ] || return 1
+        L=(--transport socket --connect "unix:$tmp/sock")
+    fi
+    L+=(--timeout 30000)
+}
+echo "test: the simulated board over the $mode transport"
+
+# ---------------------------------------------------------------- vectors
+svg=stress_pixi_figure8.svg size=48x32
+if ! "$E" vectors "$SVG/$svg" -o "$tmp/v" --size $size --samples 8 >"$tmp/vec.log" 2>&1; then
+    cat "$tmp/vec.log"; bad "edgeflag vectors $svg"; finish
+fi
+
+# ---------------------------------------------------------------- 1. identify
+start_board "$sim/gateware" || { bad "the simulated board did not come up"; cat "$tmp/board.log"; finish; }
+if [ $mode = serial ]; then addr=$(cat "$tmp/pty"); else addr=unix:$tmp/sock; fi
+python3 "$root/tests/board/identify.py" "$addr" >"$tmp/id.out" 2>&1
+rc=$?
+soc=$sim/software/include/generated/soc.h
+def() { sed -n "s/^#define $1 //p" "$soc"; }
+want="version 1|window 16|capabilities 7|interfaces 0x7f|samples $(def EF_NS)|width_max $(def EF_W_MAX)"
+want="$want|height_max $(def EF_H_MAX)|edges_max $(def EF_E_MAX)|serial EFULX3S-0001"
+got=$(tr '\n' '|' <"$tmp/id.out" | sed 's/|$//')
+if [ $rc = 0 ] && [ "$got" = "$want" ]; then
+    ok "identify from the simulated board's firmware: $got"
+else
+    bad "identify" "exit $rc: got '$got', want '$want'"
+fi
+
+# ---------------------------------------------------------------- 2. verify, full records
+t0=$(date +%s%N)
+"$H" verify "$tmp/v/vectors.bin" "${L[@]}" --results "$tmp/full" >"$tmp/full.out" 2>&1
+rc=$?
+ms=$((($(date +%s%N) - t0) / 1000000))
+if [ $rc = 0 ] && grep -q 'edgeflag check: PASS: 6 comparisons.*cycle-exact' "$tmp/full.out"; then
+    ok "verify $svg at $size, NS 8, full records: $(sed -n 's/.*PASS: //p' "$tmp/full.out") ($ms ms)"
+else
+    bad "verify $svg at $size, full records" "exit $rc; $(tail -n 12 "$tmp/full.out")"
+fi
+stop_board
+sed 's/^/    /' "$tmp/board.log"
+
+# ---------------------------------------------------------------- 3. digest mode
+if "$H" --help 2>&1 | grep -q -- '--digest'; then
+    start_board "$sim/gateware" || { bad "the simulated board did not come up"; finish; }
+    "$H" verify "$tmp/v/vectors.bin" "${L[@]}" --digest --results "$tmp/dig" >"$tmp/dig.out" 2>&1
+    rc=$?
+    if [ $rc = 0 ] && grep -q 'edgeflag check: PASS' "$tmp/dig.out"; then
+        ok "verify in digest mode: PASS"
+    else
+        bad "verify in digest mode" "exit $rc; $(tail -n 8 "$tmp/dig.out")"
+    fi
+    stop_board
+else
+    echo "SKIP - digest mode: this edgeflag-host has no --digest yet (not counted)"
+fi
+
+# ---------------------------------------------------------------- 4. a firmware fault
+# the faulty firmware in a copy of the gateware folder's memory images (the ROM is $readmemh'd)
+fdir=$tmp/fault-gw
+mkdir -p "$fdir"
+cp "$sim"/gateware/*.init "$fdir/"
+if make -C "$root" --no-print-directory -f board/firmware/firmware.mk FW_SOC="$sim" FW_OUT="$tmp/fault" \
+        FW_EXTRA=-DEF_SOC_FAULT_PIX EF_VENV_PY="$root/build/venv/bin/python" "$tmp/fault.bin" \
+        >"$tmp/fault-build.log" 2>&1 &&
+   od -An -v -tx4 -w4 "$tmp/fault.bin" | tr -d ' ' >"$fdir/sim_rom.init"; then
+    start_board "$fdir" || { bad "the simulated board (faulty firmware) did not come up"; finish; }
+    "$H" verify "$tmp/v/vectors.bin" "${L[@]}" --results "$tmp/fault-res" >"$tmp/fault.out" 2>&1
+    rc=$?
+    nm=$(sed -n 's/^edgeflag check: pix: .*, \([0-9]*\) mismatch.*/\1/p' "$tmp/fault.out" | head -n 1)
+    others=$(grep -E '^edgeflag check: (seg|et_wr|et_rd|plot|span): ' "$tmp/fault.out" | grep -vc ' 0 mismatches')
+    if [ $rc = 1 ] && [ "${nm:-0}" -ge 1 ] && [ "$others" = 0 ]; then
+        ok "a planted firmware fault (EF_SOC_FAULT_PIX) is caught: exit 1, $nm pix mismatch(es), none elsewhere"
+    else
+        bad "the planted firmware fault" "exit $rc, pix mismatches '${nm}', other interfaces differing $others; $(tail -n 8 "$tmp/fault.out")"
+    fi
+    stop_board
+else
+    tail -n 20 "$tmp/fault-build.log"; bad "build the faulty firmware"
+fi
+finish
