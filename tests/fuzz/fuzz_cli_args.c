@@ -175,7 +175,8 @@ static void check_patterns(int argc, char **argv)
         FAIL("patterns: exit code %d", rc);
     if (rc != -1)
         return;
-    static const char *const p_valued[] = { "--samples", NULL }, *const p_flags[] = { "--emit-c", "--emit-verilog", NULL };
+    static const char *const p_valued[] = { "--samples", NULL }, *const p_flags[] = { "--emit-c", "--emit-verilog",
+                                                                                      NULL };
     if (!ref_full_names(argc, argv, p_valued, p_flags, false))
         FAIL("patterns: accepted a word that is no option");
     if (!(a.samples == 0 || ef_samples_valid(a.samples)))
