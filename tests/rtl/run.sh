@@ -336,7 +336,7 @@ submit mutant_no_forwarding mutant no-forwarding
 submit mutant_cov_lag mutant cov-lag
 
 # 5. DEC, SETUP (+ divider) and ETM in RTL, block by block (tests/rtl/blocks_a.sh)
-. "$TB/blocks_a.sh"
+. "$root/tests/rtl/blocks_a.sh"
 
 collect
 # What the RTL runs exercised, summed over every tb_slb_fill run above.
