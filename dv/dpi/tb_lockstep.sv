@@ -379,6 +379,10 @@ module tb_lockstep #(
             stim_line.push_back(line);
         end
         $fclose(fd);
+        if (stim.size() == 0) begin
+            $display("tb_lockstep: FAIL %s holds no command", name);
+            $fatal(1, "tb_lockstep: no stimulus");
+        end
     endfunction
 
     initial begin

@@ -234,6 +234,23 @@ if vl ns8; then
     else
         cat "$work/back.sim"; bad "lockstep back: want cmd.stim.hex:7 refused"
     fi
+    # No input: no +cmd, a missing file, a file without a command: each a FAIL line and a
+    # non-zero exit, nothing simulated.
+    mkdir -p "$work/noin"; printf '// no command\n' >"$work/noin/cmd.stim.hex"
+    x_ok=1 x_msg=
+    for k in nocmd missing empty; do
+        case $k in
+            nocmd)   a=(); want="tb_lockstep: FAIL no +cmd=FILE" ;;
+            missing) a=(+cmd="$work/noin/no-such.hex"); want="tb_lockstep: FAIL cannot open $work/noin/no-such.hex" ;;
+            empty)   a=(+cmd="$work/noin/cmd.stim.hex"); want="tb_lockstep: FAIL $work/noin/cmd.stim.hex holds no command" ;;
+        esac
+        ( "$work/vl_ns8/obj/tb" "${a[@]}" >"$work/noin/$k.sim" 2>&1; echo $? >"$work/noin/$k.rc" ) 2>/dev/null
+        if [ "$(cat "$work/noin/$k.rc")" = 0 ] || ! grep -qF "$want" "$work/noin/$k.sim"; then
+            x_ok=0; cat "$work/noin/$k.sim"; bad "lockstep $k: want '$want' and a non-zero exit (exit $(cat "$work/noin/$k.rc"))"
+        fi
+        x_msg="$x_msg $k exit $(cat "$work/noin/$k.rc");"
+    done
+    [ $x_ok = 1 ] && ok "lockstep without input (no +cmd, a missing file, no command in it) fails with its line:$x_msg"
 fi
 if vl ns32; then
     run ns32 gen32 "$work/g32";             pass_run gen32 "$work/g32"

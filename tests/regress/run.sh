@@ -110,9 +110,11 @@ parallel --halt never -j2 "$SHARD" --out L --shard {}/4 --dut-limits 64x64 --dut
 lprc=$?
 "$MERGE" L >lmerge.out 2>&1
 lmrc=$?
-nref=$(cat L/shard_*_of_4/cases.tsv | grep -c '	refused	refused before simulation: ')
-ncanvas=$(cat L/shard_*_of_4/cases.tsv | grep -c '	refused	refused before simulation: canvas [0-9]*x[0-9]* over the DUT.s 64x64')
-nedges=$(cat L/shard_*_of_4/cases.tsv | grep -c '	refused	refused before simulation: a shape of [0-9]* edges over the DUT.s 200')
+# cases.tsv: case samples rule seed verdict seconds first
+refs() { cat L/shard_*_of_4/cases.tsv | awk -F'\t' -v re="$1" '$5 == "refused" && $7 ~ re { n++ } END { print n + 0 }'; }
+nref=$(refs '^refused before simulation: ')
+ncanvas=$(refs "^refused before simulation: canvas [0-9]+x[0-9]+ over the DUT's 64x64\$")
+nedges=$(refs "^refused before simulation: a shape of [0-9]+ edges over the DUT's 200\$")
 if [ $lprc = 0 ] && [ $lmrc = 0 ] && [ "$nref" -gt 0 ] && [ "$ncanvas" -gt 0 ] && [ "$nedges" -gt 0 ] &&
     grep -q "^runs: $ncases in 4 of 4 shards; failed: 0; refused (do not fit the DUT, not failures): $nref;" L/merged/summary.txt &&
     grep -q '^REFUSED runs' L/merged/summary.txt && grep -q '^RESULT: PASS' L/merged/summary.txt &&
@@ -124,7 +126,8 @@ fi
 # A DUT that refuses a case itself (exit non-zero with its REFUSED line): refused, its own words quoted.
 "$SHARD" --out D --shard 9/130 --run 'echo "tb_raster: REFUSED cmd.stim.hex:5: FRAME canvas over the hardware W_MAX x H_MAX"; exit 1' >d.log 2>&1
 drc=$?
-nd=$(grep -c '	refused	the DUT refused it: tb_raster: REFUSED cmd.stim.hex:5: FRAME canvas over' D/shard_9_of_130/cases.tsv)
+nd=$(awk -F'\t' '$5 == "refused" && index($7, "the DUT refused it: tb_raster: REFUSED cmd.stim.hex:5: FRAME canvas over") == 1 { n++ }
+              END { print n + 0 }' D/shard_9_of_130/cases.tsv)
 nr=$(grep -c '^[0-9]' D/shard_9_of_130/cases.tsv)
 if [ $drc = 0 ] && [ "$nd" = "$nr" ] && [ "$nr" -gt 0 ] && grep -q "^refused	$nr$" D/shard_9_of_130/shard.meta; then
     ok "a DUT that refuses a case itself: refused ($nd runs), quoting its REFUSED line, not a failure (exit 0)"
