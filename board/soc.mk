@@ -50,7 +50,9 @@ bitstream: $(BOARD_TOOLS)
 BOARD_SIM_VFLAGS := --cc --exe --build -j 2 -O2 --x-assign fast --x-initial fast --no-assert -Wno-fatal \
                     -Wno-lint -Wno-style -Wno-MULTIDRIVEN -Wno-UNOPTFLAT -Wno-COMBDLY -Wno-TIMESCALEMOD \
                     --top-module sim -I$(abspath rtl)
-$(BOARD_SIM_DIR)/gateware/sim.v: $(BOARD_SIM_DIR)/firmware.bin $(BOARD_SOC_SRC)
+# The ROM is $$readmemh'd from gateware/sim_rom.init when the model starts: a new firmware
+# rewrites that image and needs no new model.
+$(BOARD_SIM_DIR)/gateware/sim.v: $(BOARD_SOC_SRC) | $(BOARD_SIM_DIR)/firmware.bin
 	$(EF_VENV_PY) board/soc/soc.py --target sim --ns $(BOARD_NS) --out $(BOARD_SIM_DIR) \
 	    --rom $(BOARD_SIM_DIR)/firmware.bin >$(BOARD_SIM_DIR)/gateware.log 2>&1 || \
 	    { tail -n 20 $(BOARD_SIM_DIR)/gateware.log; exit 1; }
@@ -59,8 +61,11 @@ $(BOARD_SIM_DIR)/obj/board_sim: $(BOARD_SIM_DIR)/gateware/sim.v board/sim/board_
 	    $$(cat $(BOARD_SIM_DIR)/gateware/sources.txt) $(BOARD_SIM_DIR)/gateware/sim.v \
 	    $(abspath board/sim/board_sim.cpp) -CFLAGS -O2 >$(BOARD_SIM_DIR)/verilate.log 2>&1 || \
 	    { tail -n 30 $(BOARD_SIM_DIR)/verilate.log; exit 1; }
+$(BOARD_SIM_DIR)/gateware/sim_rom.init: $(BOARD_SIM_DIR)/firmware.bin $(BOARD_SIM_DIR)/gateware/sim.v
+	od -An -v -tx4 -w4 $< | tr -d ' ' >$@.tmp && mv $@.tmp $@
 board-sim: $(BOARD_TOOLS)
-	$(MAKE) --no-print-directory $(BOARD_SIM_DIR)/obj/board_sim FW_SOC=$(BOARD_SIM_DIR) BOARD=sim
+	$(MAKE) --no-print-directory $(BOARD_SIM_DIR)/obj/board_sim $(BOARD_SIM_DIR)/gateware/sim_rom.init \
+	    FW_SOC=$(BOARD_SIM_DIR) BOARD=sim
 	@echo "board-sim: $(BOARD_SIM_DIR)/obj/board_sim --dir $(BOARD_SIM_DIR)/gateware"
 
 board-sim-test: all board-sim

@@ -4,7 +4,9 @@
  * peripheral (dut_soc.c).  One loop: bytes the UART received go to
  * ef_board_rx(), the records the peripheral made to the engine, the engine's
  * bytes for the host to the UART.  Control requests travel in the byte
- * stream (docs/board.md 5.5), so the loop needs nothing else.
+ * stream (docs/board.md 5.5); a line idle for 50 ms with a frame half received
+ * drops that half (ef_board_rx_idle, docs/board-serial.md 3: a host killed
+ * mid-frame), timed by LiteX's timer0 counting down at the sys clock.
  */
 #include <stdint.h>
 #include <string.h>
@@ -39,6 +41,12 @@ static void sdram_start(void) {}
 
 static uint8_t rxb[256], txb[256];
 
+static uint32_t now_ticks(void) /* sys clock ticks, counting down */
+{
+    timer0_update_value_write(1);
+    return timer0_value_read();
+}
+
 int main(void)
 {
     sdram_start();
@@ -54,6 +62,13 @@ int main(void)
     if (!b)
         for (;;)
             ;
+    timer0_en_write(0);
+    timer0_load_write(0);
+    timer0_reload_write(0xFFFFFFFFu);
+    timer0_en_write(1);
+    const uint32_t idle_ticks = CONFIG_CLOCK_FREQUENCY / 20; /* 50 ms */
+    uint32_t last_rx = now_ticks();
+    int rx_pending = 0; /* bytes went in since the last idle call */
     size_t tx_len = 0, tx_pos = 0;
     for (;;) {
         size_t n = 0;
@@ -61,8 +76,14 @@ int main(void)
             rxb[n++] = (uint8_t)uart_rxtx_read();
             uart_ev_pending_write(UART_EV_RX);
         }
-        if (n)
+        if (n) {
             (void)ef_board_rx(b, rxb, n); /* a full buffer: the host broke the window; it resends */
+            last_rx = now_ticks();
+            rx_pending = 1;
+        } else if (rx_pending && last_rx - now_ticks() > idle_ticks) {
+            ef_board_rx_idle(b);
+            rx_pending = 0;
+        }
         dut_soc_poll();
         if (tx_pos == tx_len) {
             tx_pos = 0;
