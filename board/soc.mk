@@ -68,5 +68,5 @@ board-sim: $(BOARD_TOOLS)
 	    FW_SOC=$(BOARD_SIM_DIR) BOARD=sim
 	@echo "board-sim: $(BOARD_SIM_DIR)/obj/board_sim --dir $(BOARD_SIM_DIR)/gateware"
 
-board-sim-test: all board-sim
+board-sim-test: all board-sim $(PTYBOARD)
 	bash tests/board/soc_sim.sh $(BOARD_SIM_DIR)
