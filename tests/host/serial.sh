@@ -153,7 +153,7 @@ done
 for f in "a bit flipped on the way to the host:flip-down=20000" "a byte to the host dropped:drop-down=40000" \
     "a byte to the host duplicated:dup-down=60000"; do
     fault "${f%%:*}" "${f#*:}" 0 'PASS' --timeout "$DOWN"
-    how "${f%%:*}: no NAK" [ "$(hstat naks)" = 0 ]
+    how "${f%%:*}: no NAK (recovered with $(hstat timeouts) timeouts of $DOWN ms)" [ "$(hstat naks)" = 0 ]
 done
 # (the stalled relay reads nothing: the host's writes can time out before its 4 reads do)
 fault "the board stalls" stall=60 5 'stopped answering.*--resume' --timeout "$SHORT"
