@@ -106,11 +106,12 @@ static int open_port(serial_link **out, const char *port, unsigned baud, int tim
     if (fd < 0) {
         const int e = errno;
         if (e == EACCES || e == EPERM) {
-            snprintf(err, errlen,
-                     "%s: %s: install the udev rule host/60-edgeflag-serial.rules as /etc/udev/rules.d/60-edgeflag-serial.rules "
-                     "and run `udevadm control --reload && udevadm trigger` as root, then replug the board "
-                     "(docs/board-serial.md section 4)",
-                     port, strerror(e));
+            snprintf(
+                err, errlen,
+                "%s: %s: install the udev rule host/60-edgeflag-serial.rules as /etc/udev/rules.d/60-edgeflag-serial.rules "
+                "and run `udevadm control --reload && udevadm trigger` as root, then replug the board "
+                "(docs/board-serial.md section 4)",
+                port, strerror(e));
             return EF_HOST_EACCESS;
         }
         snprintf(err, errlen, "%s: %s", port, strerror(e));
@@ -256,8 +257,8 @@ static int ser_probe(const ef_host_opts *o, ef_found *found, int max)
             if (snprintf(f->where, sizeof f->where, "%s/%s", devdir, names[i]) >= (int)sizeof f->where)
                 continue; /* a path too long to name: not listed */
             char head[96];
-            snprintf(head, sizeof head, "%04x:%04x %s%s%s, USB serial %s", vid, pid, chip, ifnum[0] ? " interface " : "",
-                     ifnum, serial[0] ? serial : "(none)");
+            snprintf(head, sizeof head, "%04x:%04x %s%s%s, USB serial %s", vid, pid, chip,
+                     ifnum[0] ? " interface " : "", ifnum, serial[0] ? serial : "(none)");
             serial_link *l;
             char err[300] = "";
             int r = open_port(&l, f->where, o->baud ? o->baud : DEFAULT_BAUD, PROBE_TIMEOUT_MS, err, sizeof err);
@@ -293,6 +294,8 @@ static const char *ser_version(void)
     return "built in (termios2: --port /dev/ttyUSB0 [--baud N], any baud the driver takes)";
 }
 
-const ef_transport_ops ef_transport_serial = { "serial",   ser_probe, ser_open,    ef_stream_op_identify,
-                                               ef_stream_op_status, ef_stream_op_reset, ef_stream_op_write,   ef_stream_op_flush,
-                                               ef_stream_op_read,   ser_close, ser_version, ef_stream_op_detail };
+const ef_transport_ops ef_transport_serial = {
+    "serial",           ser_probe,          ser_open,           ef_stream_op_identify, ef_stream_op_status,
+    ef_stream_op_reset, ef_stream_op_write, ef_stream_op_flush, ef_stream_op_read,     ser_close,
+    ser_version,        ef_stream_op_detail
+};

@@ -137,8 +137,8 @@ static int receive(ef_stream *s, int ms)
         return errno == EINTR ? EF_HOST_ETIMEDOUT : gone(s, "poll", errno);
     if (r == 0)
         return EF_HOST_ETIMEDOUT;
-    const ssize_t n = s->socket ? recv(s->fd, s->in + s->len, s->cap - s->len, 0)
-                                : read(s->fd, s->in + s->len, s->cap - s->len);
+    const ssize_t n =
+        s->socket ? recv(s->fd, s->in + s->len, s->cap - s->len, 0) : read(s->fd, s->in + s->len, s->cap - s->len);
     if (n == 0 && !s->socket && !(pfd.revents & (POLLHUP | POLLERR)))
         return EF_HOST_ETIMEDOUT; /* a raw tty's read with nothing to give (VMIN 0) */
     if (n == 0)

@@ -36,6 +36,9 @@ if [ "${1:-}" = test ] || [ "${1:-}" = portability ]; then
     pkgs+=(python3)
     # test-dpi runs the DPI-C lockstep bench once under valgrind's memcheck (docs/dpi.md)
     pkgs+=(valgrind)
+    # test-python and test-cocotb (docs/python.md): the venv, and libpython's shared library, which
+    # cocotb embeds in the simulator (Debian's python3 binary does not need it, so it is not there)
+    pkgs+=(python3-venv python3-pip libpython3-dev)
     # make rtl-coverage and its slice in make test: verilator_coverage's lcov output to HTML (genhtml)
     pkgs+=(lcov)
     # `make portability` builds static aarch64 and s390x (big-endian) programs

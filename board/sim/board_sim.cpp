@@ -115,7 +115,7 @@ int main(int argc, char **argv)
             }
             close(sfd);
         }
-        std::printf("%s\n", name); // the path alone on the first line (tests/host/serial.sh reads it)
+        std::printf("%s\n", name);   // the path alone on the first line (tests/host/serial.sh reads it)
         if (pty_link) {
             std::string tmp = std::string(pty_link) + ".tmp";
             FILE *f = std::fopen(tmp.c_str(), "w");
@@ -127,7 +127,7 @@ int main(int argc, char **argv)
         }
     }
     std::fflush(stdout);
-    if (chdir(dir) != 0) { // the $readmemh images are named relative to the gateware folder
+    if (chdir(dir) != 0) {   // the $readmemh images are named relative to the gateware folder
         std::perror("board_sim: --dir");
         return 1;
     }
@@ -138,7 +138,7 @@ int main(int argc, char **argv)
     VerilatedContext ctx;
     Vsim top(&ctx);
     const uint64_t sys_hz = 60000000;
-    const uint64_t byte_cycles = baud > 0 ? (uint64_t)(sys_hz * 10 / baud) : 0; // 10 bits a byte (8N1)
+    const uint64_t byte_cycles = baud > 0 ? (uint64_t)(sys_hz * 10 / baud) : 0;   // 10 bits a byte (8N1)
     uint8_t in[4096], out[4096];
     size_t in_len = 0, in_pos = 0, out_len = 0;
     uint64_t next_rx = 0, next_tx = 0, bytes_in = 0, bytes_out = 0;
@@ -163,7 +163,7 @@ int main(int argc, char **argv)
                 if (n > 0) {
                     in_len = (size_t)n, in_pos = 0;
                 } else if (listen_path && (n == 0 || (errno != EAGAIN && errno != EWOULDBLOCK))) {
-                    close(fd); // the host went away: the board keeps its run
+                    close(fd);   // the host went away: the board keeps its run
                     fd = -1;
                 }
             }
@@ -173,7 +173,7 @@ int main(int argc, char **argv)
                     std::memmove(out, out + n, out_len - (size_t)n);
                     out_len -= (size_t)n;
                 } else if (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK) {
-                    out_len = 0; // nobody reads (no host on the pty): the bytes are lost, as on a wire
+                    out_len = 0;   // nobody reads (no host on the pty): the bytes are lost, as on a wire
                 }
             }
             if ((cyc & ((1u << 22) - 1)) == 0 && max_seconds > 0 && now_s() - t0 > max_seconds)
@@ -205,9 +205,11 @@ int main(int argc, char **argv)
     }
     const double dt = now_s() - t0;
     if (!quiet)
-        std::fprintf(stderr, "board_sim: %llu sys cycles (%.3f s simulated) in %.1f s (%.0f cycles/s), %llu bytes in, "
-                     "%llu bytes out\n", (unsigned long long)cyc, cyc / (double)sys_hz, dt, cyc / dt,
-                     (unsigned long long)bytes_in, (unsigned long long)bytes_out);
+        std::fprintf(stderr,
+                     "board_sim: %llu sys cycles (%.3f s simulated) in %.1f s (%.0f cycles/s), %llu bytes in, "
+                     "%llu bytes out\n",
+                     (unsigned long long)cyc, cyc / (double)sys_hz, dt, cyc / dt, (unsigned long long)bytes_in,
+                     (unsigned long long)bytes_out);
     top.final();
     return 0;
 }

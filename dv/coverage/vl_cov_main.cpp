@@ -10,17 +10,17 @@
 #include <memory>
 #include <string>
 
-#include "Vtb_raster.h" // the whole-pipeline bench, the one make rtl-coverage builds
+#include "Vtb_raster.h"   // the whole-pipeline bench, the one make rtl-coverage builds
 
 int main(int argc, char **argv)
 {
-    const std::unique_ptr<VerilatedContext> contextp{new VerilatedContext};
+    const std::unique_ptr<VerilatedContext> contextp{ new VerilatedContext };
     contextp->commandArgs(argc, argv);
     std::string file = "coverage.dat";
     for (int i = 1; i < argc; i++)
         if (std::strncmp(argv[i], "+covfile=", 9) == 0)
             file = argv[i] + 9;
-    const std::unique_ptr<Vtb_raster> topp{new Vtb_raster{contextp.get()}};
+    const std::unique_ptr<Vtb_raster> topp{ new Vtb_raster{ contextp.get() } };
     while (!contextp->gotFinish()) {
         topp->eval();
         if (!topp->eventsPending())

@@ -19,8 +19,13 @@
 #
 # usage: bash tests/cov/rtl-coverage.sh BUILD_DIR [OUT_DIR]   (OUT_DIR default
 #        BUILD_DIR/rtl-coverage)
-#   EF_COV_REGRESS=0     only rtl-test's cases (the slice of make test uses
-#                        EF_COV_SLICE_ONLY=N: every Nth of them at NS 8)
+#   EF_COV_REGRESS=0     only rtl-test's cases (the slice, make test-rtl-cov, uses
+#                        EF_COV_SLICE_ONLY=N: every Nth of them at NS 8);
+#                        EF_COV_REGRESS=3: each level-1 case at three settings
+#                        (NS 8/16/32, the rule rotating) instead of all nine
+#   EF_COV_MAXCYC=N      leave out cases of more than N cycles (default: none)
+#   EF_COV_REUSE=DIR     a work folder kept (EF_COV_KEEP=1) by an earlier run of
+#                        the same tree: its --coverage builds are reused
 #   EF_COV_REQUIRE=1     exit 1 unless the targets are met (every line and
 #                        branch hit or waived, toggles >= 95 % per module)
 #   EF_COV_JOBS (2), EF_COV_NS ("8 16 32")
@@ -43,7 +48,12 @@ done
 [ -x "$EF" ] || { echo "rtl-coverage: $EF not built (make cli)"; echo "0 passed, 1 failed"; exit 1; }
 tmpbase=${TMPDIR:-/tmp}
 [ -z "${TMPDIR:-}" ] && [ -d /dev/shm ] && [ -w /dev/shm ] && tmpbase=/dev/shm
-work=$(mktemp -d "$tmpbase/edgeflag-rtlcov.XXXXXX") || exit 1
+if [ -n "${EF_COV_REUSE:-}" ]; then
+    work=$EF_COV_REUSE EF_COV_KEEP=1
+    rm -rf "$work/dat" "$work/c" "$work"/batch.*
+else
+    work=$(mktemp -d "$tmpbase/edgeflag-rtlcov.XXXXXX") || exit 1
+fi
 if [ -n "${EF_COV_KEEP:-}" ]; then echo "rtl-coverage: keeping $work"; else trap 'rm -rf "$work"' EXIT; fi
 t0=$(date +%s)
 files=(ef_raster.v ef_dec.v ef_setup.v ef_div.v ef_etm.v ef_aet.v ef_plot.v ef_slb_fill.v ef_slb_ram.v ef_cov.v)
@@ -51,7 +61,8 @@ RTL=("${files[@]/#/$root/rtl/}")
 
 # ------------------------------------------------------------ 1. builds
 buildone() {
-    verilator --cc --exe --build --timing -O1 -Wno-fatal -Wno-WIDTH --coverage --Mdir "$work/vl_$1" \
+    [ -n "${EF_COV_REUSE:-}" ] && [ -x "$work/vl_$1/Vtb_raster" ] && return 0
+    verilator --cc --exe --build --timing -O1 -Wno-fatal -Wno-WIDTH -I"$root/rtl" --coverage --Mdir "$work/vl_$1" \
         --top-module tb_raster -GNS="$1" -GW_MAX=$WM -GH_MAX=$HM -GE_MAX=$EM -GFB_BITS=16 \
         "$root/dv/tb/tb_raster.v" "${RTL[@]}" "$root/dv/coverage/vl_cov_main.cpp" >"$work/build_$1.log" 2>&1 ||
         { tail -20 "$work/build_$1.log"; return 1; }
@@ -62,7 +73,7 @@ for p in "${pids[@]}"; do wait "$p" || { echo "FAIL rtl-coverage: Verilator --co
 echo "rtl-coverage: --coverage builds at NS $nslist in $(( $(date +%s) - t0 )) s"
 
 # ------------------------------------------------------------ 2. runs
-"$EF" gen -o "$work/gen" >/dev/null 2>&1 || { echo "FAIL rtl-coverage: edgeflag gen"; echo "0 passed, 1 failed"; exit 1; }
+[ -f "$work/gen/index.tsv" ] || "$EF" gen -o "$work/gen" >/dev/null 2>&1 || { echo "FAIL rtl-coverage: edgeflag gen"; echo "0 passed, 1 failed"; exit 1; }
 rules=(scene nonzero evenodd)
 {
     k=0
@@ -76,10 +87,14 @@ rules=(scene nonzero evenodd)
         fi
     done < <(tail -n +3 "$work/gen/index.tsv")
     echo "bp_tiger|$root/tests/data/svg/tiger.svg|8|scene|24x18|424242"
-    if [ "${EF_COV_REGRESS:-1}" = 1 ]; then
+    if [ "${EF_COV_REGRESS:-1}" != 0 ]; then
         while IFS=$'\t' read -r num file _ _ name _; do
             case $name in canvas-max*) continue ;; esac
+            j=0
             for ns in 8 16 32; do for rule in scene nonzero evenodd; do
+                j=$((j + 1))
+                # EF_COV_REGRESS=3: the three of the nine settings on the case's diagonal
+                [ "${EF_COV_REGRESS:-1}" = 3 ] && [ $(( (j - 1) % 3 )) != $(( ((j - 1) / 3 + num) % 3 )) ] && continue
                 echo "reg_${num}_${ns}_$rule|$work/gen/$file|$ns|$rule|-|-"
             done; done
         done < <(tail -n +3 "$work/gen/index.tsv")
@@ -91,7 +106,7 @@ else
     cp "$work/cases.all" "$work/cases.txt"
 fi
 one() {   # one NAME INPUT NS RULE SIZE BP: "PASS NAME", "SKIP NAME why" or "FAIL NAME why"
-    local d=$work/c/$1 a=$work/c/$1/act args=() w h me mode=--cycles pa=() r
+    local d=$work/c/$1 a=$work/c/$1/act args=() w h me mode=--cycles pa=() r cyc
     case " $nslist " in *" $3 "*) ;; *) echo "SKIP $1 NS $3 not built"; return ;; esac
     mkdir -p "$a"
     [ "$4" != scene ] && args+=(--rule "$4"); [ "$5" != - ] && args+=(--size "$5")
@@ -100,9 +115,11 @@ one() {   # one NAME INPUT NS RULE SIZE BP: "PASS NAME", "SKIP NAME why" or "FAI
     if [ "$w" -gt $WM ] || [ "$h" -gt $HM ]; then echo "SKIP $1 canvas ${w}x$h over ${WM}x$HM"; rm -rf "$d"; return; fi
     me=$(awk '!/^\/\// && NF { op = substr($1, 13, 1); if (op == "2") n = 0; if (op == "3" && ++n > m) m = n } END { print m + 0 }' "$d/cmd.stim.hex")
     if [ "$me" -gt $EM ]; then echo "SKIP $1 a shape of $me edges"; rm -rf "$d"; return; fi
+    cyc=$(sed -n 's/.*"cycles": \([0-9]*\).*/\1/p' "$d/manifest.json")
+    if [ "${EF_COV_MAXCYC:-0}" -gt 0 ] && [ "$cyc" -gt "$EF_COV_MAXCYC" ]; then echo "SKIP $1 $cyc cycles"; rm -rf "$d"; return; fi
     [ "$6" != - ] && { pa=(+bp="$6"); mode=--transactions; }
     r=$(cd "$d" && "$work/vl_$3/Vtb_raster" +cmd="$d/cmd.stim.hex" +out="$a/" +covfile="$work/dat/$1.dat" "${pa[@]}" 2>&1)
-    if ! echo "$r" | grep -q '^tb_raster: PASS'; then echo "FAIL $1 bench: $(echo "$r" | grep 'tb_raster' | head -n 1)"
+    if ! echo "$r" | grep -q '^tb_raster: DONE'; then echo "FAIL $1 bench: $(echo "$r" | grep 'tb_raster' | head -n 1)"
     elif ! "$EF" check "$d" "$a" $mode --errors 1 >/dev/null 2>&1; then echo "FAIL $1 edgeflag check $mode"
     else echo "PASS $1"; fi
     rm -rf "$d"
@@ -113,7 +130,7 @@ parallel -j "$jobs" --colsep '\|' one '{1}' '{2}' '{3}' '{4}' '{5}' '{6}' <"$wor
 np=$(grep -c '^PASS' "$work/runs.txt"); nf=$(grep -c '^FAIL' "$work/runs.txt"); nsk=$(grep -c '^SKIP' "$work/runs.txt")
 grep '^FAIL' "$work/runs.txt" | head -20
 if [ "$nf" = 0 ] && [ "$np" -gt 0 ]; then
-    pass=$((pass + 1)); echo "PASS rtl-coverage: $np runs under --coverage pass edgeflag check ($nsk left out: over the build's canvas or edges)"
+    pass=$((pass + 1)); echo "PASS rtl-coverage: $np runs under --coverage pass edgeflag check ($nsk left out: over the build's canvas, edges or EF_COV_MAXCYC)"
 else
     fail=$((fail + 1)); echo "FAIL rtl-coverage: $nf of $((np + nf)) runs failed"
 fi

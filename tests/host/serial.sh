@@ -25,6 +25,7 @@ root=$(cd "$(dirname "$0")/../.." && pwd)
 . "$root/tests/host/waits.sh"
 case $build in /*) ;; *) build=$PWD/$build ;; esac
 E=$build/edgeflag H=$build/edgeflag-host PB=$build/tests/host/ptyboard
+PY=${PYTHON:-python3}
 BOARD_CMD=${2:-$PB}
 SVG=${EF_SVG:-$root/tests/data/svg}
 pass=0 fail=0 skip=0
@@ -102,21 +103,67 @@ SHORT=300 DOWN=$((1000 * EF_SCALE))
 # ------------------------------------------------------------------ 1. plain runs
 relay
 for v in small tiger lion; do
-    run "verify $v over the pty (every interface): PASS" 0 'check: PASS: 6 comparisons' -- \
-        "$H" verify $v/vectors.bin "${LINK[@]}" --results r-$v
+    run "verify $v over the pty (every interface, full records): PASS" 0 'check: PASS: 6 comparisons' -- \
+        "$H" verify $v/vectors.bin "${LINK[@]}" --digest off --results r-$v
     same "$v: results identical to the simulated board's" r-$v/vectors.actual.bin sim-$v/vectors.actual.bin
+    run "verify $v in digest mode (the serial default): PASS" 0 'digest: pix: [0-9]+ windows of 1024 transactions: all equal' -- \
+        "$H" verify $v/vectors.bin "${LINK[@]}" --results d-$v
+    grep -q 'check: PASS: 6 comparisons' err.txt || bad "$v in digest mode: check did not pass" "$(tail -3 err.txt)"
+    same "$v in digest mode: rebuilt results identical to the simulated board's" d-$v/vectors.actual.bin sim-$v/vectors.actual.bin
 done
+run "digest mode with 7-transaction windows: PASS" 0 'digest: pix: [0-9]+ windows of 7 transactions: all equal' -- \
+    "$H" verify tiger/vectors.bin "${LINK[@]}" --digest 7 --results d7
+same "7-transaction windows: results identical" d7/vectors.actual.bin sim-tiger/vectors.actual.bin
+run "verify --save-frame: PASS" 0 'check: PASS' -- "$H" verify tiger/vectors.bin "${LINK[@]}" --results sf --save-frame sf.png
+same "--save-frame: the board's frame, byte-identical to edgeflag vectors' frame.png" sf.png tiger/frame.png
+# a board whose pix differs from the expected in one transaction (the expected vectors changed,
+# their CRCs made good again): digest mode fetches the window and names the same mismatch as full records
+"$PY" - tiger/vectors.bin bad.bin 6 1500 <<'PYEOF'
+import sys, zlib, struct
+src, dst, iface, nth = sys.argv[1], sys.argv[2], int(sys.argv[3]), int(sys.argv[4])
+b = bytearray(open(src, 'rb').read())
+o = 104
+while o < len(b):
+    if b[o] == iface:
+        if nth == 0:
+            b[o + 10] ^= 0x01  # the payload's lowest bit (pix: the colour's alpha)
+            break
+        nth -= 1
+    o += 10 + b[o + 1]
+else:
+    sys.exit('no such record')
+struct.pack_into('<I', b, 96, zlib.crc32(bytes(b[104:])))
+struct.pack_into('<I', b, 100, zlib.crc32(bytes(b[:100])))
+open(dst, 'wb').write(b)
+PYEOF
+mkdir -p bad && mv bad.bin bad/vectors.bin
+run "one pix transaction differs, full records: exit 1" 1 'pix: .* 1 mismatch' -- \
+    "$H" verify bad/vectors.bin "${LINK[@]}" --digest off --results bf --errors 5
+sed 's|^bf/|R/|' out.txt >full-report.txt
+run "one pix transaction differs, digest mode: exit 1, one window fetched" 1 'digest: pix: 1 of [0-9]+ windows differ.*fetching 1' -- \
+    "$H" verify bad/vectors.bin "${LINK[@]}" --results bd --errors 5
+sed 's|^bd/|R/|' out.txt >digest-report.txt
+if [ -s full-report.txt ] && cmp -s full-report.txt digest-report.txt; then
+    ok "digest mode names the same transaction, cycle and fields as full records: $(cut -c1-90 digest-report.txt)"
+else
+    bad "digest and full reports differ" "$(cat full-report.txt digest-report.txt)"
+fi
+same "digest mode's rebuilt results identical to full records'" bd/vectors.actual.bin bf/vectors.actual.bin
 run "verify at --baud 115200 (the standard code) : PASS" 0 'check: PASS' -- \
     "$H" verify small/vectors.bin "${LINK[@]}" --baud 115200 --results rb1
 run "verify at --baud 1234567 (termios2 BOTHER): PASS" 0 'check: PASS' -- \
     "$H" verify small/vectors.bin "${LINK[@]}" --baud 1234567 --results rb2
 # the wire of a 3 Mbaud 8N1 line: 300,000 bytes a second each way
 relay --rate 300000
-run "verify the tiger on a 300 kB/s wire: PASS" 0 '"check": "pass"' -- \
-    "$H" verify tiger/vectors.bin "${LINK[@]}" --frame-cmds 400 --results rw --json --quiet
-same "300 kB/s: results identical to the simulated board's" rw/vectors.actual.bin sim-tiger/vectors.actual.bin
-sed -n 's/.*"result_records": \([0-9]*\), "result_bytes": \([0-9]*\), "seconds": \([0-9.]*\).*/\1 \2 \3/p' out.txt |
-    awk '{ printf "# full records at 300 kB/s: %d records, %d bytes in %.2f s: %.0f records/s, %.0f kB/s of results\n", $1, $2, $3, $1 / $3, $2 / $3 / 1000 }'
+for mode in off 1024; do
+    t0=$(date +%s.%N)
+    run "verify the tiger on a 300 kB/s wire (--digest $mode): PASS" 0 '"check": "pass"' -- \
+        "$H" verify tiger/vectors.bin "${LINK[@]}" --digest $mode --frame-cmds 400 --results rw$mode --json --quiet
+    t1=$(date +%s.%N)
+    same "300 kB/s (--digest $mode): results identical to the simulated board's" rw$mode/vectors.actual.bin sim-tiger/vectors.actual.bin
+    n=$(sed -n 's/.*"result_records": \([0-9]*\), "result_bytes": \([0-9]*\).*/\1 \2/p' out.txt)
+    echo "$n $t0 $t1" | awk -v m=$mode '{ s = $4 - $3; printf "# --digest %s at 300 kB/s: %d transactions checked, %d result bytes on the wire, %.2f s in all: %.0f transactions/s\n", m, $1, $2, s, $1 / s }'
+done
 
 # ------------------------------------------------------------------ 2. faults on the wire
 # fault NAME FAULTS WANT REGEX [HOST OPTIONS...]: the relay plays FAULTS; the host exits WANT saying
@@ -125,13 +172,14 @@ sed -n 's/.*"result_records": \([0-9]*\), "result_bytes": \([0-9]*\), "seconds":
 fault() {
     local name=$1 faults=$2 want=$3 re=$4
     shift 4
-    relay --faults "$faults" --stall-ms 2500
+    [ "${1:-}" = --digest ] && name="$name (digest mode)"
+    relay --faults "$faults" --stall-ms 5000
     rm -rf rf
-    run "$name: exit $want" "$want" "$re" -- "$H" verify tiger/vectors.bin "${LINK[@]}" --results rf --json "$@"
+    run "$name: exit $want" "$want" "$re" -- "$H" verify tiger/vectors.bin "${LINK[@]}" --digest off --results rf --json "$@"
     cp out.txt fault.json
     if [ "$want" = 5 ]; then
         [ -e rf/vectors.actual.bin ] && bad "$name: a failed run left vectors.actual.bin"
-        sleep 1.5 # a stall ends (2.5 s after it began: at least 4 x 300 ms before this), an unplugged line is back
+        sleep 1.5 # an unplugged line is back; a stall (5 s) ends while the resume waits for identify
         run "$name: --resume: PASS" 0 'check: PASS' -- \
             "$H" verify tiger/vectors.bin "${LINK[@]}" --results rf --resume
     fi
@@ -162,6 +210,34 @@ how "the line unplugged: the host saw the hang-up, no timeout" \
 fault "the board reset mid-run" reset=60 6 'reset or lost its state'
 how "the board reset: its NAK asked for an acknowledged frame, no timeout" \
     '[ "$(hstat naks)" -ge 1 ] && [ "$(hstat timeouts)" = 0 ]'
+# the same on a digest run (frames counted as above: a digest run's START is the 4th frame; the
+# resume takes the digest run from the resume state)
+fault "a bit flipped on the way to the board" flip=3000 0 'PASS' --digest 64
+fault "a byte to the host dropped" drop-down=300 0 'PASS' --digest 64 --timeout "$DOWN"
+fault "a byte to the host duplicated" dup-down=500 0 'PASS' --digest 64 --timeout "$DOWN"
+fault "the board stalls" stall=60 5 'stopped answering.*--resume' --digest 64 --timeout "$SHORT"
+fault "the line unplugged" unplug=60 5 'went away.*--resume' --digest 64
+fault "the board reset mid-run" reset=60 6 'reset or lost its state' --digest 64
+# the fetch run (a select run for the differing window of section 1's altered vectors) unplugged
+# 100 frames in (the digest run is about 300), then resumed: the same report, the same results
+relay --faults unplug=400
+rm -rf rs
+run "the fetch run unplugged: exit 5" 5 'went away.*--resume' -- \
+    "$H" verify bad/vectors.bin "${LINK[@]}" --results rs --errors 5
+if grep -q '^digest 1024 phase 2 nsel 1 ' rs/.resume 2>/dev/null; then
+    ok "the fetch run unplugged: .resume says the select run and its window"
+else
+    bad "the fetch run unplugged: .resume" "$(tail -n 2 rs/.resume 2>&1)"
+fi
+run "the fetch run resumed: exit 1" 1 'pix: .* 1 mismatch' -- \
+    "$H" verify bad/vectors.bin "${LINK[@]}" --results rs --errors 5 --resume
+sed 's|^rs/|R/|' out.txt >resumed-report.txt
+if [ -s resumed-report.txt ] && cmp -s full-report.txt resumed-report.txt; then
+    ok "the fetch run resumed: the same report as full records"
+else
+    bad "the fetch run resumed: the report" "$(cat resumed-report.txt)"
+fi
+same "the fetch run resumed: results identical to full records'" rs/vectors.actual.bin bf/vectors.actual.bin
 
 # ------------------------------------------------------------------ 3. finding boards, errors
 relay

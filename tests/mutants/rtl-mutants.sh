@@ -26,12 +26,16 @@
 #                     of all (the draw is deterministic: python's random.Random)
 #   EF_MUT_OPS=LIST   only these operators (comma-separated)
 #   EF_MUT_FILES=LIST only these rtl/ files (comma-separated, e.g. ef_plot.v)
-#   EF_MUT_REGRESS=0  skip stage 5;  EF_MUT_JOBS (2);  EF_MUT_TIMEOUT (s, 30)
+#   EF_MUT_REGRESS=0  skip stage 5;  EF_MUT_JOBS (2);  EF_MUT_TIMEOUT (s, 30, plus a second per 10,000 cycles of the case)
 #   EF_MUT_NS="8 16 32" the builds (cases of other NS are left out)
 #   EF_MUT_GEN_SLICE (11: stage 4's gen slice);  EF_MUT_SVGS (all: a count)
 #   EF_MUT_SIM=icarus Icarus instead of Verilator (the slice in make test: it
 #                     compiles in seconds); EF_MUT_MAXCYC leaves out cases of
 #                     more cycles (default: none; 4000 is sensible for Icarus)
+#   EF_MUT_REG_MAXCYC the regression stage's cases of at most this many cycles
+#                     (default 250000: a survivor runs all of them)
+#   EF_MUT_REUSE=DIR  a work folder kept (EF_MUT_KEEP=1) by an earlier run of the
+#                     same tree: its builds and vectors are reused
 #   EF_MUT_OUT=DIR    keep results.tsv and report.txt there
 # Ends with "N passed, M failed": failed when mutant 0 fails, or a
 # non-equivalent mutant survives both stages while EF_MUT_REQUIRE=1.
@@ -48,6 +52,7 @@ gslice=${EF_MUT_GEN_SLICE:-11}
 WM=256 HM=256 EM=16384
 sim=${EF_MUT_SIM:-verilator}
 maxcyc=${EF_MUT_MAXCYC:-0}
+regmax=${EF_MUT_REG_MAXCYC:-250000}
 simtools="verilator"; [ "$sim" = icarus ] && simtools="iverilog vvp"
 for t in $simtools python3 parallel timeout; do
     command -v "$t" >/dev/null 2>&1 || { echo "rtl-mutants: $t is not installed ('make deps-test')"; echo "0 passed, 1 failed"; exit 1; }
@@ -55,7 +60,12 @@ done
 [ -x "$EF" ] || { echo "rtl-mutants: $EF not built (make cli)"; echo "0 passed, 1 failed"; exit 1; }
 tmpbase=${TMPDIR:-/tmp}
 [ -z "${TMPDIR:-}" ] && [ -d /dev/shm ] && [ -w /dev/shm ] && tmpbase=/dev/shm
-work=$(mktemp -d "$tmpbase/edgeflag-rtlmut.XXXXXX") || exit 1
+if [ -n "${EF_MUT_REUSE:-}" ]; then
+    work=$EF_MUT_REUSE    # a kept work folder of the same tree: its builds and vectors are reused
+    EF_MUT_KEEP=1
+else
+    work=$(mktemp -d "$tmpbase/edgeflag-rtlmut.XXXXXX") || exit 1
+fi
 if [ -n "${EF_MUT_KEEP:-}" ]; then echo "rtl-mutants: keeping $work"; else trap 'rm -rf "$work"' EXIT; fi
 t0=$(date +%s)
 pass=0 fail=0
@@ -67,14 +77,15 @@ MUTRTL=("${files[@]/#/$work/mut/}")
 
 # ------------------------------------------------------------ 2. builds
 buildone() {
+    [ -x "$work/vl_$1/Vtb_raster" ] && [ -n "${EF_MUT_REUSE:-}" ] && return 0
     if [ "$sim" = icarus ]; then
         mkdir -p "$work/vl_$1"
-        iverilog -g2005 -o "$work/vl_$1/t.vvp" -Ptb_raster.NS="$1" -Ptb_raster.W_MAX=$WM -Ptb_raster.H_MAX=$HM \
+        iverilog -g2005 -I"$root/rtl" -o "$work/vl_$1/t.vvp" -Ptb_raster.NS="$1" -Ptb_raster.W_MAX=$WM -Ptb_raster.H_MAX=$HM \
             -Ptb_raster.E_MAX=$EM -Ptb_raster.FB_BITS=16 "$root/dv/tb/tb_raster.v" "${MUTRTL[@]}" >"$work/build_$1.log" 2>&1 ||
             { tail -20 "$work/build_$1.log"; return 1; }
         return
     fi
-    verilator --binary --timing -O1 -Wno-fatal -Wno-WIDTH --x-assign unique --x-initial unique --Mdir "$work/vl_$1" --top-module tb_raster \
+    verilator --binary --timing -O1 -Wno-fatal -Wno-WIDTH -I"$root/rtl" --x-assign unique --x-initial unique --Mdir "$work/vl_$1" --top-module tb_raster \
         -GNS="$1" -GW_MAX=$WM -GH_MAX=$HM -GE_MAX=$EM -GFB_BITS=16 "$root/dv/tb/tb_raster.v" "${MUTRTL[@]}" \
         >"$work/build_$1.log" 2>&1 || { tail -20 "$work/build_$1.log"; return 1; }
 }
@@ -84,20 +95,21 @@ for p in "${pids[@]}"; do wait "$p" || { echo "FAIL rtl-mutants: Verilator did n
 echo "rtl-mutants: $nall mutants in $(echo "${files[@]}" | wc -w) files; schemata built ($sim) at NS $nslist in $(( $(date +%s) - t0 )) s"
 
 # ------------------------------------------------------------ 3. cases
-"$EF" gen -o "$work/gen" >/dev/null 2>&1 || { echo "FAIL rtl-mutants: edgeflag gen"; echo "0 passed, 1 failed"; exit 1; }
+[ -f "$work/gen/index.tsv" ] || "$EF" gen -o "$work/gen" >/dev/null 2>&1 || { echo "FAIL rtl-mutants: edgeflag gen"; echo "0 passed, 1 failed"; exit 1; }
 mkdir -p "$work/vec"
 rules=(scene nonzero evenodd)
 mkcase() {   # mkcase STAGE NAME INPUT NS RULE SIZE [BP]
     local d=$work/vec/$2 args=() w h me cyc
     case " $nslist " in *" $4 "*) ;; *) return ;; esac
     [ "$5" != scene ] && args+=(--rule "$5"); [ "$6" != - ] && args+=(--size "$6")
-    "$EF" vectors "$3" -o "$d" --samples "$4" "${args[@]}" --formats hex >/dev/null 2>&1 || return
+    [ -f "$d/manifest.json" ] || "$EF" vectors "$3" -o "$d" --samples "$4" "${args[@]}" --formats hex >/dev/null 2>&1 || return
     read -r w h <<<"$(sed -n 's/.*; size \([0-9]*\)x\([0-9]*\);.*/\1 \2/p' "$d/cmd.stim.hex" | head -n 1)"
     if [ "$w" -gt $WM ] || [ "$h" -gt $HM ]; then rm -rf "$d"; return; fi
     me=$(awk '!/^\/\// && NF { op = substr($1, 13, 1); if (op == "2") n = 0; if (op == "3" && ++n > m) m = n } END { print m + 0 }' "$d/cmd.stim.hex")
     if [ "$me" -gt $EM ]; then rm -rf "$d"; return; fi
     cyc=$(sed -n 's/.*"cycles": \([0-9]*\).*/\1/p' "$d/manifest.json")
     if [ "$maxcyc" -gt 0 ] && [ "$cyc" -gt "$maxcyc" ]; then rm -rf "$d"; return; fi
+    if [ "$1" = r ] && [ "$cyc" -gt "$regmax" ]; then rm -rf "$d"; return; fi
     echo "$1 $cyc $2 $4 ${7:--}"
 }
 {
@@ -120,7 +132,7 @@ mkcase() {   # mkcase STAGE NAME INPUT NS RULE SIZE [BP]
 } >"$work/cases.all"
 sort -k1,1 -k2,2n "$work/cases.all" >"$work/cases.txt"
 nt=$(grep -c '^t ' "$work/cases.txt"); nr=$(grep -c '^r ' "$work/cases.txt")
-echo "rtl-mutants: stage rtl-test: $nt cases; stage regression: $nr level-1 cases (those fitting ${WM}x$HM and $EM edges)"
+echo "rtl-mutants: stage rtl-test: $nt cases; stage regression: $nr level-1 cases (those fitting ${WM}x$HM, $EM edges and $regmax cycles)"
 
 # runmut K STAGE: "K killed CASE" at the first case that fails, else "K survived"
 runmut() {
@@ -128,14 +140,15 @@ runmut() {
     while read -r s cyc n ns bp; do
         [ "$s" = "$st" ] || continue
         a=$work/act/$k.$n; mkdir -p "$a"; mode=--cycles
+        local t=$((tmo + cyc / 10000))   # the timeout grows with the case: ~30,000 cycles/s on a busy core
         local pa=(); [ "$bp" != - ] && { pa=(+bp="$bp"); mode=--transactions; }
         if [ "$sim" = icarus ]; then
-            out=$(timeout "$tmo" vvp -n "$work/vl_$ns/t.vvp" +mut="$k" +cmd="$work/vec/$n/cmd.stim.hex" +out="$a/" "${pa[@]}" 2>&1)
+            out=$(timeout "$t" vvp -n "$work/vl_$ns/t.vvp" +mut="$k" +cmd="$work/vec/$n/cmd.stim.hex" +out="$a/" "${pa[@]}" 2>&1)
         else
-            out=$(timeout "$tmo" "$work/vl_$ns/Vtb_raster" +verilator+rand+reset+2 +verilator+seed+$((k + 1)) +mut="$k" \
+            out=$(timeout "$t" "$work/vl_$ns/Vtb_raster" +verilator+rand+reset+2 +verilator+seed+$((k + 1)) +mut="$k" \
                 +cmd="$work/vec/$n/cmd.stim.hex" +out="$a/" "${pa[@]}" 2>&1)
         fi
-        if ! echo "$out" | grep -q '^tb_raster: PASS' || ! "$EF" check "$work/vec/$n" "$a" $mode --errors 1 >/dev/null 2>&1; then
+        if ! echo "$out" | grep -q '^tb_raster: DONE' || ! "$EF" check "$work/vec/$n" "$a" $mode --errors 1 >/dev/null 2>&1; then
             rm -rf "$a"; echo "$k killed $n"; return
         fi
         rm -rf "$a"
