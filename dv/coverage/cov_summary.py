@@ -12,11 +12,13 @@ instances of its module (hit when any instance hit it), and sorts them:
   branch   the v_line points that are an if, else or case arm (a subset);
   toggle   every v_toggle point (one per bit of a signal): >= 95 % per module.
 
-A hole may be waived in WAIVERS (tab-separated: kind, module, pattern, reason;
-kind line also waives the branch of that point).  The pattern is a glob over the
-point's id: for a toggle the signal's bit as Verilator names it ("occ[17]"), for
-a line or branch "ARM: SOURCE" (ARM is Verilator's comment: block, if, else,
-case, ...; SOURCE the point's first source line, trimmed).  A waiver that
+A hole may be waived in WAIVERS (tab-separated: kind, module (a glob), pattern,
+reason; kind line also waives the branch of that point).  The pattern is a glob
+over the point's id, '[' and ']' plain: for a toggle the signal's bit as
+Verilator names it ("occ[17]"; "SIG[LO:HI]" waives bits LO..HI of the signals
+the glob SIG names), for a line or branch "ARM: SOURCE" (ARM is Verilator's
+comment: block, if, else, case, ...; SOURCE the point's first source line,
+trimmed).  A waiver that
 matches no hole is reported as stale (the design changed: review it).
 
 usage: cov_summary.py COVERAGE.dat RTL_DIR WAIVERS [--require] [--holes FILE]
@@ -100,10 +102,21 @@ def main():
                                  "and a reason: %r" % (waivers_path, ln))
             waivers.append([parts[0], parts[1], parts[2], parts[3], 0])
 
+    def matches(pat, pid):
+        # "SIG[LO:HI]": bits LO..HI of the signals SIG (a glob) names; else a glob over the id
+        # in which '[' and ']' are plain characters
+        m = re.fullmatch(r"(.*)\[(\d+):(\d+)\]", pat)
+        if m:
+            b = re.fullmatch(r"(.*)\[(\d+)\]", pid)
+            return bool(b) and fnmatch.fnmatchcase(b.group(1), m.group(1)) and \
+                int(m.group(2)) <= int(b.group(2)) <= int(m.group(3))
+        esc = pat.replace("[", "\x00").replace("]", "[]]").replace("\x00", "[[]")
+        return fnmatch.fnmatchcase(pid, esc)
+
     def waived(mod, kind, pid):
         for w in waivers:
-            if w[1] == mod and (w[0] == kind or (kind == "line" and w[0] == "branch")) \
-                    and fnmatch.fnmatchcase(pid, w[2]):
+            if fnmatch.fnmatchcase(mod, w[1]) and (w[0] == kind or (kind == "line" and w[0] == "branch")) \
+                    and matches(w[2], pid):
                 w[4] += 1
                 return True
         return False

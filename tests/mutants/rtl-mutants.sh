@@ -36,6 +36,7 @@
 #                     (default 250000: a survivor runs all of them)
 #   EF_MUT_REUSE=DIR  a work folder kept (EF_MUT_KEEP=1) by an earlier run of the
 #                     same tree: its builds and vectors are reused
+#   EF_MUT_CACHE=FILE stage-1 results of an earlier run (its stage1.txt) reused
 #   EF_MUT_OUT=DIR    keep results.tsv and report.txt there
 # Ends with "N passed, M failed": failed when mutant 0 fails, or a
 # non-equivalent mutant survives both stages while EF_MUT_REQUIRE=1.
@@ -183,7 +184,15 @@ nsel=$(grep -c . "$work/selected.tsv")
 echo "rtl-mutants: $nsel of $nall mutants selected${EF_MUT_SAMPLE:+ (seeded sample, seed ${EF_MUT_SEED:-27})}"
 
 # ------------------------------------------------------------ 4. + 5.
-cut -f1 "$work/selected.tsv" | parallel -j "$jobs" runmut '{}' t >"$work/stage1.txt"
+# EF_MUT_CACHE=FILE: stage-1 results ("K killed CASE" / "K survived") of an earlier run of the
+# same tree and cases, taken as they are
+: >"$work/stage1.txt"
+if [ -n "${EF_MUT_CACHE:-}" ] && [ -f "$EF_MUT_CACHE" ]; then
+    awk 'NR == FNR { c[$1] = $0; next } ($1 in c) { print c[$1] }' "$EF_MUT_CACHE" <(cut -f1 "$work/selected.tsv") >>"$work/stage1.txt"
+    echo "rtl-mutants: $(grep -c . "$work/stage1.txt") stage-1 results taken from $EF_MUT_CACHE"
+fi
+cut -f1 "$work/selected.tsv" | awk 'NR == FNR { d[$1] = 1; next } !($1 in d)' "$work/stage1.txt" - |
+    parallel -j "$jobs" runmut '{}' t >>"$work/stage1.txt"
 if [ "${EF_MUT_REGRESS:-1}" = 1 ]; then
     awk '$2 == "survived" { print $1 }' "$work/stage1.txt" | parallel -j "$jobs" runmut '{}' r >"$work/stage2.txt"
 else
