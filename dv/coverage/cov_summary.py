@@ -22,6 +22,7 @@ trimmed).  A waiver that
 matches no hole is reported as stale (the design changed: review it).
 
 usage: cov_summary.py COVERAGE.dat RTL_DIR WAIVERS [--require] [--holes FILE]
+The last column gives toggle bits and lines hit or waived (percent).
 Exit 1 with --require when an unwaived line or branch hole is left, a
 module's toggle coverage is under 95 %, or a waiver is stale.
 """
@@ -122,10 +123,17 @@ def main():
         return False
 
     mods = sorted({k[0] for k in merged})
+
+    def cw(c):
+        """toggle bits hit or waived, and lines hit or waived, as 'T % / L %'"""
+        t = (c["toggle"][1] + c["toggle"][2]) * 1000 // c["toggle"][0] if c["toggle"][0] else 1000
+        ln = (c["line"][1] + c["line"][2]) * 1000 // c["line"][0] if c["line"][0] else 1000
+        return "%d.%d/%d.%d" % (*divmod(t, 10), *divmod(ln, 10))
     bad = 0
     holes = []
     tot = {"line": [0, 0, 0], "branch": [0, 0, 0], "toggle": [0, 0, 0]}
-    print("%-12s %22s %22s %24s %8s" % ("module", "lines", "branches", "toggle bits", "waived"))
+    print("%-12s %22s %22s %24s %8s %10s" % ("module", "lines", "branches", "toggle bits", "waived",
+                                            "+waived"))
     for mod in mods:
         c = {"line": [0, 0, 0], "branch": [0, 0, 0], "toggle": [0, 0, 0]}   # points, hit, waived
         for key, n in merged.items():
@@ -149,7 +157,8 @@ def main():
         def pct(v):
             return "%d/%d (%d.%d %%)" % (v[1], v[0], *divmod(v[1] * 1000 // v[0], 10)) if v[0] else "-"
         nw = c["line"][2] + c["toggle"][2]
-        print("%-12s %22s %22s %24s %8d" % (mod, pct(c["line"]), pct(c["branch"]), pct(c["toggle"]), nw))
+        print("%-12s %22s %22s %24s %8d %10s" % (mod, pct(c["line"]), pct(c["branch"]), pct(c["toggle"]), nw,
+                                                 cw(c)))
         if c["line"][0] - c["line"][1] - c["line"][2] > 0:
             bad += 1
         tcov = (c["toggle"][1] + c["toggle"][2]) * 1000 // c["toggle"][0] if c["toggle"][0] else 1000
@@ -157,8 +166,8 @@ def main():
             bad += 1
     def pct(v):
         return "%d/%d (%d.%d %%)" % (v[1], v[0], *divmod(v[1] * 1000 // v[0], 10)) if v[0] else "-"
-    print("%-12s %22s %22s %24s %8d" % ("all", pct(tot["line"]), pct(tot["branch"]), pct(tot["toggle"]),
-                                        tot["line"][2] + tot["toggle"][2]))
+    print("%-12s %22s %22s %24s %8d %10s" % ("all", pct(tot["line"]), pct(tot["branch"]), pct(tot["toggle"]),
+                                             tot["line"][2] + tot["toggle"][2], cw(tot)))
     unw = [h for h in holes if h.startswith("HOLE")]
     print("holes: %d line/branch and %d toggle bits unhit; %d of them waived (dv/coverage/waivers.tsv), %d not"
           % (sum(1 for h in holes if " line " in h), sum(1 for h in holes if " toggle " in h),

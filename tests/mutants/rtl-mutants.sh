@@ -12,7 +12,7 @@
 #   4. stage "rtl-test": each mutant runs make rtl-test's Verilator cases
 #      (every shared SVG at 24x18 and every 11th `edgeflag gen` level-1 case,
 #      rotating over NS x rule, and the tiger with random back-pressure on
-#      pix), shortest first, each under a timeout; the mutant is killed by the
+#      pix) and one directed case (the tiger at W_MAX x H_MAX), shortest first, each under a timeout; the mutant is killed by the
 #      first case whose bench does not pass, times out, or whose dumps fail
 #      `edgeflag check` (--cycles; --transactions under back-pressure);
 #   5. stage "regression": the survivors run every `edgeflag gen` level-1
@@ -130,6 +130,10 @@ mkcase() {   # mkcase STAGE NAME INPUT NS RULE SIZE [BP]
         fi
     done < <(tail -n +3 "$work/gen/index.tsv")
     case " $nslist " in *" 8 "*) mkcase t bp_tiger "$root/tests/data/svg/tiger.svg" 8 scene 24x18 424242 ;; esac
+    # directed (added after the first run, where it killed 3 of the 31 survivors): the tiger
+    # filling the build's W_MAX x H_MAX, a FRAME of exactly the largest canvas, rows past 64
+    # for AET's occupancy search and enough edges to wrap its ring
+    case " $nslist " in *" 8 "*) [ "$maxcyc" = 0 ] && mkcase t max_tiger "$root/tests/data/svg/tiger.svg" 8 scene "${WM}x$HM" ;; esac
 } >"$work/cases.all"
 sort -k1,1 -k2,2n "$work/cases.all" >"$work/cases.txt"
 nt=$(grep -c '^t ' "$work/cases.txt"); nr=$(grep -c '^r ' "$work/cases.txt")
