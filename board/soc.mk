@@ -17,7 +17,7 @@ EF_VENV_PY := $(EF_VENV)/bin/python
 BOARD_DIR := $(BUILD)/board/$(BOARD)-ns$(BOARD_NS)
 BOARD_SIM_DIR := $(BUILD)/board/sim-ns$(BOARD_NS)
 BOARD_SOC_SRC := board/soc/soc.py board/soc/ef_periph.py board/soc/ef_gate_ecp5.v board/soc/ef_gate_sim.v \
-                 $(wildcard rtl/*.v)
+                 $(wildcard rtl/*.v) $(wildcard rtl/*.vh)
 BOARD_TOOLS := $(EF_VENV)/.installed-soc build/fpga-bin/nextpnr-ecp5
 
 .PHONY: board-tools firmware bitstream board-sim board-sim-test
@@ -33,6 +33,7 @@ board-tools: $(BOARD_TOOLS)
 include board/firmware/firmware.mk
 
 $(BUILD)/board/%/software/include/generated/csr.h: $(BOARD_SOC_SRC) $(BOARD_TOOLS)
+	@mkdir -p $(BUILD)/board
 	$(EF_VENV_PY) board/soc/soc.py --target $(if $(filter sim-%,$*),sim,$(BOARD)) --ns $(BOARD_NS) \
 	    --out $(BUILD)/board/$* --headers-only >$(BUILD)/board/$*.headers.log 2>&1 || \
 	    { tail -n 20 $(BUILD)/board/$*.headers.log; exit 1; }
@@ -49,7 +50,7 @@ bitstream: $(BOARD_TOOLS)
 # warnings are not ours to fix, so only errors stop the build there (rtl/ has its own -Wall lint).
 BOARD_SIM_VFLAGS := --cc --exe --build -j 2 -O2 --x-assign fast --x-initial fast --no-assert -Wno-fatal \
                     -Wno-lint -Wno-style -Wno-MULTIDRIVEN -Wno-UNOPTFLAT -Wno-COMBDLY -Wno-TIMESCALEMOD \
-                    --top-module sim
+                    --top-module sim -I$(abspath rtl)
 # The ROM is $$readmemh'd from gateware/sim_rom.init when the model starts: a new firmware
 # rewrites that image and needs no new model.
 $(BOARD_SIM_DIR)/gateware/sim.v: $(BOARD_SOC_SRC) | $(BOARD_SIM_DIR)/firmware.bin
@@ -68,5 +69,5 @@ board-sim: $(BOARD_TOOLS)
 	    FW_SOC=$(BOARD_SIM_DIR) BOARD=sim
 	@echo "board-sim: $(BOARD_SIM_DIR)/obj/board_sim --dir $(BOARD_SIM_DIR)/gateware"
 
-board-sim-test: all board-sim
+board-sim-test: all board-sim $(PTYBOARD)
 	bash tests/board/soc_sim.sh $(BOARD_SIM_DIR)

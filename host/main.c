@@ -179,7 +179,7 @@ static int parse(int argc, char **argv, args *a)
         switch (c) {
         case O_TRANSPORT:
             if (strcmp(optarg, "auto") != 0 && !find_transport(optarg))
-                return usage_error("--transport must be usb, gpio, sim, null, socket, serial or auto, not '%s'",
+                return usage_error("--transport must be usb, gpio, serial, sim, null, socket or auto, not '%s'",
                                    optarg);
             a->transport = optarg;
             break;
@@ -352,7 +352,7 @@ static int cmd_list(const args *a)
                        total ? ", " : "", found[k].transport, found[k].where, found[k].ok ? "true" : "false",
                        found[k].desc);
             else
-                printf("%-5s %-14s %s%s\n", found[k].transport, found[k].where, found[k].ok ? "" : "(not ours) ",
+                printf("%-6s %-14s %s%s\n", found[k].transport, found[k].where, found[k].ok ? "" : "(not ours) ",
                        found[k].desc);
         }
     }

@@ -30,6 +30,7 @@ typedef struct dut_soc {
     int running; /* between start and stop, no failure */
     int in_frame, flushed;
     uint32_t edges;
+    uint32_t npix; /* pix records of this run (EF_SOC_FAULT_PIX) */
 } dut_soc;
 
 static dut_soc the_dut;
@@ -77,8 +78,7 @@ static void drain(dut_soc *d)
                 r[10 + i + k] = (uint8_t)(p >> (8 * k));
         }
 #ifdef EF_SOC_FAULT_PIX /* tests/board/soc_sim.sh: a planted firmware fault, never in a real build */
-        static unsigned npix;
-        if (r[0] == 6 && ++npix == 20)
+        if (r[0] == 6 && ++d->npix == 20)
             r[10 + 4] ^= 1u; /* the 20th pix record's alpha, bit 0 (rgba is bytes 0-3) */
 #endif
         if (d->running && (len > 32 || ef_board_emit(d->b, r, 10u + len) != 0))
@@ -107,6 +107,7 @@ static int start(void *self, ef_board *b, uint32_t mask, int samples)
     d->mask = mask;
     d->in_frame = d->flushed = 0;
     d->edges = 0;
+    d->npix = 0;
     d->running = 0;
     hw_reset(d, mask);
     d->running = 1;

@@ -115,7 +115,7 @@ int main(int argc, char **argv)
             }
             close(sfd);
         }
-        std::printf("%s\n", name); // the path alone on the first line (tests/host/serial.sh reads it)
+        std::printf("%s\n", name);   // the path alone on the first line (tests/host/serial.sh reads it)
         if (pty_link) {
             std::string tmp = std::string(pty_link) + ".tmp";
             FILE *f = std::fopen(tmp.c_str(), "w");

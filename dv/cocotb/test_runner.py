@@ -35,6 +35,19 @@ HERE = pathlib.Path(__file__).resolve().parent
 WM, HM, EM = 256, 256, 16384
 OBSERVED = ("seg", "et_wr", "et_rd", "plot", "span", "pix")
 _built = {}
+# The planted faults are RTL variants (dv/rtl-variant.sh, docs/testing.md "RTL variants"): rtl/
+# holds no fault define.
+FAULT_RECIPE = {"EF_FAULT_ROOKS": "rooks", "EF_FAULT_TOPCLIP": "topclip", "EF_FAULT_SPAN": "span",
+                "EF_FAULT_PAD": "pad"}
+
+
+def rtl_folder(define):
+    """rtl/, or the RTL variant with the planted fault named by define."""
+    if not define:
+        return ROOT / "rtl"
+    d = BUILD / "cocotb" / f"rtl-{FAULT_RECIPE[define]}"
+    subprocess.run(["bash", str(ROOT / "dv" / "rtl-variant.sh"), str(d), FAULT_RECIPE[define]], check=True)
+    return d
 
 
 def build(sim, ns, define=None, emax=EM):
@@ -48,8 +61,9 @@ def build(sim, ns, define=None, emax=EM):
     if sim == "verilator":
         args = ["-Wno-fatal", "-O2", "--x-assign", "fast", "--x-initial", "fast"]
     t0 = time.perf_counter()
-    r.build(verilog_sources=RTL, hdl_toplevel="ef_raster", parameters=params, build_args=args,
-            defines={define: 1} if define else {}, build_dir=d, always=False)
+    src = rtl_folder(define)
+    r.build(verilog_sources=[src / f.name for f in RTL], includes=[src], hdl_toplevel="ef_raster",
+            parameters=params, build_args=args, build_dir=d, always=False)
     _built[key] = (r, d, params, time.perf_counter() - t0)
     return _built[key]
 
@@ -103,6 +117,18 @@ def gen_case(k, rule="scene", **kw):
 # ------------------------------------------------------------------ the slice
 # Small gen cases (a few hundred to a few thousand cycles: Icarus runs the whole pipeline at about a
 # thousand cycles a second) and shared SVGs at 24x18 in Verilator.
+def directed_text():
+    """A scene for cover points the shared SVGs and the small gen cases miss: an edge wholly above
+    the canvas (clip.drop_above), a near-horizontal edge with |qs| >= 2^20 (div.qs_big: dY = 1/256 px
+    across sample row 0, dX = 256 px), a shape of alpha 0 (shape.alpha0) and one of 4096 EDGE
+    commands (shape.edges_4096: a zigzag of 4096 vertices, 1/256 px a step down)."""
+    zig = " ".join(f"{1 if i % 2 == 0 else 7} {ef.q8(i // 2)}" for i in range(4096))
+    return ("scene 8 8\n"
+            "shape nonzero 255 0 0 0\ncontour 1 -3 6 -2 3 -1\n"
+            "shape nonzero 0 255 0 255\ncontour -100 0.0625 156 0.06640625 2 5\n"
+            f"shape evenodd 0 0 255 200\ncontour {zig}\n")
+
+
 ICARUS_GEN = {8: [(0, "scene"), (22, "nonzero"), (48, "evenodd"), (52, "scene"), (30, "nonzero")],
               16: [(4, "evenodd"), (14, "scene"), (51, "nonzero"), (74, "scene")],
               32: [(1, "nonzero"), (19, "evenodd"), (55, "scene"), (104, "nonzero")]}
@@ -113,7 +139,8 @@ def test_verilator_slice():
     cases = [svg_case("lion", rule="nonzero"), svg_case("stress_pixi_fill_rule_star_nonzero"),
              svg_case("stress_pixi_figure8", rule="evenodd"), svg_case("tiger", rule="evenodd", size=(16, 12)),
              gen_case(36, "scene"), gen_case(38, "scene"), gen_case(44, "nonzero"), gen_case(46, "evenodd"),
-             gen_case(47, "scene"), gen_case(52, "nonzero"), gen_case(17, "scene"),
+             gen_case(47, "scene"), gen_case(52, "nonzero"), gen_case(17, "scene"), gen_case(35, "scene"),
+             {"name": "directed_holes", "scene_text": directed_text(), "may_lack": True},
              svg_case("lion", rule="scene", bp_seed=7, size=(12, 9))]
     run("verilator", 8, cases, "verilator_ns8")
 

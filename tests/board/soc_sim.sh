@@ -4,13 +4,17 @@
 # its frame memory, the UART) in Verilator (board/sim/board_sim.cpp), its UART behind a
 # pseudo-terminal when edgeflag-host has the serial transport (else a unix socket and the socket
 # transport: the same bytes), driven by the unmodified edgeflag-host:
-#   1. identify: the board's true limits (W_MAX, H_MAX, E_MAX, samples, interfaces, serial);
+#   1. identify: the board's true limits (W_MAX, H_MAX, E_MAX, samples, interfaces, serial;
+#      capabilities results, resume, internal interfaces and digest);
 #   2. verify of a bundled SVG at a small canvas in full-record mode: PASS cycle-exact on every
 #      interface the board returns (seg, et_wr, et_rd, plot, span, pix);
 #   3. the same in digest mode, when edgeflag-host has one (else said: SKIP, not counted);
-#   4. a planted firmware fault (dut_soc.c built with EF_SOC_FAULT_PIX: one pix record's alpha
-#      changed on its way to the engine), in the same simulated SoC's ROM: verify exits 1 and names
-#      pix, nothing else.
+#   4. faults on the wire (serial only: tests/host/ptyboard as a relay in front of the board's
+#      pty): a bit flipped on the way to the board, a byte to the host dropped and another
+#      duplicated, in one run: recovered (exit 0), results byte-identical to run 2's;
+#   5. a planted firmware fault (dut_soc.c built with EF_SOC_FAULT_PIX: one pix record's alpha
+#      changed on its way to the engine), in the same simulated SoC's ROM: verify (in digest mode
+#      when the host has it: the differing window fetched whole) exits 1 and names pix, nothing else.
 # usage: bash tests/board/soc_sim.sh SIM_DIR   (`make board-sim-test`: SIM_DIR is
 #        build/board/sim-ns8, built by `make board-sim`)
 # Ends with "N passed, M failed"; exit status 0 only if nothing failed.
@@ -72,7 +76,7 @@ full=()
 "$H" --help 2>&1 | grep -q -- '--digest' && full=(--digest off)
 
 # ---------------------------------------------------------------- vectors
-svg=stress_pixi_figure8.svg size=48x32
+svg=stress_pixi_fill_rule_star_nonzero.svg size=32x32
 if ! "$E" vectors "$SVG/$svg" -o "$tmp/v" --size $size --samples 8 >"$tmp/vec.log" 2>&1; then
     cat "$tmp/vec.log"; bad "edgeflag vectors $svg"; finish
 fi
@@ -84,7 +88,7 @@ python3 "$root/tests/board/identify.py" "$addr" >"$tmp/id.out" 2>&1
 rc=$?
 soc=$sim/software/include/generated/soc.h
 def() { sed -n "s/^#define $1 //p" "$soc"; }
-want="version 1|window 16|capabilities 7|interfaces 0x7f|samples $(def EF_NS)|width_max $(def EF_W_MAX)"
+want="version 1|window 16|capabilities 15|interfaces 0x7f|samples $(def EF_NS)|width_max $(def EF_W_MAX)"
 want="$want|height_max $(def EF_H_MAX)|edges_max $(def EF_E_MAX)|serial EFULX3S-0001"
 got=$(tr '\n' '|' <"$tmp/id.out" | sed 's/|$//')
 if [ $rc = 0 ] && [ "$got" = "$want" ]; then
@@ -109,10 +113,12 @@ sed 's/^/    /' "$tmp/board.log"
 # ---------------------------------------------------------------- 3. digest mode
 if "$H" --help 2>&1 | grep -q -- '--digest'; then
     start_board "$sim/gateware" || { bad "the simulated board did not come up"; finish; }
+    t0=$(date +%s%N)
     "$H" verify "$tmp/v/vectors.bin" "${L[@]}" --digest 64 --results "$tmp/dig" >"$tmp/dig.out" 2>&1
     rc=$?
+    ms=$((($(date +%s%N) - t0) / 1000000))
     if [ $rc = 0 ] && grep -q 'edgeflag check: PASS' "$tmp/dig.out"; then
-        ok "verify in digest mode: PASS"
+        ok "verify in digest mode (a CRC-32 per 64 transactions): $(sed -n 's/.*check: PASS: //p' "$tmp/dig.out" | head -n 1) ($ms ms)"
     else
         bad "verify in digest mode" "exit $rc; $(tail -n 8 "$tmp/dig.out")"
     fi
@@ -121,7 +127,33 @@ else
     echo "SKIP - digest mode: this edgeflag-host has no --digest yet (not counted)"
 fi
 
-# ---------------------------------------------------------------- 4. a firmware fault
+# ---------------------------------------------------------------- 4. faults on the wire
+PB=$build/tests/host/ptyboard
+if [ $mode = serial ] && [ -x "$PB" ]; then
+    start_board "$sim/gateware" || { bad "the simulated board did not come up"; finish; }
+    "$PB" --to "$(cat "$tmp/pty")" --link "$tmp/tty" --faults flip=300,drop-down=4000,dup-down=8000 \
+        >"$tmp/relay.out" 2>"$tmp/relay.err" &
+    rpid=$!
+    for _ in $(seq 100); do [ -s "$tmp/relay.out" ] && break; sleep 0.1; done
+    t0=$(date +%s%N)
+    "$H" verify "$tmp/v/vectors.bin" --transport serial --port "$tmp/tty" --timeout 30000 "${full[@]}" \
+        --results "$tmp/wire" >"$tmp/wire.out" 2>&1
+    rc=$?
+    ms=$((($(date +%s%N) - t0) / 1000000))
+    kill "$rpid" 2>/dev/null
+    wait "$rpid" 2>/dev/null
+    if [ $rc = 0 ] && grep -q 'edgeflag check: PASS' "$tmp/wire.out" &&
+       cmp -s "$tmp/wire/vectors.actual.bin" "$tmp/full/vectors.actual.bin"; then
+        ok "wire faults (a bit flipped to the board, a byte to the host dropped, one duplicated): PASS, results identical ($ms ms)"
+    else
+        bad "wire faults" "exit $rc; $(tail -n 6 "$tmp/wire.out")"
+    fi
+    stop_board
+else
+    echo "SKIP - wire faults: need the serial transport and tests/host/ptyboard (not counted)"
+fi
+
+# ---------------------------------------------------------------- 5. a firmware fault
 # the faulty firmware in a copy of the gateware folder's memory images (the ROM is $readmemh'd)
 fdir=$tmp/fault-gw
 mkdir -p "$fdir"
@@ -131,12 +163,14 @@ if make -C "$root" --no-print-directory -f board/firmware/firmware.mk FW_SOC="$s
         >"$tmp/fault-build.log" 2>&1 &&
    od -An -v -tx4 -w4 "$tmp/fault.bin" | tr -d ' ' >"$fdir/sim_rom.init"; then
     start_board "$fdir" || { bad "the simulated board (faulty firmware) did not come up"; finish; }
-    "$H" verify "$tmp/v/vectors.bin" "${L[@]}" "${full[@]}" --results "$tmp/fault-res" >"$tmp/fault.out" 2>&1
+    dig=()
+    [ ${#full[@]} -gt 0 ] && dig=(--digest 64) # digest mode must find it and fetch the window
+    "$H" verify "$tmp/v/vectors.bin" "${L[@]}" "${dig[@]}" --results "$tmp/fault-res" >"$tmp/fault.out" 2>&1
     rc=$?
     nm=$(sed -n 's/^edgeflag check: pix: .*, \([0-9]*\) mismatch.*/\1/p' "$tmp/fault.out" | head -n 1)
     others=$(grep -E '^edgeflag check: (seg|et_wr|et_rd|plot|span): ' "$tmp/fault.out" | grep -vc ' 0 mismatches')
     if [ $rc = 1 ] && [ "${nm:-0}" -ge 1 ] && [ "$others" = 0 ]; then
-        ok "a planted firmware fault (EF_SOC_FAULT_PIX) is caught: exit 1, $nm pix mismatch(es), none elsewhere"
+        ok "a planted firmware fault (EF_SOC_FAULT_PIX) is caught${dig:+ in digest mode}: exit 1, $nm pix mismatch(es), none elsewhere: $(grep -m1 'pix: cycle' "$tmp/fault.out" | sed 's/.*\(pix: cycle [0-9]*\).*/\1/')"
     else
         bad "the planted firmware fault" "exit $rc, pix mismatches '${nm}', other interfaces differing $others; $(tail -n 8 "$tmp/fault.out")"
     fi
