@@ -154,7 +154,8 @@ def find_regions(toks, const_funcs):
         t = toks[i]
         x = t.text
         if t.dead or t.kind == "dir":
-            i += 1
+            # `include "FILE" (ef_ifaces.vh, ef_ns.vh): the name goes with it
+            i += 2 if t.text == "`include" and i + 1 < n and toks[i + 1].kind == "str" else 1
             continue
         if x == "module":
             # skip the header: name, #( ... ), ( ... ) ;
