@@ -76,11 +76,14 @@ def main():
 
     # (module, kind, id) -> count
     merged = {}
+    fname = {}
     for kv, n in parse(dat):
         f = kv.get("f", "")
         if os.path.dirname(os.path.realpath(f)) != rtl_dir:
             continue
+        # a module is its file (one per file in rtl/); an include file (ef_rooks.vh) stands alone
         mod = os.path.basename(f)[:-2] if f.endswith(".v") else os.path.basename(f)
+        fname[mod] = os.path.basename(f)
         page = kv.get("page", "")
         o = kv.get("o", "")
         ln = int(kv.get("l", "0") or 0)
@@ -148,7 +151,7 @@ def main():
                 c[k][1] += n > 0
                 c[k][2] += w
             if n == 0:
-                where = ("rtl/%s.v:%d" % (mod, key[3])) if kind == "line" else ("rtl/%s.v" % mod)
+                where = ("rtl/%s:%d" % (fname[mod], key[3])) if kind == "line" else ("rtl/%s" % fname[mod])
                 holes.append("%s %s %s %s%s" % ("waived" if w else "HOLE", kind, where, pid,
                                                  "" if not w else ""))
         for k in c:

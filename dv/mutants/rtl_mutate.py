@@ -24,7 +24,8 @@ Code inside `ifdef EF_FAULT_*` (the fault variants) is left alone, as are
 initial blocks, for headers, parameters, and functions that a parameter
 calls (they must stay constant expressions).
 
-usage: rtl_mutate.py OUT_DIR FILE.v...    (prints the number of mutants)
+usage: rtl_mutate.py OUT_DIR FILE.v|FILE.vh...    (prints the number of mutants; a .vh file is
+       a fragment included in a module's body, whose ef_mut it uses)
 """
 import os
 import re
@@ -143,13 +144,13 @@ class Region:
         self.a, self.b, self.kind, self.lhs, self.nba = a, b, kind, lhs, nba
 
 
-def find_regions(toks, const_funcs):
+def find_regions(toks, const_funcs, in_module=False):
+    """in_module: the file is a fragment included in a module's body (ef_rooks.vh)"""
     regions = []
     n = len(toks)
     i = 0
     stmt = False          # inside an always or function body
     depth = 0             # begin/case nesting in it
-    in_module = False
     while i < n:
         t = toks[i]
         x = t.text
@@ -437,7 +438,7 @@ def main():
             if t.text in ("localparam", "parameter"):
                 e = region_end(toks, k, False)
                 const_funcs |= {toks[j].text for j in range(k, e) if toks[j].text in funcs}
-        regions = find_regions(toks, const_funcs)
+        regions = find_regions(toks, const_funcs, in_module=path.endswith(".vh"))
         base = os.path.basename(path)
         edits = []      # (start char, end char, new text)
         seen = {}

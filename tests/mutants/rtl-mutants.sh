@@ -76,7 +76,9 @@ files=(ef_raster.v ef_dec.v ef_setup.v ef_div.v ef_etm.v ef_aet.v ef_plot.v ef_s
 # an RTL variant (dv/rtl-variant.sh: a copy of rtl/ with its include files), whose .v files
 # rtl_mutate.py then replaces by their schemata in place
 bash "$root/dv/rtl-variant.sh" "$work/mut" >/dev/null || { echo "FAIL rtl-mutants: dv/rtl-variant.sh"; echo "0 passed, 1 failed"; exit 1; }
-nall=$(python3 "$root/dv/mutants/rtl_mutate.py" "$work/mut" "${files[@]/#/$work/mut/}") || { echo "0 passed, 1 failed"; exit 1; }
+# and the n-rooks table, a function included in ef_plot's body
+nall=$(python3 "$root/dv/mutants/rtl_mutate.py" "$work/mut" "${files[@]/#/$work/mut/}" "$work/mut/ef_rooks.vh") ||
+    { echo "0 passed, 1 failed"; exit 1; }
 MUTRTL=("${files[@]/#/$work/mut/}")
 
 # ------------------------------------------------------------ 2. builds
@@ -96,7 +98,7 @@ buildone() {
 pids=()
 for ns in $nslist; do buildone "$ns" & pids+=($!); done
 for p in "${pids[@]}"; do wait "$p" || { echo "FAIL rtl-mutants: Verilator did not build the schemata"; echo "0 passed, 1 failed"; exit 1; }; done
-echo "rtl-mutants: $nall mutants in $(echo "${files[@]}" | wc -w) files; schemata built ($sim) at NS $nslist in $(( $(date +%s) - t0 )) s"
+echo "rtl-mutants: $nall mutants in $(( $(echo "${files[@]}" | wc -w) + 1 )) files; schemata built ($sim) at NS $nslist in $(( $(date +%s) - t0 )) s"
 
 # ------------------------------------------------------------ 3. cases
 [ -f "$work/gen/index.tsv" ] || "$EF" gen -o "$work/gen" >/dev/null 2>&1 || { echo "FAIL rtl-mutants: edgeflag gen"; echo "0 passed, 1 failed"; exit 1; }
