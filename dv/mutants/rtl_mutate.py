@@ -154,7 +154,8 @@ def find_regions(toks, const_funcs):
         t = toks[i]
         x = t.text
         if t.dead or t.kind == "dir":
-            i += 1
+            # `include "FILE" (ef_ifaces.vh, ef_ns.vh): the name goes with it
+            i += 2 if t.text == "`include" and i + 1 < n and toks[i + 1].kind == "str" else 1
             continue
         if x == "module":
             # skip the header: name, #( ... ), ( ... ) ;
@@ -360,6 +361,20 @@ def const_bump(text, d):
     return None
 
 
+def in_replication_count(toks, k, b):
+    """token k lies in a parenthesised replication count: {(N*64){...}}"""
+    depth = 0
+    for j in range(k + 1, b):
+        y = toks[j].text
+        if y in OPEN:
+            depth += 1
+        elif y in (")", "]", "}"):
+            if depth == 0:
+                return y == ")" and j + 1 < b and toks[j + 1].text == "{"
+            depth -= 1
+    return False
+
+
 def mutants_of(toks, r, src):
     """[(op, token span a..b, replacement text)] of region r"""
     out = []
@@ -374,7 +389,8 @@ def mutants_of(toks, r, src):
             depth_br -= 1
         if t.text in CMP_FLIP and depth_br == 0:
             out.append(("cmp", k, k + 1, CMP_FLIP[t.text]))
-        if t.kind == "num" and depth_br == 0 and not (k + 1 < r.b and toks[k + 1].text == "{"):
+        if t.kind == "num" and depth_br == 0 and not (k + 1 < r.b and toks[k + 1].text == "{") \
+                and not in_replication_count(toks, k, r.b):
             for d in (1, -1):
                 nt = const_bump(t.text, d)
                 if nt is not None:
@@ -390,9 +406,10 @@ def mutants_of(toks, r, src):
         if r.kind == "cond" and t.text == "rst":
             out.append(("reset", k, k + 1, "(!rst)"))
     if r.kind == "rhs" and r.lhs and re.search(r"(valid|ready)$", r.lhs.split("[")[0].strip()):
-        whole = (r.a, r.b)
-        out.append(("stuck", whole[0], whole[1], "1'b0"))
-        out.append(("stuck", whole[0], whole[1], "1'b1"))
+        text = " ".join(toks[k].text for k in range(r.a, r.b))
+        for v in ("1'b0", "1'b1"):
+            if text != v:         # stuck at what it already is: no mutant
+                out.append(("stuck", r.a, r.b, v))
     if r.kind == "rhs" and r.nba and r.lhs:
         out.append(("hold", r.a, r.b, r.lhs))
     return out
