@@ -18,6 +18,8 @@ WARN     := -std=c11 -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wvla
 # (the model reaching the readers, a library reaching cli/) is a build error, not a review comment.
 # include/edgeflag/ holds the public headers: `#include "edgeflag.h"` resolves everywhere.
 EF_DEFS  := -D_POSIX_C_SOURCE=200809L
+# The one version number: edgeflag.h's EF_VERSION_STRING (the .pc files and ef_version() follow it).
+EF_VERSION := $(shell sed -n 's/^#define EF_VERSION_STRING "\(.*\)"/\1/p' include/edgeflag/edgeflag.h)
 EF_INC   := -Iinclude/edgeflag -Ifixed -Imodel
 CPPFLAGS = $(EF_DEFS) $(EF_INC)
 # Hidden by default: only declarations marked EF_API (include/edgeflag/ef_api.h) are exported.
@@ -65,6 +67,7 @@ $(BUILD)/%.o: %.c
 include fixed/module.mk
 include model/module.mk
 include rtl_vectors/module.mk
+include util/module.mk
 include dv/dpi/module.mk
 include cli/module.mk
 include proto/module.mk

@@ -43,7 +43,7 @@ RTL_DUT_VLOBJ := $(BUILD)/host/verilated.o $(BUILD)/host/verilated_threads.o
 RTL_DUT_OBJS := $(RTL_DUT_DIR)/dut_rtl.o $(RTL_DUT_DIR)/dut_rtl_vl.o $(RTL_DUT_LIBS) $(RTL_DUT_VLOBJ)
 RTL_DUT_DEFS := -DEF_RTL_W_MAX=$(RTL_DUT_W_MAX) -DEF_RTL_H_MAX=$(RTL_DUT_H_MAX) -DEF_RTL_E_MAX=$(RTL_DUT_E_MAX) \
                 -DEF_RTL_FAULT='"$(RTL_DUT_FAULT)"'
-RTL_DUT_CXXFLAGS := -std=c++17 $(RTL_DUT_OPT) -g -fPIC -Ihost -Iboard -Iproto -isystem $(VERILATOR_ROOT_DIR)/include \
+RTL_DUT_CXXFLAGS := -std=c++17 $(RTL_DUT_OPT) -g -fPIC -Iboard -Iproto -isystem $(VERILATOR_ROOT_DIR)/include \
                     -isystem $(VERILATOR_ROOT_DIR)/include/vltstd $(foreach n,$(RTL_DUT_NS),-isystem $(RTL_DUT_DIR)/vl$(n) -DEF_RTL_NS$(n))
 # the link: the stub dut_rtl.o out, the real one, the models and the C++ runtime in
 HOST_RTL_DUT_OBJS := $(RTL_DUT_OBJS)
@@ -83,9 +83,10 @@ $(BUILD)/host/verilated_threads.o: $(VERILATOR_ROOT_DIR)/include/verilated_threa
 	$(CXX) $(RTL_DUT_VLFLAGS) -c $< -o $@
 $(RTL_DUT_DIR)/dut_rtl_vl.o: board/dut_rtl.cpp board/dut_rtl.h $(RTL_DUT_LIBS)
 	$(CXX) $(RTL_DUT_CXXFLAGS) -Wall -Wextra -Werror -c $< -o $@
+$(RTL_DUT_DIR)/dut_rtl.o: EF_INC := $(LAYER_INC_board)
 $(RTL_DUT_DIR)/dut_rtl.o: board/dut_rtl.c board/dut_rtl.h board/rtl_dut.mk $(RTL_DUT_SRC_FLAG)
 	@mkdir -p $(dir $@)
-	$(CC) $(CPPFLAGS) $(HOST_CPPFLAGS) $(CFLAGS_ALL) -DEF_RTL_DUT $(RTL_DUT_DEFS) -c $< -o $@
+	$(CC) $(CPPFLAGS) $(CFLAGS_ALL) -DEF_RTL_DUT $(RTL_DUT_DEFS) -c $< -o $@
 else
 HOST_RTL_DUT_OBJS :=
 HOST_RTL_DUT_STUB :=

@@ -413,8 +413,8 @@ static int write_results(hl *h)
 {
     char path[4200];
     snprintf(path, sizeof path, "%s/vectors.actual.bin", h->dir);
-    ef_cli_atomic af;
-    if (ef_cli_atomic_open(&af, path) != 0)
+    ef_util_atomic af;
+    if (ef_util_atomic_open(&af, path) != 0)
         return fail(h, EF_HX_OUTPUT, "cannot write vectors.actual.bin: %s", strerror(errno));
     uint8_t hd[EF_VEC_BIN_HEADER];
     ef_vec_info info = h->info;
@@ -430,10 +430,10 @@ static int write_results(hl *h)
         left -= n;
     }
     if (bad || left) {
-        ef_cli_atomic_abort(&af);
+        ef_util_atomic_abort(&af);
         return fail(h, EF_HX_OUTPUT, "cannot write vectors.actual.bin: %s", strerror(errno));
     }
-    if (ef_cli_atomic_commit(&af) != 0)
+    if (ef_util_atomic_commit(&af) != 0)
         return fail(h, EF_HX_OUTPUT, "cannot write vectors.actual.bin: %s", strerror(errno));
     return 0;
 }
@@ -481,7 +481,7 @@ static int load_vectors(hl *h)
         char buf[900];
         ef_vec_read_error_format(&err, buf, sizeof buf);
         fprintf(stderr, "edgeflag-host: %s\n", buf);
-        ef_vec_dump_free(&d);
+        ef_vec_dump_destroy(&d);
         return err.status == EF_ERR_NOMEM ? EF_HX_INTERNAL : EF_HX_INPUT;
     }
     if (!(d.mask & 1u << EF_IF_CMD) || d.seq[EF_IF_CMD].n == 0) {
@@ -489,14 +489,14 @@ static int load_vectors(hl *h)
                 "edgeflag-host: %s: records no cmd transactions: nothing to send (write it with "
                 "edgeflag vectors, whose default records every interface)\n",
                 path);
-        ef_vec_dump_free(&d);
+        ef_vec_dump_destroy(&d);
         return EF_HX_INPUT;
     }
     const ef_vec_seq *s = &d.seq[EF_IF_CMD];
     h->ncmds = s->n;
     h->cmds = malloc(s->n * EF_PROTO_CMD_BYTES);
     if (!h->cmds) {
-        ef_vec_dump_free(&d);
+        ef_vec_dump_destroy(&d);
         return fail(h, EF_HX_INTERNAL, "out of memory");
     }
     for (size_t k = 0; k < s->n; k++) {
@@ -520,14 +520,14 @@ static int load_vectors(hl *h)
     h->rep->samples = d.samples;
     h->rep->width = d.width;
     h->rep->height = d.height;
-    ef_vec_dump_free(&d);
+    ef_vec_dump_destroy(&d);
     return 0;
 }
 
 static int prepare_dir(hl *h)
 {
     snprintf(h->dir, sizeof h->dir, "%s", h->o->results);
-    if (ef_cli_make_dirs(h->dir) != 0) {
+    if (ef_util_make_dirs(h->dir) != 0) {
         fprintf(stderr, "edgeflag-host: %s: cannot create the results folder: %s\n", h->dir, strerror(errno));
         return EF_HX_OUTPUT;
     }

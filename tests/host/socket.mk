@@ -5,9 +5,9 @@ SOCKBOARD := $(BUILD)/tests/host/sockboard
 
 $(BUILD)/tests/host/sockboard.o: tests/host/sockboard.c
 	@mkdir -p $(dir $@)
-	$(CC) $(CPPFLAGS) $(HOST_CPPFLAGS) $(CFLAGS_ALL) -c $< -o $@
+	$(CC) $(CPPFLAGS) -Ihost -Iboard -Iproto -Iutil $(CFLAGS_ALL) -c $< -o $@
 
-$(SOCKBOARD): $(BUILD)/tests/host/sockboard.o $(HOST_BOARD_OBJ) $(HOST_CLI_OBJ) $(LIB_A)
+$(SOCKBOARD): $(BUILD)/tests/host/sockboard.o $(HOST_BOARD_OBJ) $(UTIL_OBJ) $(VEC_A) $(LIB_A)
 	$(CC) $(LDFLAGS_ALL) -o $@ $^ $(PNG_LIBS) $(EXPAT_LIBS) $(VEC_LIBS) -lz
 
 .PHONY: test-host-socket
