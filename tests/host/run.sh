@@ -30,9 +30,6 @@ done
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/edgeflag-host.XXXXXX") || exit 1
 trap 'rm -rf "$tmp"' EXIT
 cd "$tmp" || exit 1
-ALL=cmd,seg,et_wr,et_rd,plot,span,pix
-"$E" vectors --help | grep -q 'seg' || ALL=cmd,edge,et_wr,et_rd,plot,span,pix
-INTERNAL=${ALL#cmd,}
 
 # run NAME EXPECTED_EXIT STDERR_REGEX -- COMMAND...: the exit code and a line of the message
 run() {

@@ -6,7 +6,7 @@
 # user was told (exit code and message).  docs/board-usb.md, docs/board.md.
 # Budget: 90 s on the 2-core CI machine (about 10 s here).
 set -u
-cd "$(dirname "$0")/../.."
+cd "$(dirname "$0")/../.." || exit 1
 B=${1:-build}
 H=$PWD/$B/edgeflag-host
 EMU=$PWD/$B/tests/host/usb_emu

@@ -4,7 +4,7 @@
 # layers-print).  An "ok" arrow that fails is as much a failure as a
 # "forbidden" one that compiles: both directions are checked.
 set -u
-cd "$(dirname "$0")/../.."
+cd "$(dirname "$0")/../.." || exit 1
 build=${1:-build}
 cc=${CC:-cc}
 declare -A inc
