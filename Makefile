@@ -73,6 +73,7 @@ include cli/module.mk
 include proto/module.mk
 include board/module.mk
 include host/module.mk
+include python/module.mk
 include tests/module.mk
 include bench/module.mk
 

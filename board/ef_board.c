@@ -473,6 +473,8 @@ void ef_board_link_lost(ef_board *b)
     b->res_sent = b->res_acked; /* unacknowledged results go out again on the next link */
 }
 
+void ef_board_rx_idle(ef_board *b) { b->rx_len = 0; }
+
 void ef_board_get_stats(const ef_board *b, ef_board_stats *s)
 {
     *s = b->st;

@@ -23,8 +23,11 @@
 #include "parse.h"
 #include "transport.h"
 
-static const ef_transport_ops *const TRANSPORTS[] = { &ef_transport_usb, &ef_transport_gpio, &ef_transport_sim,
-                                                      &ef_transport_null, &ef_transport_socket };
+static const ef_transport_ops *const TRANSPORTS[] = { &ef_transport_usb,  &ef_transport_gpio,   &ef_transport_sim,
+                                                      &ef_transport_null, &ef_transport_socket, &ef_transport_serial };
+/* the transports of real boards that `list` and `auto` probe (GPIO for auto only with --chip) */
+static const ef_transport_ops *const PROBED[] = { &ef_transport_usb, &ef_transport_gpio, &ef_transport_serial };
+#define NPROBED (sizeof PROBED / sizeof PROBED[0])
 #define NTRANSPORTS (sizeof TRANSPORTS / sizeof TRANSPORTS[0])
 
 typedef struct args {
@@ -51,10 +54,12 @@ static void usage(FILE *f)
           "the board's results as vectors.actual.bin and (verify) checks them as `edgeflag check`.\n"
           "\n"
           "link options:\n"
-          "  --transport T        usb, gpio, sim, null, socket or auto (default auto: the one board present;\n"
+          "  --transport T        usb, gpio, serial, sim, null, socket or auto (default auto: the one board present;\n"
           "                       none or several is an error, never the simulated board)\n"
           "  --device SEL         usb: SERIAL, BUS:DEV or #INDEX (as `list` prints)\n"
           "  --connect ADDR       socket: unix:PATH or tcp:HOST:PORT (docs/board.md 5.5)\n"
+          "  --port TTY           serial: the board's tty (/dev/ttyUSB0; docs/board-serial.md)\n"
+          "  --baud N             serial: line speed (default 3000000)\n"
           "  --vid-pid V:P        usb: vendor and product id in hex (default 1209:0001)\n"
           "  --transfer-size N    usb: bytes per bulk transfer     --in-flight N  transfers in flight\n"
           "  --chip NAME          gpio: chip (gpiochip0 or /dev/gpiochip0)\n"
@@ -122,7 +127,9 @@ static int parse(int argc, char **argv, args *a)
         O_QUIET,
         O_JSON,
         O_HELP,
-        O_SIMDUT
+        O_SIMDUT,
+        O_PORT,
+        O_BAUD
     };
     static const struct option opts[] = { { "transport", required_argument, 0, O_TRANSPORT },
                                           { "device", required_argument, 0, O_DEVICE },
@@ -136,6 +143,8 @@ static int parse(int argc, char **argv, args *a)
                                           { "sim-faults", required_argument, 0, O_SIMFAULTS },
                                           { "sim-dut", required_argument, 0, O_SIMDUT },
                                           { "connect", required_argument, 0, O_CONNECT },
+                                          { "port", required_argument, 0, O_PORT },
+                                          { "baud", required_argument, 0, O_BAUD },
                                           { "results", required_argument, 0, O_RESULTS },
                                           { "resume", no_argument, 0, O_RESUME },
                                           { "frame-cmds", required_argument, 0, O_FRAMECMDS },
@@ -157,7 +166,8 @@ static int parse(int argc, char **argv, args *a)
         switch (c) {
         case O_TRANSPORT:
             if (strcmp(optarg, "auto") != 0 && !find_transport(optarg))
-                return usage_error("--transport must be usb, gpio, sim, null, socket or auto, not '%s'", optarg);
+                return usage_error("--transport must be usb, gpio, serial, sim, null, socket or auto, not '%s'",
+                                   optarg);
             a->transport = optarg;
             break;
         case O_DEVICE: a->link.device = optarg; break;
@@ -197,6 +207,12 @@ static int parse(int argc, char **argv, args *a)
                 return usage_error("--sim-dut must be model or rtl, not '%s'", optarg);
             break;
         case O_CONNECT: a->link.connect = optarg; break;
+        case O_PORT: a->link.port = optarg; break;
+        case O_BAUD: /* any rate the driver takes (docs/board-serial.md section 2) */
+            a->link.baud = ef_util_parse_int(optarg, 50, 100000000, &v) ? (unsigned)v : 0;
+            if (!a->link.baud)
+                return usage_error("--baud must be 50..100000000, not '%s'", optarg);
+            break;
         case O_RESULTS: a->results = optarg; break;
         case O_RESUME: a->resume = 1; break;
         case O_FRAMECMDS:
@@ -251,31 +267,36 @@ static int parse(int argc, char **argv, args *a)
 /* Opens the named transport, or for auto the one board present. */
 static int open_link(const args *a, const ef_transport_ops **ops, ef_link **l)
 {
-    char err[512] = "";
+    char err[512] = "", auto_port[64] = "";
+    ef_host_opts lo = a->link;
     const char *name = a->transport ? a->transport : "auto";
     if (strcmp(name, "auto") == 0) {
         ef_found found[16];
         int total = 0, nfound = 0, denied = 0;
         const ef_transport_ops *which = NULL;
-        for (size_t i = 0; i < 2; i++) { /* usb and gpio: real boards only */
-            if (i == 1 && !a->link.chip)
+        for (size_t i = 0; i < NPROBED; i++) { /* usb, gpio and serial: real boards only */
+            if (PROBED[i] == &ef_transport_gpio && !a->link.chip)
                 continue; /* a GPIO bus cannot be told from other GPIO use by looking */
-            const int n = TRANSPORTS[i]->probe(&a->link, found + nfound, 16 - nfound);
+            const int n = PROBED[i]->probe(&a->link, found + nfound, 16 - nfound);
             if (n < 0 && n != EF_HOST_EUNSUPPORTED && n != EF_HOST_ENOTFOUND) {
-                fprintf(stderr, "edgeflag-host: looking for %s boards: %s\n", TRANSPORTS[i]->name, ef_host_strerror(n));
+                fprintf(stderr, "edgeflag-host: looking for %s boards: %s\n", PROBED[i]->name, ef_host_strerror(n));
                 return n == EF_HOST_EACCESS ? EF_HX_ACCESS : EF_HX_NOBOARD;
             }
             for (int k = 0; k < n && nfound < 16; k++, nfound++) {
-                if (found[nfound].ok)
-                    which = TRANSPORTS[i], total++;
-                else if (found[nfound].err == EF_HOST_EACCESS)
+                if (found[nfound].ok) {
+                    which = PROBED[i], total++;
+                    if (which == &ef_transport_serial) /* auto opens the port that answered */
+                        snprintf(auto_port, sizeof auto_port, "%s", found[nfound].where);
+                } else if (found[nfound].err == EF_HOST_EACCESS) {
                     denied++;
+                }
             }
         }
         if (total != 1) {
             fprintf(stderr, "edgeflag-host: --transport auto: %s\n",
                     total ? "several boards answer; choose one with --transport and --device (edgeflag-host list)"
-                          : "no board found (no USB device answers identify; GPIO needs --chip and --lines); "
+                          : "no board found (no USB device or FTDI serial port answers identify; GPIO needs "
+                            "--chip and --lines); "
                             "use --transport sim for the simulated board");
             for (int k = 0; k < nfound; k++) /* what was seen, so the user can tell which */
                 fprintf(stderr, "edgeflag-host:   %s %s %s%s\n", found[k].transport, found[k].where,
@@ -283,10 +304,12 @@ static int open_link(const args *a, const ef_transport_ops **ops, ef_link **l)
             return !total && denied ? EF_HX_ACCESS : EF_HX_NOBOARD;
         }
         *ops = which;
+        if (auto_port[0])
+            lo.port = auto_port;
     } else {
         *ops = find_transport(name);
     }
-    const int r = (*ops)->open(l, &a->link, err, sizeof err);
+    const int r = (*ops)->open(l, &lo, err, sizeof err);
     if (r < 0) {
         fprintf(stderr, "edgeflag-host: %s: %s%s%s\n", (*ops)->name, ef_host_strerror(r), err[0] ? ": " : "", err);
         return ef_host_exit_code(r);
@@ -300,15 +323,15 @@ static int cmd_list(const args *a)
     int total = 0;
     if (a->json)
         fputs("{\"boards\": [", stdout);
-    for (size_t i = 0; i < 2; i++) {
-        const int n = TRANSPORTS[i]->probe(&a->link, found, 32);
+    for (size_t i = 0; i < NPROBED; i++) {
+        const int n = PROBED[i]->probe(&a->link, found, 32);
         if (n == EF_HOST_EUNSUPPORTED) {
             if (!a->json)
-                printf("%s: %s\n", TRANSPORTS[i]->name, TRANSPORTS[i]->version());
+                printf("%s: %s\n", PROBED[i]->name, PROBED[i]->version());
             continue;
         }
         if (n < 0) {
-            fprintf(stderr, "edgeflag-host: list: %s: %s\n", TRANSPORTS[i]->name, ef_host_strerror(n));
+            fprintf(stderr, "edgeflag-host: list: %s: %s\n", PROBED[i]->name, ef_host_strerror(n));
             continue;
         }
         for (int k = 0; k < n && k < 32; k++, total++) {
@@ -317,7 +340,7 @@ static int cmd_list(const args *a)
                        total ? ", " : "", found[k].transport, found[k].where, found[k].ok ? "true" : "false",
                        found[k].desc);
             else
-                printf("%-5s %-14s %s%s\n", found[k].transport, found[k].where, found[k].ok ? "" : "(not ours) ",
+                printf("%-6s %-14s %s%s\n", found[k].transport, found[k].where, found[k].ok ? "" : "(not ours) ",
                        found[k].desc);
         }
     }

@@ -6,7 +6,8 @@
 # saying "built without ..." otherwise (WITH_USB=0 / WITH_GPIO=0 force that).
 HOST_BOARD_SRC := $(wildcard board/*.c proto/*.c)
 HOST_SRC := host/main.c host/host_link.c host/bench_link.c host/transport.c host/transport_sim.c \
-            host/transport_null.c host/transport_socket.c
+            host/transport_null.c host/transport_socket.c \
+            host/transport_stream.c host/transport_serial.c
 # Layer: the public headers, the vectors library, util/, proto/, board/ (the simulated board runs
 # the engine) and its own; never cli/ (tests/layers checks it), model/'s internals or fixed/.
 LAYER_INC_host := -Iinclude/edgeflag -Irtl_vectors -Iutil -Iproto -Iboard -Ihost

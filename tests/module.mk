@@ -88,6 +88,7 @@ include tests/rtl/module.mk
 include tests/regress/module.mk
 include tests/host/module.mk
 include tests/host/socket.mk
+include tests/host/serial.mk
 include tests/sanitize/module.mk
 include tests/portability.mk
 include tests/filter/module.mk
