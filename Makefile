@@ -92,6 +92,8 @@ demo:
 	@bash tools/install-deps.sh
 	@echo "edgeflag demo: building the library, edgeflag and edgeflag-host (make all, about 30 s the first time)"
 	@$(MAKE) --no-print-directory -s all
+	@# install-deps.sh's default mode installs libusb and libgpiod, so the host has its board links
+	@$(EDGEFLAG_HOST) --version | sed -n 's/^  \(usb\|gpio\) */edgeflag demo: edgeflag-host \1: /p'
 	@mkdir -p $(DEMO_OUT)
 	@for n in 8 16 32; do \
 	    $(EDGEFLAG) render tests/data/svg/tiger.svg -o $(DEMO_OUT)/tiger_$$n.png --samples $$n --size 640x480 || exit 1; \

@@ -6,6 +6,12 @@
 # when `verilator` is on the PATH.  Without it, dut_rtl.c is a stub, --version
 # says so and `--sim-dut rtl` is an error naming `make host-rtl`.
 #
+# The setting is a build option that stays: `make host-rtl` or `make
+# WITH_RTL_DUT=1|auto|0` on the command line writes it to $(BUILD)/options.mk,
+# and every later `make` of that BUILD reads it from there (so a plain `make`
+# no longer relinks edgeflag-host without the RTL).  `make WITH_RTL_DUT=0`
+# turns it off again; `make clean` forgets it.
+#
 # RTL_DUT_NS       sample counts to build a model for (one Verilated model each)
 # RTL_DUT_W_MAX .. the RTL's parameters (what identify then says)
 # RTL_DUT_SRC      the RTL's folder
@@ -14,6 +20,16 @@
 ifndef EF_HOST_RTL_DUT_MK
 EF_HOST_RTL_DUT_MK := 1
 
+EF_OPTIONS := $(BUILD)/options.mk
+-include $(EF_OPTIONS)
+ifeq ($(origin WITH_RTL_DUT),command line)
+# given by the user (a sub-make's copy of the line is not a new choice)
+ifeq ($(MAKELEVEL),0)
+$(shell mkdir -p $(BUILD) && echo 'WITH_RTL_DUT_SAVED := $(WITH_RTL_DUT)' >$(EF_OPTIONS))
+endif
+else ifneq ($(WITH_RTL_DUT_SAVED),)
+WITH_RTL_DUT := $(WITH_RTL_DUT_SAVED)
+endif
 WITH_RTL_DUT ?= 0
 RTL_DUT_NS ?= 8 16 32
 RTL_DUT_W_MAX ?= 1024
@@ -101,12 +117,15 @@ HOST_RTL_FLAG_TEXT := $(HOST_RTL_HAVE) $(RTL_DUT_NS) $(RTL_DUT_W_MAX) $(RTL_DUT_
 $(shell mkdir -p $(dir $(RTL_DUT_DIR)) && { [ "$$(cat $(HOST_RTL_FLAG) 2>/dev/null)" = "$(HOST_RTL_FLAG_TEXT)" ] || \
     echo "$(HOST_RTL_FLAG_TEXT)" >$(HOST_RTL_FLAG); })
 
-# edgeflag-host with the RTL DUT, or a clear error without Verilator.
+# edgeflag-host with the RTL DUT (remembered, as `make WITH_RTL_DUT=1`), or a clear error without
+# Verilator.
 .PHONY: host-rtl
 host-rtl:
 	@command -v $(VERILATOR) >/dev/null 2>&1 || { echo "make host-rtl: verilator is not installed" \
 	    "(Debian: apt-get install verilator; tools/install-deps.sh test)"; exit 1; }
+	@mkdir -p $(BUILD) && echo 'WITH_RTL_DUT_SAVED := 1' >$(EF_OPTIONS)
 	+@$(MAKE) --no-print-directory WITH_RTL_DUT=1 host
+	@echo "make host-rtl: edgeflag-host has the RTL DUT; later builds of $(BUILD) keep it (make WITH_RTL_DUT=0 drops it)"
 
 # At most 90 s with the Verilator build (tests/host/rtl.sh builds what it
 # needs: edgeflag-host with the RTL DUT, one with a planted RTL fault, one

@@ -166,7 +166,7 @@ run "results folder blocked by a file: exit 4" 4 'cannot create the results fold
     "$H" stream small/vectors.bin --transport sim --results blocker/sub
 run "--interfaces without pix: exit 2" 2 'including pix' -- \
     "$H" verify small/vectors.bin --transport sim --interfaces span
-run "unknown transport: exit 2" 2 'must be usb, gpio, sim' -- "$H" stream small/vectors.bin --transport tcp
+run "unknown transport: exit 2" 2 'must be usb, gpio, serial, sim' -- "$H" stream small/vectors.bin --transport tcp
 # a board whose result differs: one pix payload bit changed in the expected file (CRCs
 # made right again by Python's zlib, an implementation of CRC-32 independent of ours)
 python3 - small/vectors.bin wrong.bin <<'EOF'

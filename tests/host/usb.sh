@@ -49,7 +49,7 @@ S="--transport usb --quiet"
 # ---- list: finds the board, prints what --device accepts and its DUT
 emu --report "$T/l.rep" --run "'$H' list >'$T/l.out' 2>&1"
 expect "list exit" 0 "$(kv "$T/l.rep" run1_exit)"
-has "list" "$T/l.out" "usb   1:4            #0 1209:0001 serial EMU0001, protocol 1, samples 8/16/32, canvas up to 16384x16384, 4194304 edges, window 16"
+has "list" "$T/l.out" "usb    1:4            #0 1209:0001 serial EMU0001, protocol 1, samples 8/16/32, canvas up to 16384x16384, 4194304 edges, window 16"
 expect "list identifies once" 1 "$(kv "$T/l.rep" identify)"
 expect "list sends no data" 0 "$(kv "$T/l.rep" out_bytes)"
 emu --bus 0 --serial A1 --serial B2 --report "$T/l2.rep" --run "'$H' list --json >'$T/l2.out' 2>&1"
