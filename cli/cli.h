@@ -33,9 +33,10 @@ enum {
 /* Subcommands: argv[0] is the command name; return an exit code. */
 int ef_cli_render(int argc, char **argv);
 int ef_cli_patterns(int argc, char **argv);
-int ef_cli_gen(int argc, char **argv);     /* cmd_gen.c, docs/gen.md */
-int ef_cli_check(int argc, char **argv);   /* cmd_check.c, docs/vectors.md section 7 */
-int ef_cli_vectors(int argc, char **argv); /* cmd_vectors.c, docs/vectors.md */
+int ef_cli_gen(int argc, char **argv);      /* cmd_gen.c, docs/gen.md */
+int ef_cli_check(int argc, char **argv);    /* cmd_check.c, docs/vectors.md section 7 */
+int ef_cli_vectors(int argc, char **argv);  /* cmd_vectors.c, docs/vectors.md */
+int ef_cli_coverage(int argc, char **argv); /* cmd_coverage.c, dv/coverage/points.tsv */
 
 /* The subcommands' option parsers, separate from what the commands do so that
  * tests/fuzz/fuzz_cli_args.c can drive them without touching any file.  Each

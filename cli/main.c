@@ -21,6 +21,7 @@ static const command commands[] = {
     { "gen", ef_cli_gen, "write seeded regression scenes (directed corner cases, random)" },
     { "vectors", ef_cli_vectors, "write cycle-level test vectors (hex, VCD, binary) of a scene" },
     { "check", ef_cli_check, "compare an RTL's vector dumps with the expected vectors" },
+    { "coverage", ef_cli_coverage, "functional coverage of vector sets (the spec's cover points)" },
 };
 #define NCOMMANDS (sizeof commands / sizeof commands[0])
 

@@ -13,8 +13,11 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "atomic_file.h"
 #include "bench_link.h"
 #include "check_files.h"
+#include "ef_vec_read.h"
+#include "image_write.h"
 #include "dut_rtl.h"
 #include "edgeflag.h"
 #include "ef_check.h"
@@ -31,9 +34,11 @@ static const ef_transport_ops *const PROBED[] = { &ef_transport_usb, &ef_transpo
 #define NTRANSPORTS (sizeof TRANSPORTS / sizeof TRANSPORTS[0])
 
 typedef struct args {
-    const char *cmd, *vectors, *transport, *results, *junit, *diff_image, *interfaces;
+    const char *cmd, *vectors, *transport, *results, *junit, *diff_image, *interfaces, *save_frame;
     ef_util_format diff_fmt;
     int32_t errors; /* -1: check's default */
+    long digest;    /* -1: not given (digest mode on a serial line, full records elsewhere) */
+    unsigned digest_fetch;
     ef_host_opts link;
     int resume, quiet, json, transactions;
     unsigned frame_cmds;
@@ -76,6 +81,10 @@ static void usage(FILE *f)
           "  --interfaces LIST    verify: interfaces to ask back and check (must include pix;\n"
           "                       default pix and every internal one the file and the board have)\n"
           "  --junit FILE, --diff-image FILE.png, --errors N, --transactions: as edgeflag check\n"
+          "  --save-frame FILE.png  verify: the board's pix results as an image\n"
+          "  --digest N|off       verify: the board returns a CRC-32 per N transactions, differing\n"
+          "                       windows are fetched whole (docs/board.md 4.5; default 1024 on a\n"
+          "                       serial line, off elsewhere)   --digest-fetch K  windows fetched (16)\n"
           "  --mib N              bench: MiB per throughput test (default 64)\n"
           "  --quiet              no progress bar and no summary     --json  summary as JSON on stdout\n"
           "\n"
@@ -129,7 +138,10 @@ static int parse(int argc, char **argv, args *a)
         O_HELP,
         O_SIMDUT,
         O_PORT,
-        O_BAUD
+        O_BAUD,
+        O_DIGEST,
+        O_DIGESTFETCH,
+        O_SAVEFRAME
     };
     static const struct option opts[] = { { "transport", required_argument, 0, O_TRANSPORT },
                                           { "device", required_argument, 0, O_DEVICE },
@@ -145,6 +157,9 @@ static int parse(int argc, char **argv, args *a)
                                           { "connect", required_argument, 0, O_CONNECT },
                                           { "port", required_argument, 0, O_PORT },
                                           { "baud", required_argument, 0, O_BAUD },
+                                          { "digest", required_argument, 0, O_DIGEST },
+                                          { "digest-fetch", required_argument, 0, O_DIGESTFETCH },
+                                          { "save-frame", required_argument, 0, O_SAVEFRAME },
                                           { "results", required_argument, 0, O_RESULTS },
                                           { "resume", no_argument, 0, O_RESUME },
                                           { "frame-cmds", required_argument, 0, O_FRAMECMDS },
@@ -212,6 +227,23 @@ static int parse(int argc, char **argv, args *a)
             a->link.baud = ef_util_parse_int(optarg, 50, 100000000, &v) ? (unsigned)v : 0;
             if (!a->link.baud)
                 return usage_error("--baud must be 50..100000000, not '%s'", optarg);
+            break;
+        case O_DIGEST:
+            if (strcmp(optarg, "off") == 0)
+                v = 0;
+            else if (!ef_util_parse_int(optarg, 1, 1 << 24, &v))
+                return usage_error("--digest must be 1..16777216 transactions a window or off, not '%s'", optarg);
+            a->digest = v;
+            break;
+        case O_DIGESTFETCH:
+            if (!ef_util_parse_int(optarg, 1, EF_PROTO_SELECT_MAX, &v))
+                return usage_error("--digest-fetch must be 1..1024 windows, not '%s'", optarg);
+            a->digest_fetch = (unsigned)v;
+            break;
+        case O_SAVEFRAME:
+            if (ef_util_format_from_path(optarg) != EF_UTIL_FMT_PNG || !ef_util_format_available(EF_UTIL_FMT_PNG))
+                return usage_error("--save-frame needs a FILE.png (and a build with libpng), not '%s'", optarg);
+            a->save_frame = optarg;
             break;
         case O_RESULTS: a->results = optarg; break;
         case O_RESUME: a->resume = 1; break;
@@ -441,6 +473,39 @@ static int verify_results(const args *a, const char *actual, uint32_t mask)
     return out != EF_HX_OK ? out : check_exit(st);
 }
 
+/* verify --save-frame: the board's pix results (RESULTS/vectors.actual.bin) as a PNG, atomically. */
+static int save_frame(const char *actual, const char *path)
+{
+    ef_vec_dump d;
+    ef_vec_read_error re;
+    ef_image img;
+    ef_util_atomic af;
+    char err[900] = "";
+    memset(&d, 0, sizeof d);
+    int bad = ef_vec_read_path(actual, NULL, -1, -1, &d, &re) != EF_OK;
+    if (bad)
+        ef_vec_read_error_format(&re, err, sizeof err);
+    else if (ef_check_frame_image(&d, &img, err, sizeof err) != 0)
+        bad = 1;
+    ef_vec_dump_destroy(&d);
+    if (!bad) {
+        if (ef_util_atomic_open(&af, path) != 0) {
+            snprintf(err, sizeof err, "%s", strerror(errno));
+            bad = 1;
+        } else if (ef_util_write_image(af.fp, EF_UTIL_FMT_PNG, &img, err, sizeof err) != 0) {
+            ef_util_atomic_abort(&af);
+            bad = 1;
+        } else if (ef_util_atomic_commit(&af) != 0) {
+            snprintf(err, sizeof err, "%s", strerror(errno));
+            bad = 1;
+        }
+        ef_image_destroy(&img);
+    }
+    if (bad)
+        fprintf(stderr, "edgeflag-host: --save-frame %s: %s\n", path, err);
+    return bad ? EF_HX_OUTPUT : EF_HX_OK;
+}
+
 static int cmd_stream(args *a, int verify)
 {
     if (!a->vectors)
@@ -461,6 +526,8 @@ static int cmd_stream(args *a, int verify)
             return usage_error("--interfaces must be a comma-separated list of interfaces including pix, not '%s'",
                                a->interfaces);
     }
+    if (!verify && (a->digest > 0 || a->save_frame))
+        return usage_error("%s: --digest and --save-frame are verify's", a->cmd);
     const ef_transport_ops *ops;
     ef_link *l;
     int code = open_link(a, &ops, &l);
@@ -472,9 +539,20 @@ static int cmd_stream(args *a, int verify)
         if (ops->identify(l, raw) == 0 && ef_host_ident_parse(raw, &id) == 0)
             mask |= file_mask(a->vectors) & id.iface_mask & ~(1u << EF_IF_CMD);
     }
-    ef_host_stream_opts so = {
-        a->vectors, results, mask, a->resume, a->frame_cmds, a->link.timeout_ms, !a->quiet && isatty(2), a->quiet
-    };
+    const int auto_digest = a->digest < 0 && verify && ops == &ef_transport_serial; /* a slow line */
+    ef_host_stream_opts so = { a->vectors,
+                               results,
+                               mask,
+                               a->resume,
+                               a->frame_cmds,
+                               a->link.timeout_ms,
+                               !a->quiet && isatty(2),
+                               a->quiet,
+                               auto_digest     ? 1024u
+                               : a->digest > 0 ? (uint32_t)a->digest
+                                               : 0u,
+                               auto_digest,
+                               a->digest_fetch };
     ef_host_stream_report rep;
     code = ef_host_stream(ops, l, &so, &rep);
     ops->close(l);
@@ -493,16 +571,22 @@ static int cmd_stream(args *a, int verify)
         fflush(stdout);
         check = verify_results(a, actual, mask);
         code = check;
+        if (a->save_frame && (code == EF_HX_OK || code == EF_HX_MISMATCH)) {
+            const int s = save_frame(actual, a->save_frame);
+            code = s ? s : code;
+        }
     }
     if (a->json)
         printf("{\"command\": \"%s\", \"transport\": \"%s\", \"exit\": %d, \"vectors\": \"%s\", \"results\": \"%s\", "
                "\"interfaces\": \"%s\", \"commands\": %" PRIu64 ", \"frames_sent\": %" PRIu64
                ", \"retransmits\": %" PRIu64 ", \"naks\": %" PRIu64 ", \"timeouts\": %" PRIu64
-               ", \"resumed_from_frame\": %" PRIu64 ", \"result_records\": %" PRIu64 ", \"result_bytes\": %" PRIu64
-               ", \"seconds\": %.6f, "
+               ", \"resumed_from_frame\": %" PRIu64 ", \"digest\": %" PRIu32 ", \"digest_windows\": %" PRIu64
+               ", \"digest_differ\": %" PRIu64 ", \"digest_fetched\": %" PRIu64 ", \"result_records\": %" PRIu64
+               ", \"result_bytes\": %" PRIu64 ", \"seconds\": %.6f, "
                "\"check\": %s}\n",
                a->cmd, ops->name, code, a->vectors, results, names, rep.cmds, rep.frames_sent, rep.retransmits,
-               rep.naks, rep.timeouts, rep.resumed_from, rep.records, rep.result_bytes, rep.seconds,
+               rep.naks, rep.timeouts, rep.resumed_from, rep.digest, rep.digest_windows, rep.digest_differ,
+               rep.digest_fetched, rep.records, rep.result_bytes, rep.seconds,
                check < 0           ? "null"
                : check == EF_HX_OK ? "\"pass\""
                                    : "\"fail\"");
@@ -564,6 +648,7 @@ int main(int argc, char **argv)
     }
     args a;
     memset(&a, 0, sizeof a);
+    a.digest = -1;
     a.cmd = argv[1];
     a.errors = -1;
     const int r = parse(argc - 1, argv + 1, &a);

@@ -97,6 +97,13 @@ EF_API int ef_check_junit(const ef_check_result *res, FILE *f);
  * size is unknown). */
 EF_API int ef_check_diff_image(const ef_check_result *res, ef_image *img, char *err, size_t errsize);
 
+/* Draws a dump's frame (every pix transaction, the last of a pixel winning,
+ * premultiplied as the frame buffer holds it) into *img (allocated here, the
+ * dump's width x height; release with ef_image_destroy): edgeflag-host
+ * verify's --save-frame.  0, or -1 with a message in err and errno. */
+struct ef_vec_dump;
+EF_API int ef_check_frame_image(const struct ef_vec_dump *d, ef_image *img, char *err, size_t errsize);
+
 /* Frees what the run kept; res is then empty. */
 EF_API void ef_check_result_destroy(ef_check_result *res);
 

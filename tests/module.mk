@@ -93,3 +93,4 @@ include tests/sanitize/module.mk
 include tests/portability.mk
 include tests/filter/module.mk
 include tests/layers/module.mk
+include tests/cov/module.mk

@@ -173,6 +173,8 @@ class Scoreboard:
         self.pending = {n: [] for n in ("cmd",) + OBSERVED}
         self.checked = {n: 0 for n in ("cmd",) + OBSERVED}
         self.log = log
+        self.due = None    # (cycle, iface) of the earliest expected transfer not yet made, cached:
+        self.dirty = True  # recomputed only after a match or a command, not every cycle
 
     def command(self, t):
         """A command the DUT accepted: the model gets the same word, then waiting transfers drain."""
@@ -186,6 +188,7 @@ class Scoreboard:
 
     def observe(self, t):
         self.pending[t.NAME].append(t)
+        self.dirty = True
         self._match(t.NAME)
 
     def _match(self, name):
@@ -199,8 +202,10 @@ class Scoreboard:
                 return
             q.pop(0)
             self.checked[name] += 1
+            self.dirty = True
 
     def drain(self):
+        self.dirty = True
         for n in self.pending:
             self._match(n)
 
@@ -208,13 +213,19 @@ class Scoreboard:
         """Cycle-exact mode: an expected transfer whose cycle is over and that the DUT did not make."""
         if not self.check_cycles:
             return
-        for n in OBSERVED:
-            if self.pending[n]:
-                continue
-            t = self.model.peek(n)
-            if t is not None and t is not ef.ModelStream.END and t.cycle < cycle:
-                raise BenchFailure(f"{n}: cycle {t.cycle}: missing transaction: expected {t.describe()}; the DUT "
-                                   f"made none by cycle {cycle}", n, t.cycle)
+        if self.dirty:
+            self.dirty = False
+            self.due = None
+            for n in OBSERVED:
+                if self.pending[n]:
+                    continue
+                t = self.model.peek(n)
+                if t is not None and t is not ef.ModelStream.END and (self.due is None or t.cycle < self.due[0]):
+                    self.due = (t.cycle, n, t)
+        if self.due is not None and self.due[0] < cycle:
+            c, n, t = self.due
+            raise BenchFailure(f"{n}: cycle {c}: missing transaction: expected {t.describe()}; the DUT "
+                               f"made none by cycle {cycle}", n, c)
 
     def finish(self):
         self.drain()

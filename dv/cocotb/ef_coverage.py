@@ -74,13 +74,14 @@ class CoverageModel:
         self.cells = {}
         self.row_plots = {}
 
-    def hit(self, name):
+    def hit(self, name, n=1):
         s = self.samplers.get(name)
         if s is None:
             self.unknown.add(name)  # a name the code uses that the TSV does not define: an error at export
             return
-        s(True)
-        self.hits[name] += 1
+        for _ in range(n):
+            s(True)
+        self.hits[name] += n
 
     def _begin_shape(self):
         self.in_shape = True
@@ -89,6 +90,7 @@ class CoverageModel:
         self.spans = 0
         self.span_rows = set()
         self.rd_rows = {}
+        self.rd_first = None
 
     def _end_shape(self):
         if not self.in_shape:
@@ -102,10 +104,6 @@ class CoverageModel:
             self.hit("shape.degenerate")
         if self.spans and len(self.span_rows) == 1:
             self.hit("shape.one_row")
-        if any(v >= 2 for v in self.rd_rows.values()):
-            self.hit("et.slot_multi")
-        if len(self.rd_rows) >= 2:
-            self.hit("et.join_late")
 
     # ---------------------------------------------------------------- listener
     def __call__(self, t):
@@ -196,29 +194,36 @@ class CoverageModel:
             self.hit("div.x_neg")
         if abs(t.x) >= 1 << 22:
             self.hit("div.x_big")
-        # the DDA of spec 5/6.1 over the record's sample rows: q before the clamp
-        x, e, left, right = t.x, t.e, False, False
+        # the DDA of spec 5/6.1 over the record's sample rows: q before the clamp, counted per
+        # sample row (as edgeflag coverage counts)
+        x, e, left, right = t.x, t.e, 0, 0
         for r in range(t.r0, t.r1 + 1):
             q = (x + self.off[r % self.n]) >> 8
             if q < 0:
-                left = True
+                left += 1
             elif q > self.w:
-                right = True
-            if left and right:
-                break
+                right += 1
             x += t.qs
             e += t.rs
             if e >= t.dy:
                 e -= t.dy
                 x += 1
         if left:
-            self.hit("clamp.left")
+            self.hit("clamp.left", left)
         if right:
-            self.hit("clamp.right")
+            self.hit("clamp.right", right)
 
     def on_et_rd(self, t):
-        if self.in_shape:
-            self.rd_rows[t.row] = self.rd_rows.get(t.row, 0) + 1
+        # counted as edgeflag coverage counts them: a row when its second edge joins, and every
+        # edge that joins in a row after the shape's first et_rd row
+        k = self.rd_rows.get(t.row, 0) + 1
+        self.rd_rows[t.row] = k
+        if k == 2:
+            self.hit("et.slot_multi")
+        if self.rd_first is None:
+            self.rd_first = t.row
+        elif t.row > self.rd_first:
+            self.hit("et.join_late")
 
     def on_plot(self, t):
         if t.q == 0:
@@ -249,40 +254,42 @@ class CoverageModel:
             self.row_plots = {}
 
     def _fill_row(self):
-        """The filler's accumulation of the row (non-zero lanes), true winding numbers and
-        crossing counts of its visible samples."""
+        """The filler's pass over the row (spec 6.2, 6.3, 7.2), sampled as edgeflag coverage samples
+        it: at every cell the row's plots touched (the sink W included), for every sample row s, the
+        lane accumulator (pad carry, signed overflow) and the true winding number (non-zero) or the
+        crossing count (even-odd) accumulated up to that cell."""
+        net = {}
         for s, plots in self.row_plots.items():
-            net, count = {}, {}
             for q, d in plots:
-                net[q] = net.get(q, 0) + (-1 if d else 1)
-                count[q] = count.get(q, 0) + 1
-            if self.rule == 0:
-                acc = 0
-                for q in sorted(net):
-                    cell = self.cells.get((q, s), 0)
-                    if acc + cell >= 128:
+                k = (q, s)
+                net[k] = net.get(k, 0) + ((-1 if d else 1) if self.rule == 0 else 1)
+        touched = sorted({q for plots in self.row_plots.values() for q, _ in plots})
+        n = self.n
+        acct = [0] * n
+        if self.rule == 0:
+            accr = [0] * n
+            cells = self.cells
+            for q in touched:
+                for s in range(n):
+                    raw = cells.get((q, s), 0)
+                    if accr[s] + raw >= 128:
                         self.hit("wind.acc_pad_carry")
-                    if not -64 <= _s7(acc) + _s7(cell) <= 63:
+                    if not -64 <= _s7(accr[s]) + _s7(raw) <= 63:
                         self.hit("wind.acc_ovf")
-                    acc = (acc + cell) & 127
-                run = 0
-                for q in sorted(net):
-                    if q >= self.w:
-                        break
-                    run += net[q]
-                    if abs(run) == 63:
+                    accr[s] = (accr[s] + raw) & 127
+                    acct[s] += net.get((q, s), 0)
+                    a = abs(acct[s])
+                    if a == 63:
                         self.hit("wind.true_63")
-                    elif abs(run) == 64:
+                    elif a == 64:
                         self.hit("wind.true_64")
-                    if run and run % 128 == 0:
+                    if a and a % 128 == 0:
                         self.hit("wind.true_mod128")
-            else:
-                run = 0
-                for q in sorted(count):
-                    if q >= self.w:
-                        break
-                    run += count[q]
-                    if run >= 3 and run % 2:
+        else:
+            for q in touched:
+                for s in range(n):
+                    acct[s] += net.get((q, s), 0)
+                    if acct[s] >= 3 and acct[s] % 2:
                         self.hit("eo.odd_gt1")
 
     def on_span(self, t):

@@ -200,14 +200,32 @@ def test_model_side_mismatches_and_nothing_checked(monkeypatch):
 @pytest.mark.skipif(SET != "regress", reason="make cocotb-regress")
 @pytest.mark.parametrize("ns", [8, 16, 32])
 def test_regress_level1(ns):
+    """Every level-1 gen case whose canvas fits the bench's 256x256 at this NS, the rule setting
+    rotating over scene/nonzero/evenodd with the case number.  EF_COCOTB_MAX_CYCLES=C leaves out the
+    cases longer than C cycles (counted and printed), EF_COCOTB_SLICE=K keeps every Kth case."""
     skip = {"canvas-max", "zigzag-4096", "same-cell-4096"}  # over the bench's W_MAX/H_MAX, or slow
-    cases = []
+    cap = int(os.environ.get("EF_COCOTB_MAX_CYCLES", "0"))
+    every = int(os.environ.get("EF_COCOTB_SLICE", "1"))
     rules = ("scene", "nonzero", "evenodd")
+    cases, left_out, empty = [], [], []
     for c in ef.gen_cases(level=1):
         if any(c.name.startswith(s) for s in skip) or c.scene.width > WM or c.scene.height > HM:
             continue
-        for rule in rules:
-            cases.append(gen_case(c.number, rule))
+        if c.number % every:
+            continue
+        rule = rules[(c.number + ns // 8) % 3]
+        if cap and ef.trace(c.scene, samples=ns, rule=None if rule == "scene" else rule,
+                            interfaces=["cmd"]).cycles > cap:
+            left_out.append(c.number)
+            continue
+        if sum(ef.trace(c.scene, samples=ns, interfaces=["seg", "pix"]).counts().values()) == 0:
+            empty.append(c.number)  # a frame with nothing to check: the bench would (rightly) fail it
+            continue
+        cases.append(gen_case(c.number, rule))
+    print(f"regress NS {ns}: {len(cases)} cases, {len(left_out)} left out over {cap} cycles: {left_out}, "
+          f"{len(empty)} with nothing to check: {empty}")
+    (OUT / f"regress_ns{ns}.left_out.json").parent.mkdir(parents=True, exist_ok=True)
+    (OUT / f"regress_ns{ns}.left_out.json").write_text(json.dumps({"cap": cap, "cases": left_out, "empty": empty}))
     run("verilator", ns, cases, f"regress_ns{ns}")
 
 
@@ -216,6 +234,39 @@ def test_measure():
     size = [int(v) for v in os.environ.get("EF_MEASURE_SIZE", "64x48").split("x")]
     c = {"name": "measure", "file": os.environ.get("EF_MEASURE_SVG", str(SVG / "tiger.svg")), "size": size}
     run("verilator", 8, [c], "measure")
+
+
+@pytest.mark.skipif(SET == "measure", reason="a measurement")
+def test_coverage_model_agrees_with_edgeflag_coverage(tmp_path):
+    """One coverage model: the bench's (ef_coverage.py, fed the model's transactions in cycle order,
+    as its monitors see them from a DUT that passes) and `edgeflag coverage`'s (cli/cmd_coverage.c,
+    issue 27) give the same count for every point of points.tsv on the same vectors."""
+    from ef_coverage import CoverageModel
+    runs = [(ef.Scene.load(SVG / f"{f}.svg", fit=(24, 18)), n, r) for f, n, r in
+            [("lion", 8, None), ("tiger", 16, "evenodd"), ("stress_pixi_fill_rule_star_nonzero", 32, "nonzero"),
+             ("antiloop2", 8, None)]]
+    runs += [(c.scene, n, None) for c in ef.gen_cases(level=1, select=[0, 17, 22, 35, 36, 44, 47, 52, 74])
+             for n in (8, 32)]
+    compared = 0
+    for k, (scene, n, rule) in enumerate(runs):
+        tr = ef.trace(scene, samples=n, rule=rule)
+        d = tmp_path / str(k)
+        tr.write(d, formats=("hex",))
+        cm = CoverageModel(n, EM)
+        for t in tr.merged():
+            cm(t)
+        p = subprocess.run([str(BUILD / "edgeflag"), "coverage", str(d)], capture_output=True, text=True)
+        assert p.returncode == 0, p.stderr
+        theirs = {}
+        for ln in p.stdout.splitlines():
+            f = ln.split()
+            if len(f) >= 3 and f[1] in cm.hits:
+                theirs[f[1]] = int(f[2])
+        assert set(theirs) == set(cm.hits), "the two tools list different points"
+        diff = {x: (cm.hits[x], theirs[x]) for x in cm.hits if cm.hits[x] != theirs[x]}
+        assert not diff, f"run {k} (NS {n}): bench vs edgeflag coverage: {diff}"
+        compared += sum(1 for v in theirs.values() if v)
+    assert compared > 100
 
 
 # ------------------------------------------------------------------ the report

@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import decimal
 import fractions
+import gc
 import os
 import collections
 
@@ -155,12 +156,30 @@ class _TxnBase(tuple):
         return t
 
 
+def _codecs(fields):
+    """payload() and from_payload() of one interface, written out as straight-line Python (the
+    shifts, masks and sign extensions of its fields), for speed: a bench calls them per transfer."""
+    pay = " | ".join(f"((self[{k + 1}] & {(1 << f.width) - 1}) << {f.shift})" for k, f in enumerate(fields)) or "0"
+    body = []
+    for k, f in enumerate(fields):
+        body.append(f"    f{k} = (p >> {f.shift}) & {(1 << f.width) - 1}")
+        if f.signed:
+            body.append(f"    f{k} -= (f{k} & {1 << (f.width - 1)}) << 1")
+    names = "".join(f"f{k}, " for k in range(len(fields)))
+    src = (f"def payload(self):\n    return {pay}\n"
+           f"def from_payload(cls, cycle, p):\n" + "\n".join(body) + f"\n    return _new(cls, (cycle, {names}))\n")
+    ns = {"_new": tuple.__new__}
+    exec(compile(src, "<edgeflag codecs>", "exec"), ns)
+    return ns["payload"], classmethod(ns["from_payload"])
+
+
 IFACES = []  # interface names in pipeline order: "cmd", "seg", ...
 TXN = {}     # name -> transaction type (TXN["plot"] is Plot)
 for _i, (_name, _from, _to, _width, _fields) in enumerate(_load_ifaces()):
     _base = collections.namedtuple(_class_name(_name) + "Tuple", ["cycle"] + [f.name for f in _fields])
+    _pay, _dec = _codecs(_fields)
     _cls = type(_class_name(_name), (_TxnBase, _base), {
-        "__slots__": (), "IFACE": _i, "NAME": _name, "FIELDS": _fields, "WIDTH": _width,
+        "__slots__": (), "payload": _pay, "from_payload": _dec, "IFACE": _i, "NAME": _name, "FIELDS": _fields, "WIDTH": _width,
         "FROM": _from, "TO": _to, "__repr__": _base.__repr__, "__doc__":
         f"A `{_name}` transaction ({_from} -> {_to}, {_width} bits): cycle, "
         + ", ".join(f"{f.name}[{f.width}]" for f in _fields)})
@@ -200,24 +219,30 @@ def _txn_from_c(t):
 
 
 def _decode_records(iface, rec):
-    """Decodes an (n, 1 + nw) uint64 array of records into typed transactions."""
+    """Decodes an (n, 1 + nw) uint64 array of records into typed transactions: each field is cut
+    out of the payload words with NumPy over the whole array, then the tuples are built."""
     cls = TXN[IFACES[iface]]
-    if len(rec) == 0:
+    n = len(rec)
+    if n == 0:
         return []
-    cyc = rec[:, 0].tolist()
-    words = [rec[:, 1 + k].tolist() for k in range(rec.shape[1] - 1)]
-    make = cls.from_payload
-    out = []
-    if len(words) == 1:
-        for c, p in zip(cyc, words[0]):
-            out.append(make(c, p))
-    else:
-        for j, c in enumerate(cyc):
-            p = 0
-            for k, w in enumerate(words):
-                p |= w[j] << (64 * k)
-            out.append(make(c, p))
-    return out
+    cols = [rec[:, 0].tolist()]
+    for f in cls.FIELDS:
+        k, off = divmod(f.shift, 64)
+        v = rec[:, 1 + k] >> np.uint64(off)
+        if off + f.width > 64:  # the field crosses into the next payload word
+            v = v | (rec[:, 2 + k] << np.uint64(64 - off))
+        v = (v & np.uint64((1 << f.width) - 1)).astype(np.int64)
+        if f.signed:
+            v = v - ((v & (1 << (f.width - 1))) << 1)
+        cols.append(v.tolist())
+    make = cls._make
+    gc_was = gc.isenabled()
+    gc.disable()  # a million small tuples: the cyclic collector would rescan them all, again and again
+    try:
+        return [make(t) for t in zip(*cols)]
+    finally:
+        if gc_was:
+            gc.enable()
 
 
 # -------------------------------------------------------------- coordinates
@@ -831,7 +856,17 @@ class ModelStream:
         """Scoreboard step: compares `actual` (a typed transaction) with the next expected one of
         its interface.  Returns True when equal, None when the model has none yet; raises
         StreamMismatch on a difference or an extra transaction."""
-        t = actual._c()
+        t = self._t
+        t.cycle = actual[0]
+        t.iface = actual.IFACE
+        p = actual.payload()
+        t.w[0] = p & 0xFFFFFFFFFFFFFFFF
+        if p >> 64:
+            t.w[1] = (p >> 64) & 0xFFFFFFFFFFFFFFFF
+            t.w[2] = (p >> 128) & 0xFFFFFFFFFFFFFFFF
+            t.w[3] = p >> 192
+        else:
+            t.w[1] = t.w[2] = t.w[3] = 0
         st = vec.ef_mstream_expect(self._m, t, 1 if check_cycle else 0)
         if st == 0:
             return True

@@ -174,7 +174,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     sealed = data[0] & 1;
     in = data + 1, in_len = size - 1, in_pos = 0;
     unlink(actual);
-    ef_host_stream_opts so = { vec_path, res_dir, EF_IF_ALL & ~1u, 0, 3, 1, 0, 1 };
+    ef_host_stream_opts so = { vec_path, res_dir, EF_IF_ALL & ~1u, 0, 3, 1, 0, 1, 0, 0, 0 }; /* full records */
     ef_host_stream_report rep;
     const int code = ef_host_stream(&FUZZ_OPS, NULL, &so, &rep);
     FUZZ_CHECK(code == 0 || code == 4 || code == 5 || code == 6, "exit code %d", code);

@@ -245,7 +245,9 @@ int main(int argc, char **argv)
     unsigned long long up_pos = 0, down_pos = 0, done_frames = 0;
     int stalled = 0, unplugged = 0, reset_done = 0;
     double stall_end = 0, t_last = now(), tok_up = 0, tok_down = 0, last_rx = now();
-    const double burst = rate > 0 ? (rate / 100 > 64 ? rate / 100 : 64) : 0;
+    /* the bucket holds 50 ms of the line: a relay the scheduler left waiting catches up, as a
+     * UART's buffers do, and the average never exceeds the rate */
+    const double burst = rate > 0 ? (rate / 20 > 64 ? rate / 20 : 64) : 0;
     while (!stop) {
         const double t = now();
         if (rate > 0) {
@@ -291,7 +293,7 @@ int main(int argc, char **argv)
                 ef_board_rx(b, up.b + up.head, up.len);
                 q_drop(&up, up.len);
                 last_rx = t;
-            } else if (t - last_rx > 0.05) { /* a line idle for 50 ms: no frame is still coming */
+            } else if (t - last_rx > 1.0) { /* a line idle for 1 s: no frame is still coming */
                 ef_board_rx_idle(b);
                 last_rx = t;
             }
@@ -342,7 +344,9 @@ int main(int argc, char **argv)
             }
         }
         if (!moved) {
-            struct pollfd p[2] = { { m, POLLIN, 0 }, { bfd, POLLIN, 0 } };
+            /* (room to write to the host wakes it too, unless the rate is what holds the bytes) */
+            const short out = down.len && (rate <= 0 || tok_down >= 1) ? POLLOUT : 0;
+            struct pollfd p[2] = { { m, (short)(POLLIN | out), 0 }, { bfd, POLLIN, 0 } };
             poll(p, bfd >= 0 ? 2 : 1, rate > 0 ? 1 : 5);
         }
     }

@@ -16,6 +16,8 @@ layers-print:
 	@echo "host|$(LAYER_INC_host)"
 	@echo "dpi|$(LAYER_INC_dpi)"
 	@echo "bench|$(LAYER_INC_bench)"
+	@echo "firmware|$(LAYER_INC_firmware)"
+	@echo "python|$(LAYER_INC_python)"
 	@echo "tests|$(EF_INC)"
 
 test-layers: $(CORE_STAGED_H)
