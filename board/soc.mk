@@ -17,7 +17,7 @@ EF_VENV_PY := $(EF_VENV)/bin/python
 BOARD_DIR := $(BUILD)/board/$(BOARD)-ns$(BOARD_NS)
 BOARD_SIM_DIR := $(BUILD)/board/sim-ns$(BOARD_NS)
 BOARD_SOC_SRC := board/soc/soc.py board/soc/ef_periph.py board/soc/ef_gate_ecp5.v board/soc/ef_gate_sim.v \
-                 $(wildcard rtl/*.v)
+                 $(wildcard rtl/*.v) $(wildcard rtl/*.vh)
 BOARD_TOOLS := $(EF_VENV)/.installed-soc build/fpga-bin/nextpnr-ecp5
 
 .PHONY: board-tools firmware bitstream board-sim board-sim-test
@@ -49,7 +49,7 @@ bitstream: $(BOARD_TOOLS)
 # warnings are not ours to fix, so only errors stop the build there (rtl/ has its own -Wall lint).
 BOARD_SIM_VFLAGS := --cc --exe --build -j 2 -O2 --x-assign fast --x-initial fast --no-assert -Wno-fatal \
                     -Wno-lint -Wno-style -Wno-MULTIDRIVEN -Wno-UNOPTFLAT -Wno-COMBDLY -Wno-TIMESCALEMOD \
-                    --top-module sim
+                    --top-module sim -I$(abspath rtl)
 # The ROM is $$readmemh'd from gateware/sim_rom.init when the model starts: a new firmware
 # rewrites that image and needs no new model.
 $(BOARD_SIM_DIR)/gateware/sim.v: $(BOARD_SOC_SRC) | $(BOARD_SIM_DIR)/firmware.bin

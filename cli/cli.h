@@ -37,6 +37,7 @@ int ef_cli_gen(int argc, char **argv);      /* cmd_gen.c, docs/gen.md */
 int ef_cli_check(int argc, char **argv);    /* cmd_check.c, docs/vectors.md section 7 */
 int ef_cli_vectors(int argc, char **argv);  /* cmd_vectors.c, docs/vectors.md */
 int ef_cli_coverage(int argc, char **argv); /* cmd_coverage.c, dv/coverage/points.tsv */
+int ef_cli_rtl_sim(int argc, char **argv);  /* cmd_rtl_sim.c: dv/rtl-sim.sh, this binary the checker */
 
 /* The subcommands' option parsers, separate from what the commands do so that
  * tests/fuzz/fuzz_cli_args.c can drive them without touching any file.  Each
@@ -56,6 +57,7 @@ int ef_cli_render_parse(int argc, char **argv, ef_cli_render_args *a);
 typedef struct ef_cli_patterns_args {
     int32_t samples; /* 0: all three */
     int emit_c;
+    int emit_verilog;
 } ef_cli_patterns_args;
 int ef_cli_patterns_parse(int argc, char **argv, ef_cli_patterns_args *a);
 
@@ -116,7 +118,8 @@ enum {
     EF_OPT_ALLOW_MISSING,
     EF_OPT_NAME,
     EF_OPT_JUNIT,
-    EF_OPT_DIFF_IMAGE
+    EF_OPT_DIFF_IMAGE,
+    EF_OPT_EMIT_VERILOG
 };
 enum { EF_CLI_MAX_OPTIONS = 24 }; /* entries of one command's table */
 

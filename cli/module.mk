@@ -6,6 +6,8 @@ EDGEFLAG := $(BUILD)/edgeflag
 # Layer: the public headers, fixed/, the vector library, util/ and its own.
 LAYER_INC_cli := -Iinclude/edgeflag -Ifixed -Irtl_vectors -Iutil -Icli
 $(CLI_OBJ): EF_INC := $(LAYER_INC_cli)
+# rtl-sim runs dv/rtl-sim.sh of the tree the command was built from
+$(BUILD)/cli/cmd_rtl_sim.o: CPPFLAGS += -DEF_SOURCE_ROOT='"$(CURDIR)"'
 
 cli: $(EDGEFLAG)
 $(EDGEFLAG): $(CLI_OBJ) $(UTIL_OBJ) $(VEC_A) $(LIB_A)

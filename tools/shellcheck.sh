@@ -11,7 +11,7 @@ command -v "$sc" >/dev/null 2>&1 ||
 
 scripts=()
 if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then
-    mapfile -t files < <(git ls-files)
+    mapfile -t files < <(git ls-files | sort -u)
 else
     mapfile -t files < <(find . -path ./build -prune -o -type f -print | sed 's|^\./||')
 fi

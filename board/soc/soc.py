@@ -99,6 +99,8 @@ class EdgeflagSoC(SoCCore):
         for v in ["ef_aet", "ef_cov", "ef_dec", "ef_div", "ef_etm", "ef_plot", "ef_raster", "ef_setup",
                   "ef_slb_fill", "ef_slb_ram"]:
             platform.add_source(os.path.join(ROOT, "rtl", v + ".v"))
+        # rtl/'s modules include ef_ifaces.vh and ef_ns.vh (docs/vectors.md section 8)
+        platform.add_verilog_include_path(os.path.join(ROOT, "rtl"))
         platform.add_source(os.path.join(HERE, "ef_gate_sim.v" if target == "sim" else "ef_gate_ecp5.v"))
         SoCCore.__init__(self, platform, sys_clk,
                          ident="edgeflag board", ident_version=False,

@@ -35,6 +35,19 @@ HERE = pathlib.Path(__file__).resolve().parent
 WM, HM, EM = 256, 256, 16384
 OBSERVED = ("seg", "et_wr", "et_rd", "plot", "span", "pix")
 _built = {}
+# The planted faults are RTL variants (dv/rtl-variant.sh, docs/testing.md "RTL variants"): rtl/
+# holds no fault define.
+FAULT_RECIPE = {"EF_FAULT_ROOKS": "rooks", "EF_FAULT_TOPCLIP": "topclip", "EF_FAULT_SPAN": "span",
+                "EF_FAULT_PAD": "pad"}
+
+
+def rtl_folder(define):
+    """rtl/, or the RTL variant with the planted fault named by define."""
+    if not define:
+        return ROOT / "rtl"
+    d = BUILD / "cocotb" / f"rtl-{FAULT_RECIPE[define]}"
+    subprocess.run(["bash", str(ROOT / "dv" / "rtl-variant.sh"), str(d), FAULT_RECIPE[define]], check=True)
+    return d
 
 
 def build(sim, ns, define=None, emax=EM):
@@ -48,8 +61,9 @@ def build(sim, ns, define=None, emax=EM):
     if sim == "verilator":
         args = ["-Wno-fatal", "-O2", "--x-assign", "fast", "--x-initial", "fast"]
     t0 = time.perf_counter()
-    r.build(verilog_sources=RTL, hdl_toplevel="ef_raster", parameters=params, build_args=args,
-            defines={define: 1} if define else {}, build_dir=d, always=False)
+    src = rtl_folder(define)
+    r.build(verilog_sources=[src / f.name for f in RTL], includes=[src], hdl_toplevel="ef_raster",
+            parameters=params, build_args=args, build_dir=d, always=False)
     _built[key] = (r, d, params, time.perf_counter() - t0)
     return _built[key]
 

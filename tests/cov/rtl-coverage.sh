@@ -62,7 +62,7 @@ RTL=("${files[@]/#/$root/rtl/}")
 # ------------------------------------------------------------ 1. builds
 buildone() {
     [ -n "${EF_COV_REUSE:-}" ] && [ -x "$work/vl_$1/Vtb_raster" ] && return 0
-    verilator --cc --exe --build --timing -O1 -Wno-fatal -Wno-WIDTH --coverage --Mdir "$work/vl_$1" \
+    verilator --cc --exe --build --timing -O1 -Wno-fatal -Wno-WIDTH -I"$root/rtl" --coverage --Mdir "$work/vl_$1" \
         --top-module tb_raster -GNS="$1" -GW_MAX=$WM -GH_MAX=$HM -GE_MAX=$EM -GFB_BITS=16 \
         "$root/dv/tb/tb_raster.v" "${RTL[@]}" "$root/dv/coverage/vl_cov_main.cpp" >"$work/build_$1.log" 2>&1 ||
         { tail -20 "$work/build_$1.log"; return 1; }
@@ -119,7 +119,7 @@ one() {   # one NAME INPUT NS RULE SIZE BP: "PASS NAME", "SKIP NAME why" or "FAI
     if [ "${EF_COV_MAXCYC:-0}" -gt 0 ] && [ "$cyc" -gt "$EF_COV_MAXCYC" ]; then echo "SKIP $1 $cyc cycles"; rm -rf "$d"; return; fi
     [ "$6" != - ] && { pa=(+bp="$6"); mode=--transactions; }
     r=$(cd "$d" && "$work/vl_$3/Vtb_raster" +cmd="$d/cmd.stim.hex" +out="$a/" +covfile="$work/dat/$1.dat" "${pa[@]}" 2>&1)
-    if ! echo "$r" | grep -q '^tb_raster: PASS'; then echo "FAIL $1 bench: $(echo "$r" | grep 'tb_raster' | head -n 1)"
+    if ! echo "$r" | grep -q '^tb_raster: DONE'; then echo "FAIL $1 bench: $(echo "$r" | grep 'tb_raster' | head -n 1)"
     elif ! "$EF" check "$d" "$a" $mode --errors 1 >/dev/null 2>&1; then echo "FAIL $1 edgeflag check $mode"
     else echo "PASS $1"; fi
     rm -rf "$d"

@@ -37,7 +37,7 @@ else tail -15 "$work/lint.log"; ko "fusesoc run --target lint $core"; fi
 mkdir -p "$work/act"
 if "$FS" --cores-root "$root" run --build-root "$work/sim" --target sim_icarus "$core" \
         --cmd="$work/vec/cmd.stim.hex" --out="$work/act/" >"$work/sim.log" 2>&1 &&
-   grep -q '^tb_raster: PASS' "$work/sim.log" &&
+   grep -q '^tb_raster: DONE' "$work/sim.log" &&
    "$EF" check "$work/vec" "$work/act" --cycles >"$work/check.log" 2>&1; then
     ok "fusesoc run --target sim_icarus $core: the bench's dumps pass edgeflag check --cycles ($(tail -n 1 "$work/check.log" | sed 's/^edgeflag check: //'))"
 else tail -15 "$work/sim.log"; tail -3 "$work/check.log" 2>/dev/null; ko "fusesoc run --target sim_icarus $core"; fi

@@ -7,7 +7,7 @@
 #      byte-identical to the model DUT's;
 #   2. a link fault (--sim-faults drop=2): still PASS, the frame sent again; unplugged
 #      mid-commands (exit 5), then --resume with --sim-state: byte-identical results;
-#   3. a planted RTL fault (an edgeflag-host built with the RTL's EF_FAULT_ROOKS: one wrong
+#   3. a planted RTL fault (an edgeflag-host built with the RTL variant dv/faults/rooks.sed: one wrong
 #      n-rooks offset in PLOT): verify exits 1, the earliest mismatch (by cycle) on plot, none
 #      on seg or et_wr (et_rd, span and pix follow: PLOT's back-pressure and its wrong samples);
 #   4. a canvas over the RTL's W_MAX: exit 3, the host refusing it from identify's limits; a
@@ -50,11 +50,13 @@ if ! $MAKE -C "$root" --no-print-directory -j2 BUILD="$build" WITH_RTL_DUT=1 "${
         >"$tmp/build.log" 2>&1; then
     tail -n 30 "$tmp/build.log"; bad "build edgeflag-host with the RTL DUT"; echo "$pass passed, $fail failed"; exit 1
 fi
-# the planted fault: NS 8 only, its own objects and binary
-if ! $MAKE -C "$root" --no-print-directory -j2 BUILD="$build" WITH_RTL_DUT=1 "${src[@]}" RTL_DUT_NS=8 \
-        RTL_DUT_FAULT=EF_FAULT_ROOKS RTL_DUT_OPT=-O0 RTL_DUT_DIR="$build/host/rtl-fault" EDGEFLAG_HOST="$HF" "$HF" \
+# the planted fault: NS 8 only, its own objects and binary, built from the
+# RTL variant of dv/faults/rooks.sed
+if ! bash "$root/dv/rtl-variant.sh" "$build/host/rtl-fault-src" rooks >"$tmp/build_fault.log" 2>&1 ||
+   ! $MAKE -C "$root" --no-print-directory -j2 BUILD="$build" WITH_RTL_DUT=1 RTL_DUT_SRC="$build/host/rtl-fault-src" RTL_DUT_NS=8 \
+        RTL_DUT_FAULT=rooks RTL_DUT_OPT=-O0 RTL_DUT_DIR="$build/host/rtl-fault" EDGEFLAG_HOST="$HF" "$HF" \
         >"$tmp/build_fault.log" 2>&1; then
-    tail -n 30 "$tmp/build_fault.log"; bad "build edgeflag-host with the RTL DUT and EF_FAULT_ROOKS"
+    tail -n 30 "$tmp/build_fault.log"; bad "build edgeflag-host with the RTL DUT and the planted fault rooks"
 fi
 # without the RTL DUT (a relink: the stub)
 if ! $MAKE -C "$root" --no-print-directory -j2 BUILD="$build" WITH_RTL_DUT=0 RTL_DUT_DIR="$build/host/rtl-none" \
@@ -141,9 +143,9 @@ if [ -x "$HF" ]; then
                 fault.out | sort -n | head -n 1)
     if [ $rc = 1 ] && [ -n "$p" ] && [ "$p" -gt 0 ] && [ "$up" = 00 ] && [ "${first#* }" = plot ] &&
        grep -q 'edgeflag check: FAIL' fault.out; then
-        ok "EF_FAULT_ROOKS in the RTL: verify exit 1, $p mismatches on plot, the earliest at cycle ${first% *} on plot, none on seg or et_wr ($(grep -m1 ": plot: cycle ${first% *}" fault.out | cut -d: -f3- | cut -c1-160))"
+        ok "the planted RTL fault rooks (dv/faults/rooks.sed): verify exit 1, $p mismatches on plot, the earliest at cycle ${first% *} on plot, none on seg or et_wr ($(grep -m1 ": plot: cycle ${first% *}" fault.out | cut -d: -f3- | cut -c1-160))"
     else
-        bad "EF_FAULT_ROOKS in the RTL was not caught on plot" "exit $rc, plot '$p', seg+et_wr '$up', first '$first'; $(head -n 20 fault.out)"
+        bad "the planted RTL fault rooks (dv/faults/rooks.sed) was not caught on plot" "exit $rc, plot '$p', seg+et_wr '$up', first '$first'; $(head -n 20 fault.out)"
     fi
 fi
 

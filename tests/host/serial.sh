@@ -218,6 +218,26 @@ fault "a byte to the host duplicated" dup-down=500 0 'PASS' --digest 64 --timeou
 fault "the board stalls" stall=60 5 'stopped answering.*--resume' --digest 64 --timeout "$SHORT"
 fault "the line unplugged" unplug=60 5 'went away.*--resume' --digest 64
 fault "the board reset mid-run" reset=60 6 'reset or lost its state' --digest 64
+# the fetch run (a select run for the differing window of section 1's altered vectors) unplugged
+# 100 frames in (the digest run is about 300), then resumed: the same report, the same results
+relay --faults unplug=400
+rm -rf rs
+run "the fetch run unplugged: exit 5" 5 'went away.*--resume' -- \
+    "$H" verify bad/vectors.bin "${LINK[@]}" --results rs --errors 5
+if grep -q '^digest 1024 phase 2 nsel 1 ' rs/.resume 2>/dev/null; then
+    ok "the fetch run unplugged: .resume says the select run and its window"
+else
+    bad "the fetch run unplugged: .resume" "$(tail -n 2 rs/.resume 2>&1)"
+fi
+run "the fetch run resumed: exit 1" 1 'pix: .* 1 mismatch' -- \
+    "$H" verify bad/vectors.bin "${LINK[@]}" --results rs --errors 5 --resume
+sed 's|^rs/|R/|' out.txt >resumed-report.txt
+if [ -s resumed-report.txt ] && cmp -s full-report.txt resumed-report.txt; then
+    ok "the fetch run resumed: the same report as full records"
+else
+    bad "the fetch run resumed: the report" "$(cat resumed-report.txt)"
+fi
+same "the fetch run resumed: results identical to full records'" rs/vectors.actual.bin bf/vectors.actual.bin
 
 # ------------------------------------------------------------------ 3. finding boards, errors
 relay

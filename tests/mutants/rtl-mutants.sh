@@ -80,12 +80,12 @@ buildone() {
     [ -x "$work/vl_$1/Vtb_raster" ] && [ -n "${EF_MUT_REUSE:-}" ] && return 0
     if [ "$sim" = icarus ]; then
         mkdir -p "$work/vl_$1"
-        iverilog -g2005 -o "$work/vl_$1/t.vvp" -Ptb_raster.NS="$1" -Ptb_raster.W_MAX=$WM -Ptb_raster.H_MAX=$HM \
+        iverilog -g2005 -I"$root/rtl" -o "$work/vl_$1/t.vvp" -Ptb_raster.NS="$1" -Ptb_raster.W_MAX=$WM -Ptb_raster.H_MAX=$HM \
             -Ptb_raster.E_MAX=$EM -Ptb_raster.FB_BITS=16 "$root/dv/tb/tb_raster.v" "${MUTRTL[@]}" >"$work/build_$1.log" 2>&1 ||
             { tail -20 "$work/build_$1.log"; return 1; }
         return
     fi
-    verilator --binary --timing -O1 -Wno-fatal -Wno-WIDTH --x-assign unique --x-initial unique --Mdir "$work/vl_$1" --top-module tb_raster \
+    verilator --binary --timing -O1 -Wno-fatal -Wno-WIDTH -I"$root/rtl" --x-assign unique --x-initial unique --Mdir "$work/vl_$1" --top-module tb_raster \
         -GNS="$1" -GW_MAX=$WM -GH_MAX=$HM -GE_MAX=$EM -GFB_BITS=16 "$root/dv/tb/tb_raster.v" "${MUTRTL[@]}" \
         >"$work/build_$1.log" 2>&1 || { tail -20 "$work/build_$1.log"; return 1; }
 }
@@ -148,7 +148,7 @@ runmut() {
             out=$(timeout "$t" "$work/vl_$ns/Vtb_raster" +verilator+rand+reset+2 +verilator+seed+$((k + 1)) +mut="$k" \
                 +cmd="$work/vec/$n/cmd.stim.hex" +out="$a/" "${pa[@]}" 2>&1)
         fi
-        if ! echo "$out" | grep -q '^tb_raster: PASS' || ! "$EF" check "$work/vec/$n" "$a" $mode --errors 1 >/dev/null 2>&1; then
+        if ! echo "$out" | grep -q '^tb_raster: DONE' || ! "$EF" check "$work/vec/$n" "$a" $mode --errors 1 >/dev/null 2>&1; then
             rm -rf "$a"; echo "$k killed $n"; return
         fi
         rm -rf "$a"
