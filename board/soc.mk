@@ -33,6 +33,7 @@ board-tools: $(BOARD_TOOLS)
 include board/firmware/firmware.mk
 
 $(BUILD)/board/%/software/include/generated/csr.h: $(BOARD_SOC_SRC) $(BOARD_TOOLS)
+	@mkdir -p $(BUILD)/board
 	$(EF_VENV_PY) board/soc/soc.py --target $(if $(filter sim-%,$*),sim,$(BOARD)) --ns $(BOARD_NS) \
 	    --out $(BUILD)/board/$* --headers-only >$(BUILD)/board/$*.headers.log 2>&1 || \
 	    { tail -n 20 $(BUILD)/board/$*.headers.log; exit 1; }

@@ -87,6 +87,8 @@ typedef struct ef_cli_vectors_args {
     int dump;             /* --dump: the model's output named as a DUT's dumps */
     int filter, subpixel; /* ef_filter, ef_subpixel: box, none (0, 0) by default */
     int rtl_headers;      /* --rtl-headers: only ef_ifaces.vh and ef_ifaces_pkg.sv, no INPUT */
+    int32_t dut_w, dut_h; /* --dut-limits WxH: the DUT's largest canvas (0, 0: none given) */
+    int32_t dut_e;        /* --dut-edges E: the most EDGE commands of a shape (0: none given) */
 } ef_cli_vectors_args;
 int ef_cli_vectors_parse(int argc, char **argv, ef_cli_vectors_args *a);
 
@@ -119,7 +121,9 @@ enum {
     EF_OPT_NAME,
     EF_OPT_JUNIT,
     EF_OPT_DIFF_IMAGE,
-    EF_OPT_EMIT_VERILOG
+    EF_OPT_EMIT_VERILOG,
+    EF_OPT_DUT_LIMITS,
+    EF_OPT_DUT_EDGES
 };
 enum { EF_CLI_MAX_OPTIONS = 24 }; /* entries of one command's table */
 

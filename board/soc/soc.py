@@ -36,7 +36,10 @@ ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
 BAUD = 3_000_000
 
 # The canvas the board's frame memory holds (block RAM: W_MAX * H_MAX words).
-W_MAX, H_MAX, E_MAX = 64, 64, 255
+W_MAX, H_MAX = 64, 64
+# Edges per shape (ef_raster's AET ring and ETM's edge memory, block RAM): the tiger at 64x64 has
+# shapes of 939 edges.
+E_MAX = 1023
 
 
 class _CRGULX3S(Module):
@@ -84,7 +87,7 @@ class _CRGSim(Module):
 
 
 class EdgeflagSoC(SoCCore):
-    def __init__(self, target, ns, rom_init, sys_clk, ef_clk, main_ram, cpu_variant="lite"):
+    def __init__(self, target, ns, rom_init, sys_clk, ef_clk, main_ram, cpu_variant="lite", e_max=E_MAX):
         if target == "sim":
             from litex.build.sim import SimPlatform
             platform = SimPlatform("SIM", _sim_io)
@@ -111,8 +114,8 @@ class EdgeflagSoC(SoCCore):
                          uart_name=uart, uart_baudrate=BAUD, uart_fifo_depth=64,
                          with_timer=True, with_ctrl=False)
         self.submodules.crg = crg
-        self.ef = EFRaster(ns=ns, w_max=W_MAX, h_max=H_MAX, e_max=E_MAX)
-        for name, value in [("EF_NS", ns), ("EF_W_MAX", W_MAX), ("EF_H_MAX", H_MAX), ("EF_E_MAX", E_MAX),
+        self.ef = EFRaster(ns=ns, w_max=W_MAX, h_max=H_MAX, e_max=e_max)
+        for name, value in [("EF_NS", ns), ("EF_W_MAX", W_MAX), ("EF_H_MAX", H_MAX), ("EF_E_MAX", e_max),
                             ("EF_SYS_CLK", int(sys_clk)), ("EF_EF_CLK", int(ef_clk)), ("EF_BAUD", BAUD)]:
             self.add_constant(name, value)
         if target != "sim" and not main_ram:
@@ -144,13 +147,14 @@ def main():
                     help="block RAM main RAM bytes (sim default 4 MiB; the board: 0, the heap in SRAM)")
     ap.add_argument("--cpu-variant", default="lite", choices=["minimal", "lite"],
                     help="VexRiscv variant: lite (rv32im, 2 KiB instruction and data caches: the default) or minimal (rv32i)")
+    ap.add_argument("--e-max", type=int, default=E_MAX, help="ef_raster's E_MAX (edges per shape)")
     ap.add_argument("--seed", type=int, default=1, help="nextpnr's placement seed")
     a = ap.parse_args()
     if a.sys_clk % 3e6:
         sys.exit("soc.py: --sys-clk must be a multiple of 3 MHz (the UART's 3 Mbaud divides it exactly)")
     rom = get_mem_data(a.rom, endianness="little") if a.rom else []
     main_ram = a.main_ram if a.main_ram is not None else (0x400000 if a.target == "sim" else 0)
-    soc = EdgeflagSoC(a.target, a.ns, rom, a.sys_clk, a.ef_clk, main_ram, a.cpu_variant)
+    soc = EdgeflagSoC(a.target, a.ns, rom, a.sys_clk, a.ef_clk, main_ram, a.cpu_variant, a.e_max)
     if a.target == "sim":
         # Only the Verilog and the memory images: board/sim has its own Verilator harness, so
         # LiteX's simulator (its C modules, its tap/ethernet data package) is not used.

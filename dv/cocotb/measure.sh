@@ -7,7 +7,7 @@ set -eu
 build=${1:?usage: dv/cocotb/measure.sh BUILD_DIR [SVG] [WxH]}
 root=$(cd "$(dirname "$0")/../.." && pwd)
 case $build in /*) ;; *) build=$root/$build ;; esac
-svg=${2:-$root/tests/data/svg/tiger.svg}
+svg=$(realpath "${2:-$root/tests/data/svg/tiger.svg}")
 size=${3:-64x48}
 work=$build/cocotb/measure
 rm -rf "$work" && mkdir -p "$work/vl" "$work/dump"

@@ -288,8 +288,9 @@ static void check_vectors(int argc, char **argv)
         FAIL("vectors: exit code %d", rc);
     if (rc != -1)
         return;
-    static const char *const v_valued[] = { "-o",        "--output",     "--samples", "--rule",     "--size",
-                                            "--formats", "--interfaces", "--filter",  "--subpixel", NULL };
+    static const char *const v_valued[] = { "-o",         "--output",     "--samples",    "--rule",
+                                            "--size",     "--formats",    "--interfaces", "--filter",
+                                            "--subpixel", "--dut-limits", "--dut-edges",  NULL };
     static const char *const v_flags[] = { "--force", "--dump", "--rtl-headers", NULL };
     if (!ref_full_names(argc, argv, v_valued, v_flags, true))
         FAIL("vectors: accepted a word that is no option");
