@@ -66,8 +66,8 @@ blk_run() {
     case $tb in
         tb_dec)   files=$A_DEC;   params=(NCMD="$nc") ;;
         tb_setup) files=$A_SETUP; params=(NS="$ns" NCMD="$nc" NSEG="$ns_") ;;
-        # H_MAX 4096 (the cases' canvases are at most 2048 tall): the
-        # occupancy bitmap's simulation cost grows with it
+        # H_MAX 4096: the cases' canvases are at most 2048 tall, and the
+        # slot sweep after reset takes H_MAX cycles
         tb_etm)   files=$A_ETM;   params=(NS="$ns" H_MAX=4096 NCMD="$nc" NWR="$nw" NRD="$(count "$d/et_rd.expected.hex")"
                                           NPLOT="$(count "$d/plot.expected.hex")") ;;
     esac
