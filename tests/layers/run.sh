@@ -43,5 +43,5 @@ if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then
             { echo "layers: $d holds C sources but has no layer in tests/layers/folders.tsv"; bad=$((bad + 1)); }
     done < <(git ls-files '*.c' '*.cpp' | sed 's|/[^/]*$||' | sort -u)
 fi
-if [ $bad -ne 0 ]; then echo "layers: $bad of $n arrows wrong"; exit 1; fi
+if [ $bad -ne 0 ]; then echo "layers: FAIL: $bad wrong ($n arrows, $nf source folders checked)"; exit 1; fi
 echo "layers: $n arrows as tests/layers/arrows.tsv says (include paths per folder); $nf C source folders, each with its layer"
