@@ -50,6 +50,7 @@ grep -E '^throughput' R/merged/summary.txt | sed 's/^/    /'
 # ------------------------------------------------------------ 2. a killed shard, a missing shard
 # 40 shards of a DUT that takes a second a case: shards 1 and 2 run to the end, shard 3 is
 # killed after 3 s (of its 7 cases), shards 4..40 never start.
+# shellcheck disable=SC2016 # expanded by the shard, for each case
 slow='sleep 1; "$EDGEFLAG" vectors "$EF_CASE_FILE" -o "$EF_DUMPS" --samples "$EF_SAMPLES" $EF_RULE_OPT --dump --force --formats hex'
 parallel -j2 "$SHARD" --out K --shard {}/40 --run "'$slow'" ::: 1 2 >/dev/null 2>&1
 ( timeout -s KILL 3 "$SHARD" --out K --shard 3/40 --run "$slow" >/dev/null 2>&1 ) 2>/dev/null
@@ -87,8 +88,9 @@ if [ $frc = 1 ] && [ $fmrc = 1 ] && [ "$nf" -ge 1 ] &&
     ls F/shard_5_of_40/fail/case_*/dumps/pix.actual.hex >/dev/null 2>&1; then
     ok "a DUT with one wrong pixel: $nf failing runs, each with its seed and first mismatch line in the summary, files kept"
 else
-    bad "one wrong pixel" "shard exit $frc, merge exit $fmrc, $nf failing runs"; cat flip.log | tail -5; grep -A3 FAILED F/merged/summary.txt
+    bad "one wrong pixel" "shard exit $frc, merge exit $fmrc, $nf failing runs"; tail -5 flip.log; grep -A3 FAILED F/merged/summary.txt
 fi
+# shellcheck disable=SC2016 # expanded by the shard, for each case
 "$SHARD" --out P --shard 7/40 --run 'cd "$EF_DUMPS" && for f in "$EF_VECTORS"/*.expected.hex; do
     b=$(basename "$f" .expected.hex); [ "$b" = pix ] || grep -v "^//" "$f" >"$b.actual.hex"; done' >p.log 2>&1
 prc=$?

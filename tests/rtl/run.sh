@@ -38,6 +38,7 @@
 # Skips (exit 0, saying so) only when Icarus Verilog is not installed; the
 # Verilator parts are skipped, with a message, when verilator is missing.
 # Ends with "N passed, M failed"; exit status 0 only if nothing failed.
+# shellcheck disable=SC2086 # the RTL file lists ($RTL, $A_*) are split into words on purpose
 set -u
 export LC_ALL=C
 
