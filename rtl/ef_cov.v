@@ -89,9 +89,15 @@ module ef_cov #(
     wire [13:0] cov_w = pc255 >> LOG2NS;                 // <= 255
     /* verilator lint_on UNUSEDSIGNAL */
     wire [7:0]  cov   = cov_w[7:0];
-    wire [7:0]  p_r = mul(cfg_rgb[23:16], cfg_alpha);
-    wire [7:0]  p_g = mul(cfg_rgb[15:8], cfg_alpha);
-    wire [7:0]  p_b = mul(cfg_rgb[7:0], cfg_alpha);
+    // P, premultiplied, registered (issue 25: one multiplier fewer in the
+    // span's cycle): SHAPE sets cfg_rgb/cfg_alpha at least L_SETUP cycles
+    // before the shape's first span, so the register has long caught up.
+    reg [7:0] p_r, p_g, p_b;
+    always @(posedge clk) begin
+        p_r <= mul(cfg_rgb[23:16], cfg_alpha);
+        p_g <= mul(cfg_rgb[15:8], cfg_alpha);
+        p_b <= mul(cfg_rgb[7:0], cfg_alpha);
+    end
 
     // ------------------------------------------------ stages
     reg [14:0] a_cnt;
