@@ -183,7 +183,7 @@ static void scan(raster *r, int32_t y, int32_t xmin, int32_t xmax)
     uint64_t next = t + 1;
     if (mask && start < r->w) {
         const int32_t end = xmax + 1 < r->w ? xmax + 1 : r->w;
-        next = span_out(r, y, start, end - start, mask, t) + 1; /* plots after its transfer (item 5) */
+        next = span_out(r, y, start, end - start, mask, t);
     }
     r->t = next;
 }

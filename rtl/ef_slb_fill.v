@@ -42,9 +42,9 @@
 //    whole pipeline holds (no issue, no write-back): the scan's next step is
 //    issued in the span's transfer cycle a = max(t+1, cov_free) (item 5).
 //  * The flush is issued in the cycle after the last cell's step (or in that
-//    step's span transfer cycle); from the cycle after the flush (or the
-//    cycle after the flush span's transfer) plot_ready is high again: the
-//    next row's first cycle.  plot_ready is a function of registers only.  The scan needs no idle cycle between rows: the last
+//    step's span transfer cycle); from the cycle after the flush (or in the
+//    flush span's transfer cycle) plot_ready is high again: the next row's
+//    first cycle.  plot_ready does not depend on the cell RAM's output.  The scan needs no idle cycle between rows: the last
 //    clear-on-read write lands before the next row's first read.
 //
 // COV's acceptance (cov_free, item 6) is COV's business: this block sees it
@@ -215,12 +215,12 @@ module ef_slb_fill #(
     wire s2_done = !stall;     // stage 2 completes at this edge
 
     // ------------------------------------------------------------ stage 1
-    // Registers only (issue 25: no combinational path from the cell RAM's
-    // output into AET/PLOT): while no scan is in progress stage 2 holds no
-    // CELL op (a CELL op is issued only while scanning, and only the flush
-    // ends the scan), so the only span that can be offered is the flush's,
-    // and plots wait until it has transferred (the cycle after it).
-    assign plot_ready = init_done && !scanning && !span_flush;
+    // No path from the cell RAM's output into AET/PLOT (issue 25): while
+    // no scan is in progress stage 2 holds no CELL op (a CELL op is issued
+    // only while scanning, and only the flush ends the scan), so the only
+    // span that can stall is the flush's, which depends on registers alone.
+    wire flush_stall = span_flush && !span_ready;
+    assign plot_ready = init_done && !scanning && !flush_stall;
     wire take_plot  = plot_valid && plot_ready;
     wire scan_go    = init_done && scanning && !stall;
     wire scan_cell  = scan_go && (ptr <= xend);
@@ -244,7 +244,7 @@ module ef_slb_fill #(
     // The schedule's cursor after a row (item 5): the cycle after the flush
     // step, or the flush span's transfer cycle.  The drain (item 6) counts it.
     assign scan_done = init_done && !scanning && !trk_any
-                    && ((s2_op == OP_NONE) || ((s2_op == OP_FLUSH) && !span_flush));
+                    && ((s2_op == OP_NONE) || ((s2_op == OP_FLUSH) && !flush_stall));
 
     // ------------------------------------------------------------ registers
     always @(posedge clk) begin
