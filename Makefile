@@ -69,7 +69,9 @@ include dv/dpi/module.mk
 include cli/module.mk
 include proto/module.mk
 include board/module.mk
+include board/soc.mk
 include host/module.mk
+include python/module.mk
 include tests/module.mk
 include bench/module.mk
 
@@ -79,7 +81,7 @@ deps:
 clean:
 	rm -rf build build-* out
 
--include $(shell find $(BUILD) -name '*.d' 2>/dev/null)
+-include $(shell find $(BUILD) -path '$(BUILD)/venv' -prune -o -type f -name '*.d' -print 2>/dev/null)
 
 # The main job on the bundled default: the tiger at 640x480, 8/16/32 samples,
 # and its cycle-level vectors at 8 samples, read back by `edgeflag check`.

@@ -22,7 +22,13 @@
 
 #include "ef_frame.h"
 
-#define RESULT_PAYLOAD 32768u /* RESULT frames are cut at this payload size */
+/* RESULT frames are cut at this payload size; a board with little RAM builds
+ * with a smaller one (-DEF_BOARD_RESULT_PAYLOAD=1024: its frames kept for the
+ * window then take window x 1 KiB). */
+#ifndef EF_BOARD_RESULT_PAYLOAD
+#define EF_BOARD_RESULT_PAYLOAD 32768u
+#endif
+#define RESULT_PAYLOAD ((uint32_t)EF_BOARD_RESULT_PAYLOAD)
 
 typedef struct rframe { /* a numbered board -> host frame */
     uint8_t *bytes;
@@ -53,6 +59,13 @@ struct ef_board {
     uint64_t cmd_count;
     uint64_t result_bytes;
     uint32_t results_crc;
+    uint64_t records_sent; /* records in RESULT frames (DONE's count outside digest runs) */
+    /* digest and select runs (docs/board.md 4.5): per interface, transactions
+     * so far and the current window's CRC-32 and count */
+    uint32_t run_flags, dg_n;
+    uint64_t dg_total[EF_PROTO_IFACES];
+    uint32_t dg_crc[EF_PROTO_IFACES], dg_cnt[EF_PROTO_IFACES];
+    uint32_t *sel, nsel; /* select: interface << 24 | window, ascending */
     ef_board_stats st;
 };
 
@@ -173,14 +186,64 @@ static int flush_results(ef_board *b)
     return r;
 }
 
-int ef_board_emit(ef_board *b, const uint8_t *record, size_t len)
+/* Appends bytes (whole records) to the RESULT payload being filled. */
+static int append(ef_board *b, const uint8_t *p, size_t len)
 {
     if (b->cur_len + len > RESULT_PAYLOAD && flush_results(b) != 0)
         return -1;
-    memcpy(b->cur + b->cur_len, record, len);
+    memcpy(b->cur + b->cur_len, p, len);
     b->cur_len += len;
-    b->st.records++;
     return 0;
+}
+
+/* A digest run's record for interface i's current window (docs/board.md 4.5). */
+static int digest_out(ef_board *b, unsigned i)
+{
+    uint8_t d[EF_PROTO_DIGEST_LEN];
+    d[0] = (uint8_t)i;
+    d[1] = EF_PROTO_DIGEST_MARK;
+    ef_put32(d + 2, (uint32_t)((b->dg_total[i] - 1) / b->dg_n));
+    ef_put32(d + 6, b->dg_cnt[i]);
+    ef_put32(d + 10, b->dg_crc[i]);
+    b->dg_cnt[i] = b->dg_crc[i] = 0;
+    return append(b, d, sizeof d);
+}
+
+/* Whether a select run returns interface i's window w (binary search). */
+static int selected(const ef_board *b, unsigned i, uint64_t w)
+{
+    const uint32_t key = (uint32_t)i << 24 | (uint32_t)w;
+    uint32_t lo = 0, hi = b->nsel;
+    if (w >= 1u << 24)
+        return 0;
+    while (lo < hi) {
+        const uint32_t mid = lo + (hi - lo) / 2;
+        if (b->sel[mid] == key)
+            return 1;
+        if (b->sel[mid] < key)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return 0;
+}
+
+int ef_board_emit(ef_board *b, const uint8_t *record, size_t len)
+{
+    b->st.records++;
+    if (b->run_flags) {
+        const unsigned i = record[0] % EF_PROTO_IFACES;
+        const uint64_t k = b->dg_total[i]++;
+        if (b->run_flags & EF_START_SELECT) {
+            if (!selected(b, i, k / b->dg_n))
+                return 0;
+        } else {
+            b->dg_crc[i] = ef_frame_crc32(b->dg_crc[i], record, len);
+            return ++b->dg_cnt[i] == b->dg_n ? digest_out(b, i) : 0;
+        }
+    }
+    b->records_sent++;
+    return append(b, record, len);
 }
 
 void ef_board_fail(ef_board *b, uint32_t code, const char *why)
@@ -199,10 +262,50 @@ void ef_board_fail(ef_board *b, uint32_t code, const char *why)
 }
 
 /* ------------------------------------------------------- frame handling */
+/* A digest or select run's extra START fields.  0, or -1 after failing the run. */
+static int take_run_flags(ef_board *b, const ef_frame *f)
+{
+    b->run_flags = f->flags;
+    if (!f->flags)
+        return 0;
+    if (f->flags != EF_START_DIGEST && f->flags != EF_START_SELECT) {
+        ef_board_fail(b, 1, "START has unknown flags");
+        return -1;
+    }
+    b->dg_n = ef_get32(f->payload + 24);
+    if (b->dg_n == 0) {
+        ef_board_fail(b, 1, "START asks for digest windows of 0 transactions");
+        return -1;
+    }
+    if (f->flags == EF_START_DIGEST)
+        return 0;
+    b->nsel = ef_get32(f->payload + 28);
+    if (b->nsel > EF_PROTO_SELECT_MAX || f->len != 32 + 4 * b->nsel) {
+        ef_board_fail(b, 1, "START's window selection is malformed");
+        return -1;
+    }
+    b->sel = malloc(4 * (size_t)b->nsel + 4);
+    if (!b->sel) {
+        ef_board_fail(b, 2, "no memory for the window selection");
+        return -1;
+    }
+    for (uint32_t k = 0; k < b->nsel; k++) {
+        b->sel[k] = ef_get32(f->payload + 32 + 4 * k);
+        if (k && b->sel[k] <= b->sel[k - 1]) {
+            ef_board_fail(b, 1, "START's window selection is not in ascending order");
+            return -1;
+        }
+    }
+    return 0;
+}
+
 static void take_start(ef_board *b, const ef_frame *f)
 {
-    if (f->len != EF_PROTO_START_LEN) {
-        ef_board_fail(b, 1, "START payload is not 24 bytes");
+    const uint32_t want = f->flags == 0                 ? EF_PROTO_START_LEN
+                          : f->flags == EF_START_DIGEST ? EF_PROTO_START_DIGEST_LEN
+                                                        : (f->len < 32 ? 32 : f->len);
+    if (f->len != want || (f->flags == EF_START_SELECT && f->len < 32)) {
+        ef_board_fail(b, 1, "START payload has the wrong length for its flags");
         return;
     }
     b->iface_mask = ef_get32(f->payload);
@@ -225,6 +328,8 @@ static void take_start(ef_board *b, const ef_frame *f)
         ef_board_fail(b, 2, "START asks for a sample count this board does not have");
         return;
     }
+    if (take_run_flags(b, f) != 0)
+        return;
     if (b->dut.start && b->dut.start(b->dut.self, b, b->iface_mask, (int)b->samples) != 0)
         return;
     b->dut_started = 1;
@@ -264,10 +369,14 @@ static void take_end(ef_board *b)
         ef_board_fail(b, 4, "END after a different number of commands than START announced");
         return;
     }
+    if (b->run_flags & EF_START_DIGEST) /* every interface's last, partial window */
+        for (unsigned i = 0; i < EF_PROTO_IFACES; i++)
+            if (b->dg_cnt[i] && digest_out(b, i) != 0)
+                return;
     if (flush_results(b) != 0)
         return;
     uint8_t d[EF_PROTO_DONE_LEN];
-    ef_put64(d, b->st.records);
+    ef_put64(d, b->run_flags & EF_START_DIGEST ? b->st.records : b->records_sent);
     ef_put64(d + 8, b->result_bytes);
     ef_put64(d + 16, b->st.cmds);
     ef_put32(d + 24, b->st.input_crc);
@@ -421,7 +530,7 @@ void ef_board_identify(const ef_board *b, uint8_t out[EF_PROTO_IDENTIFY_LEN])
     memcpy(out, EF_PROTO_MAGIC, 4);
     out[4] = EF_PROTO_PROTOCOL;
     out[6] = (uint8_t)b->info.window, out[7] = (uint8_t)(b->info.window >> 8);
-    ef_put32(out + 8, b->info.capabilities);
+    ef_put32(out + 8, b->info.capabilities | EF_PROTO_CAP_DIGEST);
     ef_put32(out + 12, b->info.iface_mask);
     ef_put32(out + 16, b->info.samples_mask);
     ef_put32(out + 20, b->info.width_max);
@@ -459,8 +568,14 @@ static void clear_run(ef_board *b, int keep_rx)
     b->mode = b->iface_mask = b->samples = 0;
     b->source_left = 0;
     b->source_end = 0;
-    b->cmd_count = b->result_bytes = 0;
+    b->cmd_count = b->result_bytes = b->records_sent = 0;
     b->results_crc = 0;
+    free(b->sel);
+    b->sel = NULL;
+    b->nsel = b->run_flags = b->dg_n = 0;
+    memset(b->dg_total, 0, sizeof b->dg_total);
+    memset(b->dg_crc, 0, sizeof b->dg_crc);
+    memset(b->dg_cnt, 0, sizeof b->dg_cnt);
     memset(&b->st, 0, sizeof b->st);
 }
 
@@ -472,6 +587,8 @@ void ef_board_link_lost(ef_board *b)
     b->tx_head = b->tx_len = 0; /* bytes queued and not sent */
     b->res_sent = b->res_acked; /* unacknowledged results go out again on the next link */
 }
+
+void ef_board_rx_idle(ef_board *b) { b->rx_len = 0; }
 
 void ef_board_get_stats(const ef_board *b, ef_board_stats *s)
 {

@@ -52,6 +52,11 @@ void ef_board_reset(ef_board *b);
 /* A byte-stream link's connection ended (docs/board.md 5.5): drops a frame
  * only partly received and the bytes not yet sent, keeps the run. */
 void ef_board_link_lost(ef_board *b);
+/* A serial line has been idle (no byte from the host) for longer than a frame
+ * takes (docs/board-serial.md section 3): drops a frame only partly received,
+ * whose rest will never come (a host killed mid-frame), so the next frame is
+ * not taken for its payload.  Keeps everything else. */
+void ef_board_rx_idle(ef_board *b);
 
 /* Called by the DUT for every output record (vectors.bin layout). */
 int ef_board_emit(ef_board *b, const uint8_t *record, size_t len);

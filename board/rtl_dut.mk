@@ -8,8 +8,9 @@
 #
 # RTL_DUT_NS       sample counts to build a model for (one Verilated model each)
 # RTL_DUT_W_MAX .. the RTL's parameters (what identify then says)
-# RTL_DUT_SRC      the RTL's folder
-# RTL_DUT_FAULT    a fault define of the RTL (EF_FAULT_ROOKS, ...): tests only
+# RTL_DUT_SRC      the RTL's folder (rtl/, or an RTL variant's copy made by
+#                  dv/rtl-variant.sh: a planted fault, tests only)
+# RTL_DUT_FAULT    the planted fault's name, for identify and --version only
 # RTL_DUT_DIR      where the Verilated models and objects go
 ifndef EF_HOST_RTL_DUT_MK
 EF_HOST_RTL_DUT_MK := 1
@@ -37,6 +38,7 @@ endif
 ifeq ($(HOST_RTL_HAVE),1)
 VERILATOR_ROOT_DIR := $(shell $(VERILATOR) --getenv VERILATOR_ROOT 2>/dev/null)
 RTL_DUT_VSRC := dv/tb/dut_rtl.v $(wildcard $(RTL_DUT_SRC)/*.v)
+RTL_DUT_VINC := $(wildcard $(RTL_DUT_SRC)/*.vh)
 RTL_DUT_LIBS := $(foreach n,$(RTL_DUT_NS),$(RTL_DUT_DIR)/vl$(n)/Vef_rtl_dut$(n)__ALL.a)
 # Verilator's runtime: the same for every build of the models, so shared
 RTL_DUT_VLOBJ := $(BUILD)/host/verilated.o $(BUILD)/host/verilated_threads.o
@@ -62,11 +64,11 @@ $(shell mkdir -p $(RTL_DUT_DIR) && { [ "$$(cat $(RTL_DUT_SRC_FLAG) 2>/dev/null)"
 # Verilator's generated makefile compiles the model; its warnings on the RTL
 # are the RTL owner's (tests/rtl lints it), not fatal here.
 define rtl_dut_model
-$(RTL_DUT_DIR)/vl$(1)/Vef_rtl_dut$(1)__ALL.a: $(RTL_DUT_VSRC) $(RTL_DUT_SRC_FLAG) board/rtl_dut.mk
+$(RTL_DUT_DIR)/vl$(1)/Vef_rtl_dut$(1)__ALL.a: $(RTL_DUT_VSRC) $(RTL_DUT_VINC) $(RTL_DUT_SRC_FLAG) board/rtl_dut.mk
 	@mkdir -p $(RTL_DUT_DIR)/vl$(1)
 	$(VERILATOR) --cc -O3 -Wno-fatal -Wno-lint -Wno-style --Mdir $(RTL_DUT_DIR)/vl$(1) --prefix Vef_rtl_dut$(1) \
 	    --top-module ef_rtl_dut -GNS=$(1) -GW_MAX=$(RTL_DUT_W_MAX) -GH_MAX=$(RTL_DUT_H_MAX) -GE_MAX=$(RTL_DUT_E_MAX) \
-	    $(if $(RTL_DUT_FAULT),-D$(RTL_DUT_FAULT)) $(RTL_DUT_VSRC) >$(RTL_DUT_DIR)/vl$(1)/verilator.log 2>&1 || \
+	    -I$(RTL_DUT_SRC) $(RTL_DUT_VSRC) >$(RTL_DUT_DIR)/vl$(1)/verilator.log 2>&1 || \
 	    { cat $(RTL_DUT_DIR)/vl$(1)/verilator.log; exit 1; }
 	+$(MAKE) --no-print-directory -s -C $(RTL_DUT_DIR)/vl$(1) -f Vef_rtl_dut$(1).mk OPT_FAST=$(RTL_DUT_OPT) \
 	    OPT_SLOW=-O0 CXX=$(CXX) Vef_rtl_dut$(1)__ALL.a

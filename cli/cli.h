@@ -31,9 +31,11 @@ enum {
 /* Subcommands: argv[0] is the command name; return an exit code. */
 int ef_cli_render(int argc, char **argv);
 int ef_cli_patterns(int argc, char **argv);
-int ef_cli_gen(int argc, char **argv);     /* cmd_gen.c, docs/gen.md */
-int ef_cli_check(int argc, char **argv);   /* cmd_check.c, docs/vectors.md section 7 */
-int ef_cli_vectors(int argc, char **argv); /* cmd_vectors.c, docs/vectors.md */
+int ef_cli_gen(int argc, char **argv);      /* cmd_gen.c, docs/gen.md */
+int ef_cli_check(int argc, char **argv);    /* cmd_check.c, docs/vectors.md section 7 */
+int ef_cli_vectors(int argc, char **argv);  /* cmd_vectors.c, docs/vectors.md */
+int ef_cli_coverage(int argc, char **argv); /* cmd_coverage.c, dv/coverage/points.tsv */
+int ef_cli_rtl_sim(int argc, char **argv);  /* cmd_rtl_sim.c: dv/rtl-sim.sh, this binary the checker */
 
 /* The subcommands' option parsers, separate from what the commands do so that
  * tests/fuzz/fuzz_cli_args.c can drive them without touching any file.  Each
@@ -53,6 +55,7 @@ int ef_cli_render_parse(int argc, char **argv, ef_cli_render_args *a);
 typedef struct ef_cli_patterns_args {
     int32_t samples; /* 0: all three */
     int emit_c;
+    int emit_verilog;
 } ef_cli_patterns_args;
 int ef_cli_patterns_parse(int argc, char **argv, ef_cli_patterns_args *a);
 
@@ -82,6 +85,8 @@ typedef struct ef_cli_vectors_args {
     int dump;             /* --dump: the model's output named as a DUT's dumps */
     int filter, subpixel; /* ef_filter, ef_subpixel: box, none (0, 0) by default */
     int rtl_headers;      /* --rtl-headers: only ef_ifaces.vh and ef_ifaces_pkg.sv, no INPUT */
+    int32_t dut_w, dut_h; /* --dut-limits WxH: the DUT's largest canvas (0, 0: none given) */
+    int32_t dut_e;        /* --dut-edges E: the most EDGE commands of a shape (0: none given) */
 } ef_cli_vectors_args;
 int ef_cli_vectors_parse(int argc, char **argv, ef_cli_vectors_args *a);
 
@@ -113,7 +118,10 @@ enum {
     EF_OPT_ALLOW_MISSING,
     EF_OPT_NAME,
     EF_OPT_JUNIT,
-    EF_OPT_DIFF_IMAGE
+    EF_OPT_DIFF_IMAGE,
+    EF_OPT_EMIT_VERILOG,
+    EF_OPT_DUT_LIMITS,
+    EF_OPT_DUT_EDGES
 };
 enum { EF_CLI_MAX_OPTIONS = 24 }; /* entries of one command's table */
 

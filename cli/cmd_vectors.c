@@ -32,6 +32,7 @@ static void usage(FILE *f)
     fputs("usage: edgeflag vectors INPUT -o DIR [--samples 8|16|32] [--rule nonzero|evenodd]\n"
           "                        [--size WxH] [--formats hex,vcd,bin] [--interfaces LIST] [--force]\n"
           "                        [--dump] [--filter box|tent] [--subpixel none|rgb|bgr]\n"
+          "                        [--dut-limits WxH] [--dut-edges E]\n"
           "       edgeflag vectors --rtl-headers -o DIR [--force]\n"
           "\n"
           "Renders INPUT (.svg, .scene/.txt) with the timing model of the reference\n"
@@ -60,6 +61,11 @@ static void usage(FILE *f)
           "  --filter F         box (default) or tent: the 2x2-pixel tent (docs/spec.md 10)\n"
           "  --subpixel S       none (default), rgb or bgr: per-channel sample offsets;\n"
           "                     with either, the vectors follow docs/microarch.md section 5\n"
+          "  --dut-limits WxH   the DUT's largest canvas: a larger one is refused (exit 3,\n"
+          "                     nothing written), naming the limit\n"
+          "  --dut-edges E      the most EDGE commands one shape may have in the DUT (the\n"
+          "                     RTL's E_MAX): a shape with more is refused the same way\n"
+          "                     (needs cmd among --interfaces)\n"
           "  --rtl-headers      write only ef_ifaces.vh (Verilog) and ef_ifaces_pkg.sv\n"
           "                     (SystemVerilog): every interface's widths, field offsets\n"
           "                     and the command codes, for testbenches (no INPUT)\n"
@@ -81,6 +87,8 @@ static const struct option OPTIONS[] = { { "", required_argument, NULL, EF_OPT_O
                                          { "force", no_argument, NULL, EF_OPT_FORCE },
                                          { "dump", no_argument, NULL, EF_OPT_DUMP },
                                          { "rtl-headers", no_argument, NULL, EF_OPT_RTL_HEADERS },
+                                         { "dut-limits", required_argument, NULL, EF_OPT_DUT_LIMITS },
+                                         { "dut-edges", required_argument, NULL, EF_OPT_DUT_EDGES },
                                          { NULL, 0, NULL, 0 } };
 
 /* The line as read: the request, and whether an option --rtl-headers does
@@ -108,6 +116,16 @@ static int on_option(void *p, int val, const char *v)
         return -1;
     case EF_OPT_DUMP:
         a->dump = 1;
+        l->scene_options = 1;
+        return -1;
+    case EF_OPT_DUT_LIMITS:
+        if (!ef_cli_parse_size(v, EF_MAX_CANVAS, &a->dut_w, &a->dut_h))
+            return ef_cli_usage_error(CMD, "--dut-limits takes WxH (each 1..%d), not '%s'", EF_MAX_CANVAS, v);
+        l->scene_options = 1;
+        return -1;
+    case EF_OPT_DUT_EDGES:
+        if (!ef_cli_parse_int(v, 1, INT32_MAX, &a->dut_e))
+            return ef_cli_usage_error(CMD, "--dut-edges takes a positive number, not '%s'", v);
         l->scene_options = 1;
         return -1;
     case EF_OPT_FORMATS: {
@@ -158,6 +176,9 @@ static int finish(void *p)
     }
     if (!a->dir)
         return ef_cli_usage_error(CMD, "no output directory (-o DIR)");
+    if (a->dut_e && !(a->ifaces & (1u << EF_IF_CMD)))
+        return ef_cli_usage_error(CMD,
+                                  "--dut-edges counts the cmd interface's EDGE commands: keep cmd in --interfaces");
     return -1;
 }
 
@@ -288,6 +309,31 @@ static int trace_frame(const ef_cli_vectors_args *a, const ef_scene *scene, ef_c
     return -1;
 }
 
+/* --dut-edges: the most EDGE commands between a SHAPE and its SHAPE_END (the
+ * RTL's E_MAX counts those); over the limit: refused, nothing written. */
+static int check_dut_edges(const ef_cli_vectors_args *a, const ef_vec_collect *c)
+{
+    size_t n = ef_vec_collect_count(c, EF_IF_CMD), k, edges = 0, most = 0, shape = 0, worst = 0;
+    for (k = 0; k < n; k++) {
+        ef_txn t;
+        ef_vec_collect_get(c, EF_IF_CMD, k, &t);
+        const uint64_t op = ef_txn_field(&t, 0);
+        if (op == EF_OP_SHAPE) {
+            edges = 0;
+            shape++;
+        } else if (op == EF_OP_EDGE && ++edges > most) {
+            most = edges;
+            worst = shape;
+        }
+    }
+    if (most > (size_t)a->dut_e) {
+        ef_cli_error("%s: shape %zu has %zu edges, over the DUT's %" PRId32 " (--dut-edges): refused", a->input, worst,
+                     most, a->dut_e);
+        return EF_CLI_EXIT_INPUT;
+    }
+    return -1;
+}
+
 int ef_cli_vectors(int argc, char **argv)
 {
     ef_cli_vectors_args a;
@@ -309,6 +355,14 @@ int ef_cli_vectors(int argc, char **argv)
     memset(&img, 0, sizeof img);
     if ((rc = load(&a, &scene)) >= 0)
         goto out;
+    /* The DUT's limits, before anything is written (docs/vectors.md section 2). */
+    if (a.dut_w && (scene.width > a.dut_w || scene.height > a.dut_h)) {
+        ef_cli_error("%s: canvas %" PRId32 "x%" PRId32 " over the DUT's %" PRId32 "x%" PRId32
+                     " (--dut-limits): refused",
+                     a.input, scene.width, scene.height, a.dut_w, a.dut_h);
+        rc = EF_CLI_EXIT_INPUT;
+        goto out;
+    }
     memset(&job, 0, sizeof job);
     job.dir = a.dir;
     job.formats = a.formats;
@@ -345,6 +399,8 @@ int ef_cli_vectors(int argc, char **argv)
     if (!ef_vec_file_seed(a.input, &info.seed))
         info.seed = 0;
     if ((rc = trace_frame(&a, &scene, ctx, &img, c, &info)) >= 0)
+        goto out;
+    if (a.dut_e && (rc = check_dut_edges(&a, c)) >= 0)
         goto out;
 
     job.info = &info;

@@ -21,6 +21,8 @@ static const command commands[] = {
     { "gen", ef_cli_gen, "write seeded regression scenes (directed corner cases, random)" },
     { "vectors", ef_cli_vectors, "write cycle-level test vectors (hex, VCD, binary) of a scene" },
     { "check", ef_cli_check, "compare an RTL's vector dumps with the expected vectors" },
+    { "rtl-sim", ef_cli_rtl_sim, "build and run the RTL bench on vectors, then check its dumps" },
+    { "coverage", ef_cli_coverage, "functional coverage of vector sets (the spec's cover points)" },
 };
 #define NCOMMANDS (sizeof commands / sizeof commands[0])
 

@@ -51,11 +51,16 @@ typedef struct ef_host_stream_opts {
     int timeout_ms;      /* no progress for this long: retransmit; 4 times: give up */
     int progress;        /* draw a progress bar on stderr */
     int quiet;
+    uint32_t digest;       /* digest mode (docs/board.md 4.5): transactions per window; 0: full records */
+    int digest_optional;   /* 1: full records when the board has no digest mode (auto's choice) */
+    unsigned digest_fetch; /* differing windows fetched per interface (0: 16) */
 } ef_host_stream_opts;
 
 typedef struct ef_host_stream_report {
     uint64_t cmds, frames_sent, retransmits, naks, timeouts, result_frames, records, result_bytes;
-    uint64_t resumed_from; /* first frame sent by this run (0 when not resumed) */
+    uint64_t resumed_from;                                  /* first frame sent by this run (0 when not resumed) */
+    uint32_t digest;                                        /* the window of a digest run, 0 for full records */
+    uint64_t digest_windows, digest_differ, digest_fetched; /* windows compared, differing, fetched */
     double seconds;
     int samples;
     int32_t width, height;

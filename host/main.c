@@ -4,6 +4,7 @@
  * protocol-shaped lives in host_link.c and bench_link.c, everything
  * link-shaped in the transports.
  */
+#include <errno.h>
 #include <fcntl.h>
 #include <getopt.h>
 #include <inttypes.h>
@@ -13,20 +14,29 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "atomic_file.h"
 #include "bench_link.h"
 #include "cli.h"
+#include "ef_check.h"
+#include "ef_vec_read.h"
+#include "image_write.h"
 #include "dut_rtl.h"
 #include "edgeflag.h"
 #include "ef_trace.h"
 #include "host_link.h"
 #include "transport.h"
 
-static const ef_transport_ops *const TRANSPORTS[] = { &ef_transport_usb, &ef_transport_gpio, &ef_transport_sim,
-                                                      &ef_transport_null, &ef_transport_socket };
+static const ef_transport_ops *const TRANSPORTS[] = { &ef_transport_usb,  &ef_transport_gpio,   &ef_transport_sim,
+                                                      &ef_transport_null, &ef_transport_socket, &ef_transport_serial };
+/* the transports of real boards that `list` and `auto` probe (GPIO for auto only with --chip) */
+static const ef_transport_ops *const PROBED[] = { &ef_transport_usb, &ef_transport_gpio, &ef_transport_serial };
+#define NPROBED (sizeof PROBED / sizeof PROBED[0])
 #define NTRANSPORTS (sizeof TRANSPORTS / sizeof TRANSPORTS[0])
 
 typedef struct args {
-    const char *cmd, *vectors, *transport, *results, *junit, *diff_image, *interfaces, *errors;
+    const char *cmd, *vectors, *transport, *results, *junit, *diff_image, *interfaces, *errors, *save_frame;
+    long digest; /* -1: not given (digest mode on a serial line, full records elsewhere) */
+    unsigned digest_fetch;
     ef_host_opts link;
     int resume, quiet, json, transactions;
     unsigned frame_cmds;
@@ -47,10 +57,12 @@ static void usage(FILE *f)
           "the board's results as vectors.actual.bin and (verify) checks them as `edgeflag check`.\n"
           "\n"
           "link options:\n"
-          "  --transport T        usb, gpio, sim, null, socket or auto (default auto: the one board present;\n"
+          "  --transport T        usb, gpio, serial, sim, null, socket or auto (default auto: the one board present;\n"
           "                       none or several is an error, never the simulated board)\n"
           "  --device SEL         usb: SERIAL, BUS:DEV or #INDEX (as `list` prints)\n"
           "  --connect ADDR       socket: unix:PATH or tcp:HOST:PORT (docs/board.md 5.5)\n"
+          "  --port TTY           serial: the board's tty (/dev/ttyUSB0; docs/board-serial.md)\n"
+          "  --baud N             serial: line speed (default 3000000)\n"
           "  --vid-pid V:P        usb: vendor and product id in hex (default 1209:0001)\n"
           "  --transfer-size N    usb: bytes per bulk transfer     --in-flight N  transfers in flight\n"
           "  --chip NAME          gpio: chip (gpiochip0 or /dev/gpiochip0)\n"
@@ -67,6 +79,10 @@ static void usage(FILE *f)
           "  --interfaces LIST    verify: interfaces to ask back and check (must include pix;\n"
           "                       default pix and every internal one the file and the board have)\n"
           "  --junit FILE, --diff-image FILE.png, --errors N, --transactions: as edgeflag check\n"
+          "  --save-frame FILE.png  verify: the board's pix results as an image\n"
+          "  --digest N|off       verify: the board returns a CRC-32 per N transactions, differing\n"
+          "                       windows are fetched whole (docs/board.md 4.5; default 1024 on a\n"
+          "                       serial line, off elsewhere)   --digest-fetch K  windows fetched (16)\n"
           "  --mib N              bench: MiB per throughput test (default 64)\n"
           "  --quiet              no progress bar and no summary     --json  summary as JSON on stdout\n"
           "\n"
@@ -118,7 +134,12 @@ static int parse(int argc, char **argv, args *a)
         O_QUIET,
         O_JSON,
         O_HELP,
-        O_SIMDUT
+        O_SIMDUT,
+        O_PORT,
+        O_BAUD,
+        O_DIGEST,
+        O_DIGESTFETCH,
+        O_SAVEFRAME
     };
     static const struct option opts[] = { { "transport", required_argument, 0, O_TRANSPORT },
                                           { "device", required_argument, 0, O_DEVICE },
@@ -132,6 +153,11 @@ static int parse(int argc, char **argv, args *a)
                                           { "sim-faults", required_argument, 0, O_SIMFAULTS },
                                           { "sim-dut", required_argument, 0, O_SIMDUT },
                                           { "connect", required_argument, 0, O_CONNECT },
+                                          { "port", required_argument, 0, O_PORT },
+                                          { "baud", required_argument, 0, O_BAUD },
+                                          { "digest", required_argument, 0, O_DIGEST },
+                                          { "digest-fetch", required_argument, 0, O_DIGESTFETCH },
+                                          { "save-frame", required_argument, 0, O_SAVEFRAME },
                                           { "results", required_argument, 0, O_RESULTS },
                                           { "resume", no_argument, 0, O_RESUME },
                                           { "frame-cmds", required_argument, 0, O_FRAMECMDS },
@@ -153,7 +179,8 @@ static int parse(int argc, char **argv, args *a)
         switch (c) {
         case O_TRANSPORT:
             if (strcmp(optarg, "auto") != 0 && !find_transport(optarg))
-                return usage_error("--transport must be usb, gpio, sim, null, socket or auto, not '%s'", optarg);
+                return usage_error("--transport must be usb, gpio, serial, sim, null, socket or auto, not '%s'",
+                                   optarg);
             a->transport = optarg;
             break;
         case O_DEVICE: a->link.device = optarg; break;
@@ -193,6 +220,29 @@ static int parse(int argc, char **argv, args *a)
                 return usage_error("--sim-dut must be model or rtl, not '%s'", optarg);
             break;
         case O_CONNECT: a->link.connect = optarg; break;
+        case O_PORT: a->link.port = optarg; break;
+        case O_BAUD: /* any rate the driver takes (docs/board-serial.md section 2) */
+            a->link.baud = ef_cli_parse_int(optarg, 50, 100000000, &v) ? (unsigned)v : 0;
+            if (!a->link.baud)
+                return usage_error("--baud must be 50..100000000, not '%s'", optarg);
+            break;
+        case O_DIGEST:
+            if (strcmp(optarg, "off") == 0)
+                v = 0;
+            else if (!ef_cli_parse_int(optarg, 1, 1 << 24, &v))
+                return usage_error("--digest must be 1..16777216 transactions a window or off, not '%s'", optarg);
+            a->digest = v;
+            break;
+        case O_DIGESTFETCH:
+            if (!ef_cli_parse_int(optarg, 1, EF_PROTO_SELECT_MAX, &v))
+                return usage_error("--digest-fetch must be 1..1024 windows, not '%s'", optarg);
+            a->digest_fetch = (unsigned)v;
+            break;
+        case O_SAVEFRAME:
+            if (ef_cli_format_from_path(optarg) != EF_CLI_FMT_PNG || !ef_cli_format_available(EF_CLI_FMT_PNG))
+                return usage_error("--save-frame needs a FILE.png (and a build with libpng), not '%s'", optarg);
+            a->save_frame = optarg;
+            break;
         case O_RESULTS: a->results = optarg; break;
         case O_RESUME: a->resume = 1; break;
         case O_FRAMECMDS:
@@ -229,31 +279,36 @@ static int parse(int argc, char **argv, args *a)
 /* Opens the named transport, or for auto the one board present. */
 static int open_link(const args *a, const ef_transport_ops **ops, ef_link **l)
 {
-    char err[512] = "";
+    char err[512] = "", auto_port[64] = "";
+    ef_host_opts lo = a->link;
     const char *name = a->transport ? a->transport : "auto";
     if (strcmp(name, "auto") == 0) {
         ef_found found[16];
         int total = 0, nfound = 0, denied = 0;
         const ef_transport_ops *which = NULL;
-        for (size_t i = 0; i < 2; i++) { /* usb and gpio: real boards only */
-            if (i == 1 && !a->link.chip)
+        for (size_t i = 0; i < NPROBED; i++) { /* usb, gpio and serial: real boards only */
+            if (PROBED[i] == &ef_transport_gpio && !a->link.chip)
                 continue; /* a GPIO bus cannot be told from other GPIO use by looking */
-            const int n = TRANSPORTS[i]->probe(&a->link, found + nfound, 16 - nfound);
+            const int n = PROBED[i]->probe(&a->link, found + nfound, 16 - nfound);
             if (n < 0 && n != EF_HOST_EUNSUPPORTED && n != EF_HOST_ENOTFOUND) {
-                fprintf(stderr, "edgeflag-host: looking for %s boards: %s\n", TRANSPORTS[i]->name, ef_host_strerror(n));
+                fprintf(stderr, "edgeflag-host: looking for %s boards: %s\n", PROBED[i]->name, ef_host_strerror(n));
                 return n == EF_HOST_EACCESS ? EF_HX_ACCESS : EF_HX_NOBOARD;
             }
             for (int k = 0; k < n && nfound < 16; k++, nfound++) {
-                if (found[nfound].ok)
-                    which = TRANSPORTS[i], total++;
-                else if (found[nfound].err == EF_HOST_EACCESS)
+                if (found[nfound].ok) {
+                    which = PROBED[i], total++;
+                    if (which == &ef_transport_serial) /* auto opens the port that answered */
+                        snprintf(auto_port, sizeof auto_port, "%s", found[nfound].where);
+                } else if (found[nfound].err == EF_HOST_EACCESS) {
                     denied++;
+                }
             }
         }
         if (total != 1) {
             fprintf(stderr, "edgeflag-host: --transport auto: %s\n",
                     total ? "several boards answer; choose one with --transport and --device (edgeflag-host list)"
-                          : "no board found (no USB device answers identify; GPIO needs --chip and --lines); "
+                          : "no board found (no USB device or FTDI serial port answers identify; GPIO needs "
+                            "--chip and --lines); "
                             "use --transport sim for the simulated board");
             for (int k = 0; k < nfound; k++) /* what was seen, so the user can tell which */
                 fprintf(stderr, "edgeflag-host:   %s %s %s%s\n", found[k].transport, found[k].where,
@@ -261,10 +316,12 @@ static int open_link(const args *a, const ef_transport_ops **ops, ef_link **l)
             return !total && denied ? EF_HX_ACCESS : EF_HX_NOBOARD;
         }
         *ops = which;
+        if (auto_port[0])
+            lo.port = auto_port;
     } else {
         *ops = find_transport(name);
     }
-    const int r = (*ops)->open(l, &a->link, err, sizeof err);
+    const int r = (*ops)->open(l, &lo, err, sizeof err);
     if (r < 0) {
         fprintf(stderr, "edgeflag-host: %s: %s%s%s\n", (*ops)->name, ef_host_strerror(r), err[0] ? ": " : "", err);
         return ef_host_exit_code(r);
@@ -278,15 +335,15 @@ static int cmd_list(const args *a)
     int total = 0;
     if (a->json)
         fputs("{\"boards\": [", stdout);
-    for (size_t i = 0; i < 2; i++) {
-        const int n = TRANSPORTS[i]->probe(&a->link, found, 32);
+    for (size_t i = 0; i < NPROBED; i++) {
+        const int n = PROBED[i]->probe(&a->link, found, 32);
         if (n == EF_HOST_EUNSUPPORTED) {
             if (!a->json)
-                printf("%s: %s\n", TRANSPORTS[i]->name, TRANSPORTS[i]->version());
+                printf("%s: %s\n", PROBED[i]->name, PROBED[i]->version());
             continue;
         }
         if (n < 0) {
-            fprintf(stderr, "edgeflag-host: list: %s: %s\n", TRANSPORTS[i]->name, ef_host_strerror(n));
+            fprintf(stderr, "edgeflag-host: list: %s: %s\n", PROBED[i]->name, ef_host_strerror(n));
             continue;
         }
         for (int k = 0; k < n && k < 32; k++, total++) {
@@ -295,7 +352,7 @@ static int cmd_list(const args *a)
                        total ? ", " : "", found[k].transport, found[k].where, found[k].ok ? "true" : "false",
                        found[k].desc);
             else
-                printf("%-5s %-14s %s%s\n", found[k].transport, found[k].where, found[k].ok ? "" : "(not ours) ",
+                printf("%-6s %-14s %s%s\n", found[k].transport, found[k].where, found[k].ok ? "" : "(not ours) ",
                        found[k].desc);
         }
     }
@@ -342,6 +399,39 @@ static uint32_t file_mask(const char *path)
     return m;
 }
 
+/* verify --save-frame: the board's pix results (RESULTS/vectors.actual.bin) as a PNG, atomically. */
+static int save_frame(const char *actual, const char *path)
+{
+    ef_vec_dump d;
+    ef_vec_read_error re;
+    ef_image img;
+    ef_cli_atomic af;
+    char err[900] = "";
+    memset(&d, 0, sizeof d);
+    int bad = ef_vec_read_path(actual, NULL, -1, -1, &d, &re) != EF_OK;
+    if (bad)
+        ef_vec_read_error_format(&re, err, sizeof err);
+    else if (ef_check_frame_image(&d, &img, err, sizeof err) != 0)
+        bad = 1;
+    ef_vec_dump_free(&d);
+    if (!bad) {
+        if (ef_cli_atomic_open(&af, path) != 0) {
+            snprintf(err, sizeof err, "%s", strerror(errno));
+            bad = 1;
+        } else if (ef_cli_write_image(af.fp, EF_CLI_FMT_PNG, &img, err, sizeof err) != 0) {
+            ef_cli_atomic_abort(&af);
+            bad = 1;
+        } else if (ef_cli_atomic_commit(&af) != 0) {
+            snprintf(err, sizeof err, "%s", strerror(errno));
+            bad = 1;
+        }
+        ef_image_free(&img);
+    }
+    if (bad)
+        fprintf(stderr, "edgeflag-host: --save-frame %s: %s\n", path, err);
+    return bad ? EF_HX_OUTPUT : EF_HX_OK;
+}
+
 static int cmd_stream(args *a, int verify)
 {
     if (!a->vectors)
@@ -362,6 +452,8 @@ static int cmd_stream(args *a, int verify)
             return usage_error("--interfaces must be a comma-separated list of interfaces including pix, not '%s'",
                                a->interfaces);
     }
+    if (!verify && (a->digest > 0 || a->save_frame))
+        return usage_error("%s: --digest and --save-frame are verify's", a->cmd);
     const ef_transport_ops *ops;
     ef_link *l;
     int code = open_link(a, &ops, &l);
@@ -373,9 +465,20 @@ static int cmd_stream(args *a, int verify)
         if (ops->identify(l, raw) == 0 && ef_host_ident_parse(raw, &id) == 0)
             mask |= file_mask(a->vectors) & id.iface_mask & ~(1u << EF_IF_CMD);
     }
-    ef_host_stream_opts so = {
-        a->vectors, results, mask, a->resume, a->frame_cmds, a->link.timeout_ms, !a->quiet && isatty(2), a->quiet
-    };
+    const int auto_digest = a->digest < 0 && verify && ops == &ef_transport_serial; /* a slow line */
+    ef_host_stream_opts so = { a->vectors,
+                               results,
+                               mask,
+                               a->resume,
+                               a->frame_cmds,
+                               a->link.timeout_ms,
+                               !a->quiet && isatty(2),
+                               a->quiet,
+                               auto_digest     ? 1024u
+                               : a->digest > 0 ? (uint32_t)a->digest
+                                               : 0u,
+                               auto_digest,
+                               a->digest_fetch };
     ef_host_stream_report rep;
     code = ef_host_stream(ops, l, &so, &rep);
     ops->close(l);
@@ -425,16 +528,22 @@ static int cmd_stream(args *a, int verify)
                 fprintf(stderr, "edgeflag-host: verify: FAIL (edgeflag check exit %d)\n", check);
         }
         code = check == 0 ? EF_HX_OK : check == 1 ? EF_HX_MISMATCH : check == 4 ? EF_HX_OUTPUT : EF_HX_INTERNAL;
+        if (a->save_frame && (code == EF_HX_OK || code == EF_HX_MISMATCH)) {
+            const int s = save_frame(actual, a->save_frame);
+            code = s ? s : code;
+        }
     }
     if (a->json)
         printf("{\"command\": \"%s\", \"transport\": \"%s\", \"exit\": %d, \"vectors\": \"%s\", \"results\": \"%s\", "
                "\"interfaces\": \"%s\", \"commands\": %" PRIu64 ", \"frames_sent\": %" PRIu64
                ", \"retransmits\": %" PRIu64 ", \"naks\": %" PRIu64 ", \"timeouts\": %" PRIu64
-               ", \"resumed_from_frame\": %" PRIu64 ", \"result_records\": %" PRIu64 ", \"result_bytes\": %" PRIu64
-               ", \"seconds\": %.6f, "
+               ", \"resumed_from_frame\": %" PRIu64 ", \"digest\": %" PRIu32 ", \"digest_windows\": %" PRIu64
+               ", \"digest_differ\": %" PRIu64 ", \"digest_fetched\": %" PRIu64 ", \"result_records\": %" PRIu64
+               ", \"result_bytes\": %" PRIu64 ", \"seconds\": %.6f, "
                "\"check\": %s}\n",
                a->cmd, ops->name, code, a->vectors, results, names, rep.cmds, rep.frames_sent, rep.retransmits,
-               rep.naks, rep.timeouts, rep.resumed_from, rep.records, rep.result_bytes, rep.seconds,
+               rep.naks, rep.timeouts, rep.resumed_from, rep.digest, rep.digest_windows, rep.digest_differ,
+               rep.digest_fetched, rep.records, rep.result_bytes, rep.seconds,
                check < 0    ? "null"
                : check == 0 ? "\"pass\""
                             : "\"fail\"");
@@ -496,6 +605,7 @@ int main(int argc, char **argv)
     }
     args a;
     memset(&a, 0, sizeof a);
+    a.digest = -1;
     a.cmd = argv[1];
     const int r = parse(argc - 1, argv + 1, &a);
     if (r)

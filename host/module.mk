@@ -5,7 +5,8 @@
 # saying "built without ..." otherwise (WITH_USB=0 / WITH_GPIO=0 force that).
 HOST_BOARD_SRC := $(wildcard board/*.c proto/*.c)
 HOST_SRC := host/main.c host/host_link.c host/bench_link.c host/transport.c host/transport_sim.c \
-            host/transport_null.c host/transport_socket.c
+            host/transport_null.c host/transport_socket.c \
+            host/transport_stream.c host/transport_serial.c
 HOST_CPPFLAGS := -Ihost -Iboard -Iproto -Icli
 HOST_LIBS := $(shell $(PKG_CONFIG) --libs zlib 2>/dev/null || echo -lz)
 include host/usb.mk

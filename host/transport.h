@@ -1,6 +1,6 @@
 /*
  * transport.h - how edgeflag-host reaches a board: one table of operations
- * per transport (usb, gpio, sim, null, socket), as libusb keeps its OS backends behind
+ * per transport (usb, gpio, sim, null, socket, serial), as libusb keeps its OS backends behind
  * one table.  A transport moves bytes and the three control requests; the
  * protocol (frames, sequence numbers, CRC, windows, resume) lives above it in
  * host_link.c and is the same for every transport (docs/board.md).
@@ -43,6 +43,8 @@ typedef struct ef_host_opts {
     const char *sim_state;  /* sim: directory holding the board's state across runs */
     const char *sim_faults; /* sim: fault injection (docs/board.md 6) */
     const char *connect;    /* socket: unix:PATH or tcp:HOST:PORT (docs/board.md 5.5) */
+    const char *port;       /* serial: the tty (/dev/ttyUSB0, docs/board-serial.md) */
+    unsigned baud;          /* serial: 0 = the default (3,000,000) */
 } ef_host_opts;
 
 typedef struct ef_link ef_link;
@@ -87,5 +89,6 @@ extern const ef_transport_ops ef_transport_gpio;
 extern const ef_transport_ops ef_transport_sim;
 extern const ef_transport_ops ef_transport_null;
 extern const ef_transport_ops ef_transport_socket;
+extern const ef_transport_ops ef_transport_serial;
 
 #endif /* EF_TRANSPORT_H */

@@ -43,6 +43,7 @@ install: install-usb-rule
 install-usb-rule:
 	install -d $(DESTDIR)$(PREFIX)/lib/udev/rules.d
 	install -m 644 host/60-edgeflag.rules $(DESTDIR)$(PREFIX)/lib/udev/rules.d/60-edgeflag.rules
+	install -m 644 host/60-edgeflag-serial.rules $(DESTDIR)$(PREFIX)/lib/udev/rules.d/60-edgeflag-serial.rules
 
 .PHONY: host-usb-emu test-host-usb
 host-usb-emu: $(USB_EMU)

@@ -116,18 +116,10 @@ ef_status ef_edges_setup(ef_ctx *ctx, const ef_polygon *poly, int32_t *row_min, 
      * (as the start of its edge); a bad one undoes what was built, so an
      * error leaves no state behind (and no diagnostic counted: the counts
      * reach ctx->diag only on success). */
-    setup_state st = { ctx->edges,
-                       ctx->slot,
-                       0,
-                       0,
-                       ctx->h,
-                       ctx->c,
-                       ctx->samples == 8    ? 5u
-                       : ctx->samples == 16 ? 4u
-                                            : 3u,
-                       ctx->samples * ctx->height - 1,
-                       INT32_MAX,
-                       -1 };
+    setup_state st = {
+        ctx->edges, ctx->slot, 0, 0, ctx->h, ctx->c, 8u - ef_samples_log2(ctx->samples), ctx->samples * ctx->height - 1,
+        INT32_MAX,  -1
+    };
     uint32_t edges_in = 0;
     int bad = 0;
     for (uint32_t ci = poly->ncontours; ci-- > 0 && !bad;) {

@@ -188,6 +188,10 @@ static EF_ALWAYS_INLINE void ef_dda_start(ef_edge *E, int32_t h, int32_t c, int3
  * its per-sample step, as ef_dda_start computes it for the other paths.  Its DDA
  * state, at the first sample row of a pixel row, is what STEEP edges carry
  * between rows. */
+/* log2 of a valid sample count N (8, 16, 32): 3, 4, 5.  The model's one
+ * copy (edge setup's h = 2^(8 - log2 N), the traced slot = r0 >> log2 N). */
+static inline unsigned ef_samples_log2(int n) { return n == 8 ? 3u : n == 16 ? 4u : 5u; }
+
 static inline void ef_mask_demote(ef_edge *E, int32_t h)
 {
     ef_divmod_floor_i32(h * E->dx, E->dy, &E->qs, &E->rs);

@@ -132,7 +132,7 @@ ef_status ef_trace_fill(ef_ctx *ctx, ef_image *img, const ef_polygon *poly, ef_r
     ef_trace_command(tr, EF_OP_SHAPE, rule == EF_RULE_EVENODD,
                      (uint64_t)color.r << 16 | (uint64_t)color.g << 8 | color.b, color.a, 0);
     const int32_t h = ctx->h, c = ctx->c, w256 = ctx->width * EF_DEV_ONE;
-    const unsigned log2n = ctx->samples == 8 ? 3 : ctx->samples == 16 ? 4 : 5;
+    const unsigned log2n = ef_samples_log2(ctx->samples);
     int64_t rec = (int64_t)ctx->nedges - 1; /* next record, walking backwards = input order */
     for (uint32_t ci = 0; ci < poly->ncontours; ci++) {
         const uint32_t b = poly->start[ci], n = poly->start[ci + 1] - b;

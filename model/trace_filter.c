@@ -295,7 +295,7 @@ ef_status ef_trace_filter_fill(ef_ctx *ctx, ef_image *img, const ef_polygon *pol
         /* DEC passes the input edge; SETUP moves it by the centre channel's
          * (tx, ty) and sets up the mask canvas's record (microarch 5). */
         const int32_t h = sc->h, c = sc->c, wm256 = r.wm * EF_DEV_ONE;
-        const unsigned log2n = r.ns == 8 ? 3 : r.ns == 16 ? 4 : 5;
+        const unsigned log2n = ef_samples_log2(r.ns);
         int64_t rec = (int64_t)sc->nedges - 1;
         for (uint32_t ci = 0; ci < poly->ncontours; ci++) {
             const uint32_t b = poly->start[ci], n = poly->start[ci + 1] - b;

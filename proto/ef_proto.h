@@ -50,6 +50,21 @@ enum {
     EF_MODE_LOOPBACK = 2, /* link test: each DATA payload comes back as a RESULT payload */
     EF_MODE_SOURCE = 3    /* link test: source_kib KiB of RESULT payload, no DATA needed */
 };
+/* START flags (the frame header's flags field; docs/board.md 4.5): a digest
+ * run returns a CRC-32 per window of N transactions of each interface, a
+ * select run the full records of chosen windows only. */
+enum { EF_START_DIGEST = 1, EF_START_SELECT = 2 };
+/* DIGEST: the START payload, then the window N (u32, >= 1).  SELECT: then N,
+ * a count K (u32, <= EF_PROTO_SELECT_MAX) and K u32 (interface << 24 | window
+ * index), strictly ascending. */
+#define EF_PROTO_START_DIGEST_LEN 28
+#define EF_PROTO_SELECT_MAX 1024
+/* A digest record in a digest run's RESULT payload: interface u8, 0xFF (no
+ * vectors.bin record has that length), window index u32, transactions in the
+ * window u32, CRC-32 of the window's vectors.bin records u32. */
+#define EF_PROTO_DIGEST_LEN 14
+#define EF_PROTO_DIGEST_MARK 0xFF
+#define EF_PROTO_IFACES 8 /* interface numbers are below this (bit i of a mask) */
 /* ACKR flags */
 enum { EF_ACKR_RESEND = 1 };
 /* DONE payload, EF_PROTO_DONE_LEN bytes: records u64, result_bytes u64,
@@ -68,6 +83,11 @@ typedef struct ef_proto_info {
     uint32_t iface_mask; /* interfaces the board can return */
 } ef_proto_info;
 
-enum { EF_PROTO_CAP_RESULTS = 1, EF_PROTO_CAP_RESUME = 2, EF_PROTO_CAP_INTERNAL = 4 };
+/* Capabilities.  Bits 16-23 are the largest DATA payload the board takes, in
+ * KiB (1-63; 0: 64 KiB, EF_PROTO_PAYLOAD_MAX): a board with little RAM says
+ * so (capabilities |= EF_PROTO_CAP_DATA(4)).  The engine sets DIGEST itself. */
+enum { EF_PROTO_CAP_RESULTS = 1, EF_PROTO_CAP_RESUME = 2, EF_PROTO_CAP_INTERNAL = 4, EF_PROTO_CAP_DIGEST = 8 };
+#define EF_PROTO_CAP_DATA(kib) ((uint32_t)(kib) << 16)
+#define EF_PROTO_CAP_DATA_KIB(caps) ((caps) >> 16 & 0xffu)
 
 #endif /* EF_PROTO_H */

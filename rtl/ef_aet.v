@@ -40,16 +40,11 @@
 // forwarding register: the front read in the cycle an arrival is written
 // to that entry (two new edges and nothing older, or the first new edge
 // read right after the last old one) takes the written data.  An entry is
-// {x[24:0], e, qs, rs, dy, dir, r0, r1}: 166 bits.
-//
-// Fault defines (tests/rtl/rtl-test.sh): EF_FAULT_LASTEDGE drops the last
-// edge of each shape that has two or more edges in its first row (the walk
-// takes it from ETM but never plots it); EF_FAULT_FWD_AET removes the
-// ring's forwarding path (in simulation the read of a never-written entry
-// then gives x, which edgeflag check refuses as such: rtl-test uses SLB's
-// forwarding fault, EF_FAULT_FWD, instead).
+// {x, e, qs, rs, dy, dir, r0, r1}, the et_wr fields (ef_ifaces.vh): 166 bits.
 //
 // Synthesizable Verilog-2005.
+`include "ef_ifaces.vh"
+
 module ef_aet #(
     parameter NS    = 8,
     parameter H_MAX = 16384,
@@ -62,38 +57,38 @@ module ef_aet #(
     // et_wr snoop (transfers only)
     input  wire        etw_valid,
     input  wire        etw_eos,
-    input  wire [13:0] etw_slot,
+    input  wire [`EF_ET_WR_SLOT_W-1:0] etw_slot,
 
     // ETM row requests
     output wire        row_req,
-    output wire [13:0] row_req_row,
+    output wire [`EF_ET_RD_ROW_W-1:0] row_req_row,
 
     // et_rd: row[13:0] eid[21:0] (+ ETM's side band et_rd_last)
     input  wire        et_rd_valid,
     output wire        et_rd_ready,
-    input  wire [13:0] et_rd_row,
-    input  wire [21:0] et_rd_eid,
+    input  wire [`EF_ET_RD_ROW_W-1:0] et_rd_row,
+    input  wire [`EF_ET_RD_EID_W-1:0] et_rd_eid,
     input  wire        et_rd_last,
 
     // ETM record read port
     output wire        rec_re,
-    output wire [21:0] rec_ra,
-    input  wire [18:0] rec_r0,
-    input  wire [18:0] rec_r1,
-    input  wire [24:0] rec_x,
-    input  wire [23:0] rec_e,
-    input  wire [29:0] rec_qs,
-    input  wire [23:0] rec_rs,
-    input  wire [23:0] rec_dy,
+    output wire [`EF_ET_RD_EID_W-1:0] rec_ra,
+    input  wire [`EF_ET_WR_R0_W-1:0] rec_r0,
+    input  wire [`EF_ET_WR_R1_W-1:0] rec_r1,
+    input  wire [`EF_ET_WR_X_W-1:0] rec_x,
+    input  wire [`EF_ET_WR_E_W-1:0] rec_e,
+    input  wire [`EF_ET_WR_QS_W-1:0] rec_qs,
+    input  wire [`EF_ET_WR_RS_W-1:0] rec_rs,
+    input  wire [`EF_ET_WR_DY_W-1:0] rec_dy,
     input  wire        rec_dir,
 
     // plot: last[0] row[13:0] s[4:0] q[14:0] dir[0]
     output wire        plot_valid,
     input  wire        plot_ready,
     output wire        plot_last,
-    output wire [13:0] plot_row,
-    output wire [4:0]  plot_s,
-    output wire [14:0] plot_q,
+    output wire [`EF_PLOT_ROW_W-1:0] plot_row,
+    output wire [`EF_PLOT_S_W-1:0] plot_s,
+    output wire [`EF_PLOT_Q_W-1:0] plot_q,
     output wire        plot_dir,
 
     output wire        busy          // a shape's rows are not all plotted
@@ -101,12 +96,23 @@ module ef_aet #(
     localparam EA     = (E_MAX > 1) ? $clog2(E_MAX) : 1;
     localparam RDEPTH = E_MAX + 1;
     localparam RA     = $clog2(RDEPTH);
-    localparam LOG2NS = (NS == 8) ? 3 : (NS == 16) ? 4 : 5;
-    localparam RW     = 25 + 24 + 30 + 24 + 24 + 1 + 19 + 19;
+    `include "ef_ns.vh"
+    // a ring entry {x, e, qs, rs, dy, dir, r0, r1}: each field's position
+    localparam O_R1   = 0;
+    localparam O_R0   = O_R1 + `EF_ET_WR_R1_W;
+    localparam O_DIR  = O_R0 + `EF_ET_WR_R0_W;
+    localparam O_DY   = O_DIR + `EF_ET_WR_DIR_W;
+    localparam O_RS   = O_DY + `EF_ET_WR_DY_W;
+    localparam O_QS   = O_RS + `EF_ET_WR_RS_W;
+    localparam O_E    = O_QS + `EF_ET_WR_QS_W;
+    localparam O_X    = O_E + `EF_ET_WR_E_W;
+    localparam RW     = O_X + `EF_ET_WR_X_W;
+    localparam ROWW   = `EF_PLOT_ROW_W;          // a pixel row
+    localparam SRW    = `EF_ET_WR_R0_W;          // a sample row
     localparam HA     = (H_MAX > 1) ? $clog2(H_MAX) : 1;
     localparam integer NSM1I  = NS - 1;
     localparam integer RLASTI = RDEPTH - 1;
-    localparam [18:0]   NSM1  = NSM1I[18:0];
+    localparam [SRW-1:0] NSM1 = NSM1I[SRW-1:0];
     localparam [RA-1:0] RLAST = RLASTI[RA-1:0];
 
     localparam [2:0] PH_IDLE = 3'd0, PH_RD = 3'd1, PH_P0 = 3'd2, PH_PL = 3'd3, PH_W1 = 3'd4, PH_W = 3'd5;
@@ -115,10 +121,10 @@ module ef_aet #(
     reg [2:0]       ph;
     reg [H_MAX-1:0] occ;          // rows whose slot holds edges not yet taken
     reg             any_rec;
-    reg [13:0]      rmin;
+    reg [ROWW-1:0]  rmin;
 
-    reg [13:0]   row;
-    reg [13:0]   nx_row;
+    reg [ROWW-1:0] row;
+    reg [ROWW-1:0] nx_row;
     reg          nx_occ;
 
     reg [RA-1:0] rd_ptr, wr_ptr;
@@ -130,11 +136,13 @@ module ef_aet #(
 
     reg          fresh;           // this plot starts an edge
     reg signed [31:0] cur_x;
-    reg [23:0]   cur_e, cur_rs, cur_dy;
-    reg [29:0]   cur_qs;
+    reg [`EF_ET_WR_E_W-1:0]  cur_e;
+    reg [`EF_ET_WR_RS_W-1:0] cur_rs;
+    reg [`EF_ET_WR_DY_W-1:0] cur_dy;
+    reg [`EF_ET_WR_QS_W-1:0] cur_qs;
     reg          cur_dir;
-    reg [18:0]   cur_r1;
-    reg [4:0]    cur_s;
+    reg [SRW-1:0] cur_r1;
+    reg [`EF_PLOT_S_W-1:0] cur_s;
 
     // ------------------------------------------------------------ the ring
     wire          ring_we, ring_re;
@@ -146,23 +154,17 @@ module ef_aet #(
     reg          lw_v;
     reg [RA-1:0] lw_addr, rq_addr;
     reg [RW-1:0] lw_data;
-`ifdef EF_FAULT_FWD_AET
-    wire [RW-1:0] ring_rd = ring_q;
-    wire [RW-1:0] unused_lw = lw_data;
-    wire          unused_lwv = lw_v && (lw_addr == rq_addr);
-`else
     wire [RW-1:0] ring_rd = (lw_v && lw_addr == rq_addr) ? lw_data : ring_q;
-`endif
 
     // ------------------------------------------------------------ row data
     wire        row_start = (ph == PH_W) && plot_ready;
     // In PH_W the row's data mean something only when it starts: taking them
     // from the phase alone keeps SLB's plot_ready out of the datapath (issue
     // 25: it only enables).
-    wire        in_w = (ph == PH_W);
-    wire [13:0] row_now = in_w ? nx_row : row;
-    wire [18:0] base = {5'd0, row_now} << LOG2NS;
-    wire [18:0] rend = base + NSM1;
+    wire            in_w = (ph == PH_W);
+    wire [ROWW-1:0] row_now = in_w ? nx_row : row;
+    wire [SRW-1:0]  base = {{(SRW-ROWW){1'b0}}, row_now} << LOG2NS;
+    wire [SRW-1:0]  rend = base + NSM1;
 
     // The least set bit of occ in log depth instead of a priority chain as
     // long as H_MAX (the critical path of the block in docs/synthesis.md),
@@ -183,6 +185,8 @@ module ef_aet #(
     localparam PG  = 1 << NGA;                       // groups, a power of two
     localparam [NGA-1:0] G_ONE = 1;
     localparam [GA-1:0]  B_ONE = 1;
+    localparam [PG*64-1:0] W_NONE = 0;              // (a replication this wide is a lint warning)
+    localparam [H_MAX-1:0] OCC_NONE = 0;
     /* verilator lint_off UNUSEDSIGNAL */
     function [HA-1:0] first_occ;
         input [H_MAX-1:0] occ_v;
@@ -194,7 +198,7 @@ module ef_aet #(
         reg [NGA+GA-1:0]  full;
         integer g, lv, j;
         begin
-            w = {(PG*64){1'b0}};
+            w = W_NONE;
             w[H_MAX-1:0] = occ_v;
             for (g = 0; g < PG; g = g + 1)
                 gv[g] = |w[g*64 +: 64];
@@ -236,43 +240,35 @@ module ef_aet #(
     wire fr      = first || fresh;
     // edges of the row, and which come from the record port (the last new)
     wire [EA:0]   nn = in_w ? {(EA+1){1'b0}} : n_new;   // new edges of the row
-`ifdef EF_FAULT_LASTEDGE
-    // a shape's first row with two or more new edges loses its last one
-    reg first_row;
-    wire        drop = first_row && (nn >= 2);
-`else
-    wire        drop = 1'b0;
-`endif
-    wire        rec_edge = (nn != 0) && !drop;     // the last edge comes from rec_*
-    wire [EA:0] nn_eff = drop ? nn - 1'b1 : nn;
-    wire [RA+1:0] n_all = {1'b0, n_old} + {{(RA+1-EA){1'b0}}, nn_eff};
+    wire        rec_edge = (nn != 0);     // the last edge comes from rec_*
+    wire [RA+1:0] n_all = {1'b0, n_old} + {{(RA+1-EA){1'b0}}, nn};
     wire [RA+1:0] k_now = first ? {(RA+2){1'b0}} : k;
     wire        from_rec = fr && rec_edge && (k_now + 1'b1 == n_all);
 
     wire [RW-1:0] src = from_rec ? {rec_x, rec_e, rec_qs, rec_rs, rec_dy, rec_dir, rec_r0, rec_r1} : ring_rd;
-    wire signed [31:0] S_x = fr ? {{7{src[RW-1]}}, src[RW-1 -: 25]} : cur_x;
-    wire [23:0] S_e  = fr ? src[RW-26 -: 24]  : cur_e;
-    wire [29:0] S_qs = fr ? src[RW-50 -: 30]  : cur_qs;
-    wire [23:0] S_rs = fr ? src[RW-80 -: 24]  : cur_rs;
-    wire [23:0] S_dy = fr ? src[RW-104 -: 24] : cur_dy;
-    wire        S_dir = fr ? src[38] : cur_dir;
-    wire [18:0] S_r0 = src[37:19];
-    wire [18:0] S_r1 = fr ? src[18:0] : cur_r1;
+    wire signed [31:0] S_x = fr ? {{(32-`EF_ET_WR_X_W){src[RW-1]}}, src[O_X +: `EF_ET_WR_X_W]} : cur_x;
+    wire [`EF_ET_WR_E_W-1:0]  S_e  = fr ? src[O_E +: `EF_ET_WR_E_W]   : cur_e;
+    wire [`EF_ET_WR_QS_W-1:0] S_qs = fr ? src[O_QS +: `EF_ET_WR_QS_W] : cur_qs;
+    wire [`EF_ET_WR_RS_W-1:0] S_rs = fr ? src[O_RS +: `EF_ET_WR_RS_W] : cur_rs;
+    wire [`EF_ET_WR_DY_W-1:0] S_dy = fr ? src[O_DY +: `EF_ET_WR_DY_W] : cur_dy;
+    wire        S_dir = fr ? src[O_DIR] : cur_dir;
+    wire [SRW-1:0] S_r0 = src[O_R0 +: SRW];
+    wire [SRW-1:0] S_r1 = fr ? src[O_R1 +: SRW] : cur_r1;
 
     /* verilator lint_off UNUSEDSIGNAL */
-    wire [18:0] s0w  = (S_r0 > base) ? (S_r0 - base) : 19'd0;     // < NS
-    wire [18:0] slw  = ((S_r1 < rend) ? S_r1 : rend) - base;       // < NS
+    wire [SRW-1:0] s0w = (S_r0 > base) ? (S_r0 - base) : {SRW{1'b0}};   // < NS
+    wire [SRW-1:0] slw = ((S_r1 < rend) ? S_r1 : rend) - base;         // < NS
     /* verilator lint_on UNUSEDSIGNAL */
-    wire [4:0]  s_now = fr ? s0w[4:0] : cur_s;
-    wire        edge_done = (s_now == slw[4:0]);
+    wire [`EF_PLOT_S_W-1:0] s_now = fr ? s0w[`EF_PLOT_S_W-1:0] : cur_s;
+    wire        edge_done = (s_now == slw[`EF_PLOT_S_W-1:0]);
     wire        survive   = S_r1 > rend;
     wire        row_last  = (k_now + 1'b1 == n_all);
     // the next edge is in the ring (not the record port's)
     wire        next_ring = !row_last && !(rec_edge && (k_now + {{RA{1'b0}}, 2'd2} == n_all));
 
-    wire [14:0] q;
+    wire [`EF_PLOT_Q_W-1:0] q;
     wire signed [31:0] x_next;
-    wire [23:0] e_next;
+    wire [`EF_ET_WR_E_W-1:0] e_next;
     ef_plot #(.NS(NS)) u_plot (
         .s(s_now), .x(S_x), .e(S_e), .qs(S_qs), .rs(S_rs), .dy(S_dy), .width(cfg_width),
         .q(q), .x_next(x_next), .e_next(e_next)
@@ -284,9 +280,9 @@ module ef_aet #(
     // plot of a row (it drops plot_ready only after taking the row's last),
     // so the register never holds a plot that is not taken.
     reg        p_valid, p_last, p_dir;
-    reg [13:0] p_row;
-    reg [4:0]  p_s;
-    reg [14:0] p_q;
+    reg [`EF_PLOT_ROW_W-1:0] p_row;
+    reg [`EF_PLOT_S_W-1:0]   p_s;
+    reg [`EF_PLOT_Q_W-1:0]   p_q;
     always @(posedge clk) begin
         if (rst)
             p_valid <= 1'b0;
@@ -310,7 +306,7 @@ module ef_aet #(
     wire arrive = arr_v && !arr_last;            // t+1 .. t+n-1: no plot yet
     assign ring_we = push || arrive;
     // a survivor's r0 is 0: in later rows it starts at sample row 0
-    assign ring_wd = push ? {x_next[24:0], e_next, S_qs, S_rs, S_dy, S_dir, 19'd0, S_r1}
+    assign ring_wd = push ? {x_next[`EF_ET_WR_X_W-1:0], e_next, S_qs, S_rs, S_dy, S_dir, {SRW{1'b0}}, S_r1}
                           : {rec_x, rec_e, rec_qs, rec_rs, rec_dy, rec_dir, rec_r0, rec_r1};
     wire w1 = (ph == PH_W1);
     // reads: the next row's first edge (after the last plot), the first new
@@ -321,29 +317,31 @@ module ef_aet #(
                    || (in_plot && edge_done && next_ring);
 
     // ------------------------------------------------------------ next row
-    wire [13:0] row1 = row + 14'd1;
+    wire [ROWW-1:0] row1 = row + {{(ROWW-1){1'b0}}, 1'b1};
     wire        occ1 = occ[row1[HA-1:0]];
-    wire [13:0] ffs;                           // changes only with occ
+    wire [ROWW-1:0] ffs;                       // changes only with occ
     generate
-        if (HA < 14) begin : ffs_ext
-            assign ffs = {{(14-HA){1'b0}}, ffs_ix};
+        if (HA < ROWW) begin : ffs_ext
+            assign ffs = {{(ROWW-HA){1'b0}}, ffs_ix};
         end else begin : ffs_full
-            assign ffs = ffs_ix[13:0];
+            assign ffs = ffs_ix[ROWW-1:0];
         end
     endgenerate
-    wire [13:0] nx_calc = (aet_cnt != 0) ? row1 : ffs;
+    wire [ROWW-1:0] nx_calc = (aet_cnt != 0) ? row1 : ffs;
     wire        nx_occ_calc = (aet_cnt != 0) ? occ1 : 1'b1;
-    wire        shape_end = (aet_cnt == 0) && (occ == {H_MAX{1'b0}});
+    wire        shape_end = (aet_cnt == 0) && (occ == OCC_NONE);
     wire        eos_go = etw_valid && etw_eos && any_rec;
     assign row_req     = eos_go || (w1 && !shape_end && nx_occ_calc);
     assign row_req_row = eos_go ? rmin : nx_calc;
 
     assign busy = (ph != PH_IDLE) || p_valid;
 
-    // et_rd names the row being started (a check, not a function: ETM
-    // presents the row it was asked for)
+    // et_rd's row field is not used here: the sequencer knows the row it
+    // requested, and ETM presents that row's list.  The field is on the
+    // port because et_rd is a dumped interface (docs/microarch.md 3.3);
+    // nothing compares it in the RTL (the benches' `edgeflag check` does).
     /* verilator lint_off UNUSEDSIGNAL */
-    wire [13:0] unused_rd_row = et_rd_row;
+    wire [`EF_ET_RD_ROW_W-1:0] unused_rd_row = et_rd_row;
     /* verilator lint_on UNUSEDSIGNAL */
 
     function [RA-1:0] inc;
@@ -357,7 +355,7 @@ module ef_aet #(
     always @(posedge clk) begin
         if (rst) begin
             ph <= PH_IDLE;
-            occ <= {H_MAX{1'b0}};
+            occ <= OCC_NONE;
             any_rec <= 1'b0;
             rd_ptr <= {RA{1'b0}};
             wr_ptr <= {RA{1'b0}};
@@ -383,9 +381,6 @@ module ef_aet #(
                     nx_occ <= 1'b1;
                     n_old <= {(RA+1){1'b0}};
                     aet_cnt <= {(RA+1){1'b0}};
-`ifdef EF_FAULT_LASTEDGE
-                    first_row <= 1'b1;
-`endif
                 end
             end
 
@@ -425,9 +420,6 @@ module ef_aet #(
                         aet_cnt <= aet_cnt + 1'b1;
                     if (row_last) begin
                         ph <= PH_W1;
-`ifdef EF_FAULT_LASTEDGE
-                        first_row <= 1'b0;
-`endif
                     end
                 end else begin
                     fresh <= 1'b0;

@@ -22,6 +22,8 @@
 // mul(a, b) = ((t >> 8) + t) >> 8, t = a*b + 128.
 //
 // Synthesizable Verilog-2005.
+`include "ef_ifaces.vh"
+
 module ef_cov #(
     parameter NS = 8
 ) (
@@ -33,32 +35,32 @@ module ef_cov #(
     // span: y[13:0] x[13:0] len[14:0] mask[31:0]
     input  wire        span_valid,
     output wire        span_ready,
-    input  wire [13:0] span_y,
-    input  wire [13:0] span_x,
-    input  wire [14:0] span_len,
-    input  wire [31:0] span_mask,
+    input  wire [`EF_SPAN_Y_W-1:0] span_y,
+    input  wire [`EF_SPAN_X_W-1:0] span_x,
+    input  wire [`EF_SPAN_LEN_W-1:0] span_len,
+    input  wire [`EF_SPAN_MASK_W-1:0] span_mask,
 
     // pix: y[13:0] x[13:0] alpha[7:0] rgba[31:0]
     output reg         pix_valid,
     input  wire        pix_ready,
-    output reg  [13:0] pix_y,
-    output reg  [13:0] pix_x,
-    output reg  [7:0]  pix_alpha,
-    output reg  [31:0] pix_rgba,
+    output reg  [`EF_PIX_Y_W-1:0] pix_y,
+    output reg  [`EF_PIX_X_W-1:0] pix_x,
+    output reg  [`EF_PIX_ALPHA_W-1:0] pix_alpha,
+    output reg  [`EF_PIX_RGBA_W-1:0] pix_rgba,
 
     // frame memory (outside the core)
     output wire        fb_re,
-    output wire [13:0] fb_ry,
-    output wire [13:0] fb_rx,
-    input  wire [31:0] fb_rdata,
+    output wire [`EF_PIX_Y_W-1:0] fb_ry,
+    output wire [`EF_PIX_X_W-1:0] fb_rx,
+    input  wire [`EF_PIX_RGBA_W-1:0] fb_rdata,
     output wire        fb_we,
-    output wire [13:0] fb_wy,
-    output wire [13:0] fb_wx,
-    output wire [31:0] fb_wdata,
+    output wire [`EF_PIX_Y_W-1:0] fb_wy,
+    output wire [`EF_PIX_X_W-1:0] fb_wx,
+    output wire [`EF_PIX_RGBA_W-1:0] fb_wdata,
 
     output wire        busy
 );
-    localparam LOG2NS = (NS == 8) ? 3 : (NS == 16) ? 4 : 5;
+    `include "ef_ns.vh"
 
     function [7:0] mul;
         input [7:0] a, b;

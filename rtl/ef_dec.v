@@ -22,6 +22,8 @@
 // output is not meaningful (the bench refuses such a stream before running).
 //
 // Synthesizable Verilog-2005.
+`include "ef_ifaces.vh"
+
 module ef_dec #(
     parameter W_MAX = 16384,
     parameter H_MAX = 16384
@@ -32,21 +34,21 @@ module ef_dec #(
     // cmd: op[3:0] a[23:0] b[23:0] c[23:0] d[23:0]
     input  wire        cmd_valid,
     output wire        cmd_ready,
-    input  wire [3:0]  cmd_op,
-    input  wire [23:0] cmd_a,
-    input  wire [23:0] cmd_b,
-    input  wire [23:0] cmd_c,
-    input  wire [23:0] cmd_d,
+    input  wire [`EF_CMD_OP_W-1:0] cmd_op,
+    input  wire [`EF_CMD_A_W-1:0] cmd_a,
+    input  wire [`EF_CMD_B_W-1:0] cmd_b,
+    input  wire [`EF_CMD_C_W-1:0] cmd_c,
+    input  wire [`EF_CMD_D_W-1:0] cmd_d,
     input  wire        shape_done,   // the shape after SHAPE_END has drained
 
     // seg: eos[0] xa[23:0] ya[23:0] xb[23:0] yb[23:0]
     output reg         seg_valid,
     input  wire        seg_ready,
     output reg         seg_eos,
-    output reg  [23:0] seg_xa,
-    output reg  [23:0] seg_ya,
-    output reg  [23:0] seg_xb,
-    output reg  [23:0] seg_yb,
+    output reg  [`EF_SEG_XA_W-1:0] seg_xa,
+    output reg  [`EF_SEG_YA_W-1:0] seg_ya,
+    output reg  [`EF_SEG_XB_W-1:0] seg_xb,
+    output reg  [`EF_SEG_YB_W-1:0] seg_yb,
 
     // Configuration registers (microarch 3.1).
     output reg  [14:0] cfg_width,    // FRAME a (1..W_MAX)
@@ -58,8 +60,9 @@ module ef_dec #(
     output reg         frame_end,    // pulse: the cycle after FRAME_END
     output reg         cfg_err       // sticky: a FRAME over W_MAX x H_MAX
 );
-    localparam [3:0] OP_FRAME = 4'd1, OP_SHAPE = 4'd2, OP_EDGE = 4'd3, OP_SHAPE_END = 4'd4,
-                     OP_FRAME_END = 4'd5;
+    // the command codes of docs/microarch.md 3.1, from ef_ifaces.vh
+    localparam [`EF_CMD_OP_W-1:0] OP_FRAME = `EF_OP_FRAME, OP_SHAPE = `EF_OP_SHAPE, OP_EDGE = `EF_OP_EDGE,
+                                  OP_SHAPE_END = `EF_OP_SHAPE_END, OP_FRAME_END = `EF_OP_FRAME_END;
 
     reg draining;   // a SHAPE_END was taken and the shape has not drained
 
@@ -115,10 +118,10 @@ module ef_dec #(
                     OP_SHAPE_END: begin
                         seg_valid <= 1'b1;
                         seg_eos   <= 1'b1;
-                        seg_xa    <= 24'd0;
-                        seg_ya    <= 24'd0;
-                        seg_xb    <= 24'd0;
-                        seg_yb    <= 24'd0;
+                        seg_xa    <= {`EF_SEG_XA_W{1'b0}};
+                        seg_ya    <= {`EF_SEG_YA_W{1'b0}};
+                        seg_xb    <= {`EF_SEG_XB_W{1'b0}};
+                        seg_yb    <= {`EF_SEG_YB_W{1'b0}};
                         draining  <= 1'b1;
                     end
                     default: ;

@@ -137,13 +137,8 @@ module ef_div #(
     wire          negb = stage[QB].hb[HW-1];
     wire [QB:0]   qa_nr = {stage[QB].la, 1'b0} - {1'b0, {QB{1'b1}}};
     wire [QB:0]   qb_nr = {stage[QB].lb, 1'b0} - {1'b0, {QB{1'b1}}};
-`ifndef EF_FAULT_DIV_FLOOR
     wire [QB:0]   qa_fl = qa_nr - {{QB{1'b0}}, nega};
     wire [QB:0]   qb_fl = qb_nr - {{QB{1'b0}}, negb};
-`else
-    wire [QB:0]   qa_fl = qa_nr;    // fault injection: Q's floor correction skipped
-    wire [QB:0]   qb_fl = qb_nr;
-`endif
     wire [DW-1:0] ra_fl = stage[QB].ha[DW-1:0] + (nega ? dq : {DW{1'b0}});
     wire [DW-1:0] rb_fl = stage[QB].hb[DW-1:0] + (negb ? dq : {DW{1'b0}});
 
@@ -180,11 +175,7 @@ module ef_div #(
     // after enabled edge n + QB (the correction register's cycle): read at
     // edge m the entry written at m - QB.
     reg  [SA-1:0] wp;
-`ifdef EF_FAULT_SB_RING
-    wire [SA-1:0] rp = wp - QOFF + 1'b1;   // fault build: the ring's offset one short
-`else
     wire [SA-1:0] rp = wp - QOFF;
-`endif
     always @(posedge clk) begin
         if (rst)
             wp <= {SA{1'b0}};

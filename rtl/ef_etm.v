@@ -2,8 +2,8 @@
 // microarchitecture (docs/microarch.md 3.3, 3.5 and section 4 item 4; the
 // edge table is docs/spec.md section 6).
 // Interfaces:  et_wr (SETUP -> ETM) in,  et_rd (ETM -> AET) out,
-//              plus a row-request port, a next-occupied-slot query and a
-//              record read port for the AET and sequencer.
+//              plus a row-request port and a record read port for the
+//              AET and sequencer.
 //
 // Memories (ef_slb_ram: one write port, one synchronous read port):
 //   rec  [E_MAX]: the record of edge eid (r0 r1 x e qs rs dy dir), written
@@ -37,10 +37,6 @@
 // (row_req_ready low); et_wr is not taken while one is (et_wr_ready low):
 // in the reference schedule neither happens.
 //
-// Next occupied slot: nx_req with nx_after in cycle u; at u+2 nx_valid
-// pulses with nx_found and nx_row, the least row above nx_after whose slot
-// holds an edge (for the sequencer, when the AET empties).
-//
 // Record read port: rec_re/rec_ra in cycle t, the record on rec_* in t+1
 // (held while rec_re is low): the AET reads the record of an et_rd's eid in
 // its transfer cycle.
@@ -50,6 +46,8 @@
 // E_MAX edges sets the sticky err_full (the records beyond are dropped).
 //
 // Synthesizable Verilog-2005.
+`include "ef_ifaces.vh"
+
 module ef_etm #(
     parameter NS    = 8,        // samples per pixel: 8, 16 or 32
     parameter H_MAX = 16384,    // slots (pixel rows)
@@ -64,63 +62,56 @@ module ef_etm #(
     input  wire        et_wr_valid,
     output wire        et_wr_ready,
     input  wire        et_wr_eos,
-    input  wire [13:0] et_wr_slot,
-    input  wire [18:0] et_wr_r0,
-    input  wire [18:0] et_wr_r1,
-    input  wire [24:0] et_wr_x,
-    input  wire [23:0] et_wr_e,
-    input  wire [29:0] et_wr_qs,
-    input  wire [23:0] et_wr_rs,
-    input  wire [23:0] et_wr_dy,
+    input  wire [`EF_ET_WR_SLOT_W-1:0] et_wr_slot,
+    input  wire [`EF_ET_WR_R0_W-1:0] et_wr_r0,
+    input  wire [`EF_ET_WR_R1_W-1:0] et_wr_r1,
+    input  wire [`EF_ET_WR_X_W-1:0] et_wr_x,
+    input  wire [`EF_ET_WR_E_W-1:0] et_wr_e,
+    input  wire [`EF_ET_WR_QS_W-1:0] et_wr_qs,
+    input  wire [`EF_ET_WR_RS_W-1:0] et_wr_rs,
+    input  wire [`EF_ET_WR_DY_W-1:0] et_wr_dy,
     input  wire        et_wr_dir,
 
     // the shape closed by eos
     output reg         shape_go,      // pulse in the cycle after the eos et_wr (T0)
     output reg         shape_any,     // the shape has a record (from the eos cycle on)
-    output reg  [13:0] row_first,     // its first and last rows (valid with shape_any)
-    output reg  [13:0] row_last,
+    output reg  [`EF_ET_WR_SLOT_W-1:0] row_first,     // its first and last rows (valid with shape_any)
+    output reg  [`EF_ET_WR_SLOT_W-1:0] row_last,
     output reg  [22:0] shape_nedges,  // its records (from shape_go on)
     output reg         err_full,      // sticky: more than E_MAX records in a shape
 
     // row requests
     input  wire        row_req,
     output wire        row_req_ready,
-    input  wire [13:0] row_req_row,
+    input  wire [`EF_ET_RD_ROW_W-1:0] row_req_row,
     output reg         row_ack,       // pulse in the cycle after the request
     output wire        row_nonempty,  // with row_ack: slot j holds edges
-
-    // next occupied slot: the least row > nx_after whose slot holds an
-    // edge, 2 cycles after nx_req (nx_valid pulse)
-    input  wire        nx_req,
-    input  wire [13:0] nx_after,
-    output reg         nx_valid,
-    output reg         nx_found,
-    output reg  [13:0] nx_row,
 
     // et_rd: row[13:0] eid[21:0]
     output wire        et_rd_valid,
     input  wire        et_rd_ready,
-    output wire [13:0] et_rd_row,
-    output wire [21:0] et_rd_eid,
+    output wire [`EF_ET_RD_ROW_W-1:0] et_rd_row,
+    output wire [`EF_ET_RD_EID_W-1:0] et_rd_eid,
     output wire        et_rd_last,    // the slot's last edge
 
     // record read port
     input  wire        rec_re,
-    input  wire [21:0] rec_ra,
-    output wire [18:0] rec_r0,
-    output wire [18:0] rec_r1,
-    output wire [24:0] rec_x,
-    output wire [23:0] rec_e,
-    output wire [29:0] rec_qs,
-    output wire [23:0] rec_rs,
-    output wire [23:0] rec_dy,
+    input  wire [`EF_ET_RD_EID_W-1:0] rec_ra,
+    output wire [`EF_ET_WR_R0_W-1:0] rec_r0,
+    output wire [`EF_ET_WR_R1_W-1:0] rec_r1,
+    output wire [`EF_ET_WR_X_W-1:0] rec_x,
+    output wire [`EF_ET_WR_E_W-1:0] rec_e,
+    output wire [`EF_ET_WR_QS_W-1:0] rec_qs,
+    output wire [`EF_ET_WR_RS_W-1:0] rec_rs,
+    output wire [`EF_ET_WR_DY_W-1:0] rec_dy,
     output wire        rec_dir
 );
-    localparam LOG2NS = NS == 8 ? 3 : NS == 16 ? 4 : 5;
+    `include "ef_ns.vh"
     localparam EW = E_MAX > 1 ? $clog2(E_MAX) : 1;     // eid bits
     localparam HW = H_MAX > 1 ? $clog2(H_MAX) : 1;     // slot address bits
     localparam SW = 1 + 2 * EW;                        // slot entry {valid, head, tail}
-    localparam RW = 19 + 19 + 25 + 24 + 30 + 24 + 24 + 1;
+    localparam RW = `EF_ET_WR_R0_W + `EF_ET_WR_R1_W + `EF_ET_WR_X_W + `EF_ET_WR_E_W + `EF_ET_WR_QS_W
+                  + `EF_ET_WR_RS_W + `EF_ET_WR_DY_W + `EF_ET_WR_DIR_W;    // a record
     localparam [31:0] EMAX32 = E_MAX;
     localparam [22:0] EMAX23 = EMAX32[22:0];   // E_MAX <= 2^22
 
@@ -143,7 +134,7 @@ module ef_etm #(
     ef_slb_ram #(.AW(EW), .DW(RW), .DEPTH(E_MAX)) u_rec (
         .clk(clk), .we(r_we), .wa(r_wa), .wd(r_wd), .re(rec_re), .ra(rec_ra[EW-1:0]), .rd(r_rd));
 
-    wire [21:0] unused_ra = rec_ra;   // bits above EW are 0 for a valid eid
+    wire [`EF_ET_RD_EID_W-1:0] unused_ra = rec_ra;   // bits above EW are 0 for a valid eid
     assign {rec_r0, rec_r1, rec_x, rec_e, rec_qs, rec_rs, rec_dy, rec_dir} = r_rd;
 
     // ------------------------------------------------------------- state
@@ -161,7 +152,7 @@ module ef_etm #(
 
     localparam [1:0] R_IDLE = 2'd0, R_HEAD = 2'd1, R_HELD = 2'd2, R_CHAIN = 2'd3;
     reg [1:0]     rs;              // list presentation state
-    reg [13:0]    rq_row;
+    reg [`EF_ET_RD_ROW_W-1:0] rq_row;
     reg [EW-1:0]  hd_head, hd_tail;
 
     // ------------------------------------------------------------ write path
@@ -196,7 +187,7 @@ module ef_etm #(
     assign et_rd_valid = (head_cycle && cur_v) || (rs == R_HELD) || (rs == R_CHAIN);
     wire [EW-1:0] eid  = head_cycle ? cur_head : (rs == R_HELD) ? hd_head : n_rd;
     wire [EW-1:0] tail = head_cycle ? cur_tail : hd_tail;
-    assign et_rd_eid  = {{(22-EW){1'b0}}, eid};
+    assign et_rd_eid  = {{(`EF_ET_RD_EID_W-EW){1'b0}}, eid};
     assign et_rd_row  = rq_row;
     assign et_rd_last = (eid == tail);
     wire rd_take = et_rd_valid && et_rd_ready;
@@ -212,96 +203,8 @@ module ef_etm #(
     assign s_re = take_e || req;
     assign s_ra = take_e ? et_wr_slot[HW-1:0] : row_req_row[HW-1:0];
 
-    // ------------------------------------------------ occupancy bitmap
-    // One bit per slot, in groups of 64 flip-flops with a per-group "any":
-    // set when a slot gets its first record, cleared when the slot is taken.
-    // A query finds the least set bit above nx_after in two cycles: (1) the
-    // query's own group masked, and the groups above it; (2) the first of
-    // those groups, if the own group had none.  The sequencer needs it when
-    // the AET empties: the rows up to the next occupied slot cost no cycle.
-    localparam NG = (H_MAX + 63) / 64;
-    wire          occ_set = w2_v && !cur_v;            // first record of the slot
-    wire          occ_clr = head_cycle && cur_v;       // the slot is taken
-    wire [13:0]   occ_a   = occ_set ? {{(14-HW){1'b0}}, w2_slot} : rq_row;
-    localparam [31:0] NG32 = NG;
-    localparam [8:0]  NG9  = NG32[8:0];               // NG <= 256
-    reg  [NG*64-1:0] occ_all;
-    wire [NG-1:0] occ_any, occ_any_now;
-    wire [NG*64-1:0] occ_bit;     // one-hot: slot occ_a
-    integer gi;
-    always @(posedge clk) begin
-        if (rst) begin
-            for (gi = 0; gi < NG; gi = gi + 1)
-                occ_all[64*gi +: 64] <= 64'd0;
-        end else if (occ_set)
-            occ_all <= occ_all | occ_bit;
-        else if (occ_clr)
-            occ_all <= occ_all & ~occ_bit;
-    end
-    genvar g;
-    generate
-        for (g = 0; g < NG; g = g + 1) begin : grp
-            localparam [31:0] G32 = g;
-            assign occ_any[g] = |occ_all[64*g +: 64];
-            // with the bit being set in this cycle: the query in the eos
-            // cycle must see the last record's slot (its stage 2 is then)
-            assign occ_any_now[g] = occ_any[g] || (occ_set && occ_a[13:6] == G32[7:0]);
-            assign occ_bit[64*g +: 64] = (occ_a[13:6] == G32[7:0]) ? (64'd1 << occ_a[5:0]) : 64'd0;
-        end
-    endgenerate
-
-    function [5:0] ffs64;          // least set bit (0 when none)
-        input [63:0] v;
-        integer i;
-        begin
-            ffs64 = 6'd0;
-            for (i = 63; i >= 0; i = i - 1)
-                if (v[i]) ffs64 = i[5:0];
-        end
-    endfunction
-    function [7:0] ffsg;           // least set group (0 when none)
-        input [NG-1:0] v;
-        integer i;
-        begin
-            ffsg = 8'd0;
-            for (i = NG - 1; i >= 0; i = i - 1)
-                if (v[i]) ffsg = i[7:0];
-        end
-    endfunction
-
-    wire [7:0]    q_g    = nx_after[13:6];
-    wire [6:0]    q_b1   = {1'b0, nx_after[5:0]} + 7'd1;
-    wire [63:0]   q_own  = ({1'b0, q_g} < NG9) ?
-                           (occ_all[64*q_g +: 64] | (occ_set ? occ_bit[64*q_g +: 64] : 64'd0)) & ({64{1'b1}} << q_b1)
-                           : 64'd0;
-    wire [NG-1:0] q_up   = occ_any_now & ({{(NG-1){1'b1}}, 1'b1} << ({1'b0, q_g} + 9'd1));
-    reg           n1_v;
-    reg [7:0]     n1_g;
-    reg [63:0]    n1_own;
-    reg [NG-1:0]  n1_up;
-    wire [7:0]    n1_g2  = ffsg(n1_up);
-    wire [63:0]   n1_bits = occ_all[64*n1_g2 +: 64];
-    always @(posedge clk) begin
-        if (rst) begin
-            n1_v     <= 1'b0;
-            nx_valid <= 1'b0;
-        end else begin
-            n1_v <= nx_req;
-            if (nx_req) begin
-                n1_g   <= q_g;
-                n1_own <= q_own;
-                n1_up  <= q_up;
-            end
-            nx_valid <= n1_v;
-            if (n1_v) begin
-                nx_found <= (|n1_own) || (|n1_up);
-                nx_row   <= (|n1_own) ? {n1_g, ffs64(n1_own)} : {n1_g2, ffs64(n1_bits)};
-            end
-        end
-    end
-
-    wire [18:0] last_row_w = et_wr_r1 >> LOG2NS;
-    wire [4:0]  unused_lr = last_row_w[18:14];
+    wire [`EF_ET_WR_R1_W-1:0] last_row_w = et_wr_r1 >> LOG2NS;
+    wire [`EF_ET_WR_R1_W-`EF_ET_WR_SLOT_W-1:0] unused_lr = last_row_w[`EF_ET_WR_R1_W-1:`EF_ET_WR_SLOT_W];
 
     always @(posedge clk) begin
         if (rst) begin
@@ -341,8 +244,8 @@ module ef_etm #(
                 shape_any <= 1'b1;
                 if (fresh || et_wr_slot < row_first)
                     row_first <= et_wr_slot;
-                if (fresh || last_row_w[13:0] > row_last)
-                    row_last <= last_row_w[13:0];
+                if (fresh || last_row_w[`EF_ET_WR_SLOT_W-1:0] > row_last)
+                    row_last <= last_row_w[`EF_ET_WR_SLOT_W-1:0];
             end
             if (take && !et_wr_eos && !(wcnt < EMAX23))
                 err_full <= 1'b1;

@@ -16,6 +16,8 @@
 // only, so cmd_ready can rise in the cycle T_free itself).
 //
 // Synthesizable Verilog-2005.
+`include "ef_ifaces.vh"
+
 module ef_raster #(
     parameter NS    = 8,
     parameter W_MAX = 16384,
@@ -29,29 +31,29 @@ module ef_raster #(
     // cmd: op[3:0] a[23:0] b[23:0] c[23:0] d[23:0]
     input  wire        cmd_valid,
     output wire        cmd_ready,
-    input  wire [3:0]  cmd_op,
-    input  wire [23:0] cmd_a,
-    input  wire [23:0] cmd_b,
-    input  wire [23:0] cmd_c,
-    input  wire [23:0] cmd_d,
+    input  wire [`EF_CMD_OP_W-1:0] cmd_op,
+    input  wire [`EF_CMD_A_W-1:0] cmd_a,
+    input  wire [`EF_CMD_B_W-1:0] cmd_b,
+    input  wire [`EF_CMD_C_W-1:0] cmd_c,
+    input  wire [`EF_CMD_D_W-1:0] cmd_d,
 
     // pix: y[13:0] x[13:0] alpha[7:0] rgba[31:0]
     output wire        pix_valid,
     input  wire        pix_ready,
-    output wire [13:0] pix_y,
-    output wire [13:0] pix_x,
-    output wire [7:0]  pix_alpha,
-    output wire [31:0] pix_rgba,
+    output wire [`EF_PIX_Y_W-1:0] pix_y,
+    output wire [`EF_PIX_X_W-1:0] pix_x,
+    output wire [`EF_PIX_ALPHA_W-1:0] pix_alpha,
+    output wire [`EF_PIX_RGBA_W-1:0] pix_rgba,
 
     // frame memory
     output wire        fb_re,
-    output wire [13:0] fb_ry,
-    output wire [13:0] fb_rx,
-    input  wire [31:0] fb_rdata,
+    output wire [`EF_PIX_Y_W-1:0] fb_ry,
+    output wire [`EF_PIX_X_W-1:0] fb_rx,
+    input  wire [`EF_PIX_RGBA_W-1:0] fb_rdata,
     output wire        fb_we,
-    output wire [13:0] fb_wy,
-    output wire [13:0] fb_wx,
-    output wire [31:0] fb_wdata,
+    output wire [`EF_PIX_Y_W-1:0] fb_wy,
+    output wire [`EF_PIX_X_W-1:0] fb_wx,
+    output wire [`EF_PIX_RGBA_W-1:0] fb_wdata,
 
     // configuration and status
     output wire [14:0] cfg_width,
@@ -64,44 +66,45 @@ module ef_raster #(
     output wire        seg_valid,
     output wire        seg_ready,
     output wire        seg_eos,
-    output wire [23:0] seg_xa,
-    output wire [23:0] seg_ya,
-    output wire [23:0] seg_xb,
-    output wire [23:0] seg_yb,
+    output wire [`EF_SEG_XA_W-1:0] seg_xa,
+    output wire [`EF_SEG_YA_W-1:0] seg_ya,
+    output wire [`EF_SEG_XB_W-1:0] seg_xb,
+    output wire [`EF_SEG_YB_W-1:0] seg_yb,
     // observation: et_wr
     output wire        et_wr_valid,
     output wire        et_wr_ready,
     output wire        et_wr_eos,
-    output wire [13:0] et_wr_slot,
-    output wire [18:0] et_wr_r0,
-    output wire [18:0] et_wr_r1,
-    output wire [24:0] et_wr_x,
-    output wire [23:0] et_wr_e,
-    output wire [29:0] et_wr_qs,
-    output wire [23:0] et_wr_rs,
-    output wire [23:0] et_wr_dy,
+    output wire [`EF_ET_WR_SLOT_W-1:0] et_wr_slot,
+    output wire [`EF_ET_WR_R0_W-1:0] et_wr_r0,
+    output wire [`EF_ET_WR_R1_W-1:0] et_wr_r1,
+    output wire [`EF_ET_WR_X_W-1:0] et_wr_x,
+    output wire [`EF_ET_WR_E_W-1:0] et_wr_e,
+    output wire [`EF_ET_WR_QS_W-1:0] et_wr_qs,
+    output wire [`EF_ET_WR_RS_W-1:0] et_wr_rs,
+    output wire [`EF_ET_WR_DY_W-1:0] et_wr_dy,
     output wire        et_wr_dir,
     // observation: et_rd
     output wire        et_rd_valid,
     output wire        et_rd_ready,
-    output wire [13:0] et_rd_row,
-    output wire [21:0] et_rd_eid,
+    output wire [`EF_ET_RD_ROW_W-1:0] et_rd_row,
+    output wire [`EF_ET_RD_EID_W-1:0] et_rd_eid,
     // observation: plot
     output wire        plot_valid,
     output wire        plot_ready,
     output wire        plot_last,
-    output wire [13:0] plot_row,
-    output wire [4:0]  plot_s,
-    output wire [14:0] plot_q,
+    output wire [`EF_PLOT_ROW_W-1:0] plot_row,
+    output wire [`EF_PLOT_S_W-1:0] plot_s,
+    output wire [`EF_PLOT_Q_W-1:0] plot_q,
     output wire        plot_dir,
     // observation: span
     output wire        span_valid,
     output wire        span_ready,
-    output wire [13:0] span_y,
-    output wire [13:0] span_x,
-    output wire [14:0] span_len,
-    output wire [31:0] span_mask
+    output wire [`EF_SPAN_Y_W-1:0] span_y,
+    output wire [`EF_SPAN_X_W-1:0] span_x,
+    output wire [`EF_SPAN_LEN_W-1:0] span_len,
+    output wire [`EF_SPAN_MASK_W-1:0] span_mask
 );
+    `include "ef_ns.vh"
     wire        cfg_rule, cfg_err;
     wire [23:0] cfg_rgb;
     wire [7:0]  cfg_alpha;
@@ -131,18 +134,19 @@ module ef_raster #(
 
     wire        etm_init, slb_init;
     wire        row_req, row_req_ready, row_ack, row_nonempty, et_rd_last;
-    wire [13:0] row_req_row;
+    wire [`EF_ET_RD_ROW_W-1:0] row_req_row;
     wire        rec_re, rec_dir;
-    wire [21:0] rec_ra;
-    wire [18:0] rec_r0, rec_r1;
-    wire [24:0] rec_x;
-    wire [23:0] rec_e, rec_rs, rec_dy;
-    wire [29:0] rec_qs;
+    wire [`EF_ET_RD_EID_W-1:0] rec_ra;
+    wire [`EF_ET_WR_R0_W-1:0] rec_r0;
+    wire [`EF_ET_WR_R1_W-1:0] rec_r1;
+    wire [`EF_ET_WR_X_W-1:0]  rec_x;
+    wire [`EF_ET_WR_E_W-1:0]  rec_e;
+    wire [`EF_ET_WR_RS_W-1:0] rec_rs;
+    wire [`EF_ET_WR_DY_W-1:0] rec_dy;
+    wire [`EF_ET_WR_QS_W-1:0] rec_qs;
     wire        shape_go, shape_any, err_full;
-    wire [13:0] row_first, row_last;
+    wire [`EF_ET_WR_SLOT_W-1:0] row_first, row_last;
     wire [22:0] shape_nedges;
-    wire        nx_valid, nx_found;
-    wire [13:0] nx_row;
 
     ef_etm #(.NS(NS), .H_MAX(H_MAX), .E_MAX(E_MAX)) u_etm (
         .clk(clk), .rst(rst), .init_done(etm_init),
@@ -156,9 +160,7 @@ module ef_raster #(
         .et_rd_valid(et_rd_valid), .et_rd_ready(et_rd_ready), .et_rd_row(et_rd_row), .et_rd_eid(et_rd_eid),
         .et_rd_last(et_rd_last),
         .rec_re(rec_re), .rec_ra(rec_ra), .rec_r0(rec_r0), .rec_r1(rec_r1), .rec_x(rec_x), .rec_e(rec_e),
-        .rec_qs(rec_qs), .rec_rs(rec_rs), .rec_dy(rec_dy), .rec_dir(rec_dir),
-        // the sequencer keeps its own row bitmap (docs/microarch.md 3.6)
-        .nx_req(1'b0), .nx_after(14'd0), .nx_valid(nx_valid), .nx_found(nx_found), .nx_row(nx_row)
+        .rec_qs(rec_qs), .rec_rs(rec_rs), .rec_dy(rec_dy), .rec_dir(rec_dir)
     );
 
     wire etw_take = et_wr_valid && et_wr_ready;
@@ -215,6 +217,6 @@ module ef_raster #(
     assign err = cfg_err || err_full;
 
     /* verilator lint_off UNUSEDSIGNAL */
-    wire unused = nx_valid ^ nx_found ^ (^nx_row) ^ slb_idle_unused ^ row_req_ready ^ shape_go ^ shape_any ^ row_ack ^ row_nonempty ^ (^row_first) ^ (^row_last) ^ (^shape_nedges);
+    wire unused = slb_idle_unused ^ row_req_ready ^ shape_go ^ shape_any ^ row_ack ^ row_nonempty ^ (^row_first) ^ (^row_last) ^ (^shape_nedges);
     /* verilator lint_on UNUSEDSIGNAL */
 endmodule

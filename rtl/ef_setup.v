@@ -25,6 +25,8 @@
 // cfg_height (FRAME's height, 1..H_MAX) gives the bottom clip N*H - 1.
 //
 // Synthesizable Verilog-2005.
+`include "ef_ifaces.vh"
+
 module ef_setup #(
     parameter NS    = 8         // samples per pixel: 8, 16 or 32
 ) (
@@ -36,27 +38,27 @@ module ef_setup #(
     input  wire        seg_valid,
     output wire        seg_ready,
     input  wire        seg_eos,
-    input  wire [23:0] seg_xa,
-    input  wire [23:0] seg_ya,
-    input  wire [23:0] seg_xb,
-    input  wire [23:0] seg_yb,
+    input  wire [`EF_SEG_XA_W-1:0] seg_xa,
+    input  wire [`EF_SEG_YA_W-1:0] seg_ya,
+    input  wire [`EF_SEG_XB_W-1:0] seg_xb,
+    input  wire [`EF_SEG_YB_W-1:0] seg_yb,
 
     // et_wr: eos[0] slot[13:0] r0[18:0] r1[18:0] x[24:0] e[23:0] qs[29:0]
     //        rs[23:0] dy[23:0] dir[0]
     output wire        et_wr_valid,
     input  wire        et_wr_ready,
     output wire        et_wr_eos,
-    output wire [13:0] et_wr_slot,
-    output wire [18:0] et_wr_r0,
-    output wire [18:0] et_wr_r1,
-    output wire [24:0] et_wr_x,
-    output wire [23:0] et_wr_e,
-    output wire [29:0] et_wr_qs,
-    output wire [23:0] et_wr_rs,
-    output wire [23:0] et_wr_dy,
+    output wire [`EF_ET_WR_SLOT_W-1:0] et_wr_slot,
+    output wire [`EF_ET_WR_R0_W-1:0] et_wr_r0,
+    output wire [`EF_ET_WR_R1_W-1:0] et_wr_r1,
+    output wire [`EF_ET_WR_X_W-1:0] et_wr_x,
+    output wire [`EF_ET_WR_E_W-1:0] et_wr_e,
+    output wire [`EF_ET_WR_QS_W-1:0] et_wr_qs,
+    output wire [`EF_ET_WR_RS_W-1:0] et_wr_rs,
+    output wire [`EF_ET_WR_DY_W-1:0] et_wr_dy,
     output wire        et_wr_dir
 );
-    localparam LOG2NS = NS == 8 ? 3 : NS == 16 ? 4 : 5;
+    `include "ef_ns.vh"
     localparam SH     = 8 - LOG2NS;           // h = 2^SH
     localparam H      = 1 << SH;
     localparam C      = H / 2;
@@ -79,12 +81,7 @@ module ef_setup #(
     wire signed [25:0] r0_raw = r0_num >>> SH;
     wire signed [25:0] r1_raw = r1_num >>> SH;
     wire signed [25:0] last_row = $signed({6'd0, cfg_height, 5'd0} >> (5 - LOG2NS)) - 26'sd1;  // N*H - 1
-`ifdef EF_FAULT_TOPCLIP
-    // fault build (tests/rtl/rtl-test.sh): the top clip one sample row low
-    wire signed [25:0] r0_c = r0_raw[25] ? 26'sd1 : r0_raw;
-`else
     wire signed [25:0] r0_c = r0_raw[25] ? 26'sd0 : r0_raw;
-`endif
     wire signed [25:0] r1_c = (r1_raw > last_row) ? last_row : r1_raw;
     wire [1:0]         unused_dy = dy_w[25:24];
     // The drop decision (r0 > r1 after the clip) is made in P2 from the
@@ -96,7 +93,8 @@ module ef_setup #(
     reg signed [23:0] p1_x0, p1_y0;
     reg signed [25:0] p1_dx;
     reg [23:0] p1_dy;
-    reg [18:0] p1_r0, p1_r1;
+    reg [`EF_ET_WR_R0_W-1:0] p1_r0;
+    reg [`EF_ET_WR_R1_W-1:0] p1_r1;
 
     always @(posedge clk) begin
         if (rst)
@@ -112,8 +110,8 @@ module ef_setup #(
             p1_y0   <= y0;
             p1_dx   <= dx_w;
             p1_dy   <= dy_w[23:0];
-            p1_r0   <= r0_c[18:0];
-            p1_r1   <= r1_c[18:0];
+            p1_r0   <= r0_c[`EF_ET_WR_R0_W-1:0];
+            p1_r1   <= r1_c[`EF_ET_WR_R1_W-1:0];
         end
     end
 
@@ -134,14 +132,25 @@ module ef_setup #(
     wire signed [29:0] hdx  = $signed({{5{p1_dx[24]}}, p1_dx[24:0]} << SH);   // |h*dX| < 2^29
 
     wire        p1_keep = !p1_flat && !(p1_r0c > p1_r1c);
-    wire [18:0] slot_w = p1_r0 >> LOG2NS;    // the pixel row of r0
-    wire [4:0]  unused_slot = slot_w[18:14];
+    wire [`EF_ET_WR_R0_W-1:0] slot_w = p1_r0 >> LOG2NS;    // the pixel row of r0
+    wire [`EF_ET_WR_R0_W-`EF_ET_WR_SLOT_W-1:0] unused_slot = slot_w[`EF_ET_WR_R0_W-1:`EF_ET_WR_SLOT_W];
+
+    // The side band beside the divisions: {eos, keep, dir, slot, r0, r1, X0}
+    // (dY travels as the divisor), its fields' positions from the et_wr and
+    // seg widths.
+    localparam SB_R1   = `EF_SEG_XA_W;
+    localparam SB_R0   = SB_R1 + `EF_ET_WR_R1_W;
+    localparam SB_SLOT = SB_R0 + `EF_ET_WR_R0_W;
+    localparam SB_DIR  = SB_SLOT + `EF_ET_WR_SLOT_W;
+    localparam SB_KEEP = SB_DIR + 1;
+    localparam SB_EOS  = SB_KEEP + 1;
+    localparam SBW     = SB_EOS + 1;
 
     reg        p2_v;
     reg signed [49:0] p2_a;
     reg signed [29:0] p2_b;
     reg [23:0] p2_dy;
-    reg [78:0] p2_sb;     // eos keep dir slot r0 r1 X0 (dY travels as the divisor)
+    reg [SBW-1:0] p2_sb;
 
     always @(posedge clk) begin
         if (rst)
@@ -151,7 +160,7 @@ module ef_setup #(
             p2_a  <= a_w;
             p2_b  <= hdx;
             p2_dy <= p1_dy;
-            p2_sb <= {p1_eos, p1_keep, p1_dir, slot_w[13:0], p1_r0, p1_r1, p1_x0};
+            p2_sb <= {p1_eos, p1_keep, p1_dir, slot_w[`EF_ET_WR_SLOT_W-1:0], p1_r0, p1_r1, p1_x0};
         end
     end
 
@@ -160,11 +169,11 @@ module ef_setup #(
     // pipeline); the side band in its block-RAM ring.
     wire signed [30:0] qa, qb;
     wire [23:0] ra, rb, dy_o;
-    wire [78:0] sb;
+    wire [SBW-1:0] sb;
     wire [5:0]  unused_qa = qa[30:25];
     wire        unused_qb = qb[30];
 
-    ef_div #(.NWA(50), .NWB(30), .DW(24), .QB(30), .SBW(79)) u_div (
+    ef_div #(.NWA(50), .NWB(30), .DW(24), .QB(30), .SBW(SBW)) u_div (
         .clk(clk), .rst(rst), .en(en), .in_valid(p2_v), .in_na(p2_a), .in_nb(p2_b), .in_d(p2_dy),
         .in_sb(p2_sb),
         .out_valid(div_out_valid), .out_qa(qa), .out_ra(ra), .out_qb(qb), .out_rb(rb), .out_d(dy_o),
@@ -172,19 +181,19 @@ module ef_setup #(
     );
 
     // ------------------------------------------------------- et_wr
-    wire o_eos = sb[78];
-    wire o_keep = sb[77];
+    wire o_eos = sb[SB_EOS];
+    wire o_keep = sb[SB_KEEP];
     // x = X0 + floor(M / dY), exact modulo 2^25 where x fits (|x| <= 2^23 + 1)
-    wire [24:0] x_w = {sb[23], sb[23:0]} + qa[24:0];
+    wire [`EF_ET_WR_X_W-1:0] x_w = {sb[23], sb[23:0]} + qa[24:0];
     assign et_wr_valid = div_out_valid && (o_eos || o_keep);
     assign et_wr_eos   = o_eos;
-    assign et_wr_dir   = !o_eos && sb[76];
-    assign et_wr_slot  = o_eos ? 14'd0 : sb[75:62];
-    assign et_wr_r0    = o_eos ? 19'd0 : sb[61:43];
-    assign et_wr_r1    = o_eos ? 19'd0 : sb[42:24];
-    assign et_wr_dy    = o_eos ? 24'd0 : dy_o;
-    assign et_wr_x     = o_eos ? 25'd0 : x_w;
-    assign et_wr_e     = o_eos ? 24'd0 : ra;
-    assign et_wr_qs    = o_eos ? 30'd0 : qb[29:0];
-    assign et_wr_rs    = o_eos ? 24'd0 : rb;
+    assign et_wr_dir   = !o_eos && sb[SB_DIR];
+    assign et_wr_slot  = o_eos ? {`EF_ET_WR_SLOT_W{1'b0}} : sb[SB_SLOT +: `EF_ET_WR_SLOT_W];
+    assign et_wr_r0    = o_eos ? {`EF_ET_WR_R0_W{1'b0}} : sb[SB_R0 +: `EF_ET_WR_R0_W];
+    assign et_wr_r1    = o_eos ? {`EF_ET_WR_R1_W{1'b0}} : sb[SB_R1 +: `EF_ET_WR_R1_W];
+    assign et_wr_dy    = o_eos ? {`EF_ET_WR_DY_W{1'b0}} : dy_o;
+    assign et_wr_x     = o_eos ? {`EF_ET_WR_X_W{1'b0}} : x_w;
+    assign et_wr_e     = o_eos ? {`EF_ET_WR_E_W{1'b0}} : ra;
+    assign et_wr_qs    = o_eos ? {`EF_ET_WR_QS_W{1'b0}} : qb[`EF_ET_WR_QS_W-1:0];
+    assign et_wr_rs    = o_eos ? {`EF_ET_WR_RS_W{1'b0}} : rb;
 endmodule

@@ -44,8 +44,9 @@
 //  * The flush is issued in the cycle after the last cell's step (or in that
 //    step's span transfer cycle); from the cycle after the flush (or in the
 //    flush span's transfer cycle) plot_ready is high again: the next row's
-//    first cycle.  plot_ready does not depend on the cell RAM's output.  The scan needs no idle cycle between rows: the last
-//    clear-on-read write lands before the next row's first read.
+//    first cycle (plot_ready does not depend on the cell RAM's output).
+//    The scan needs no idle cycle between rows: the last clear-on-read
+//    write lands before the next row's first read.
 //
 // COV's acceptance (cov_free, item 6) is COV's business: this block sees it
 // only as span_ready.  The reference COV raises ready at cov_free = a + len.
@@ -56,6 +57,8 @@
 // the buffer is clean and plots may be accepted.
 //
 // Synthesizable Verilog-2005.
+`include "ef_ifaces.vh"
+
 module ef_slb_fill #(
     parameter NS    = 8,       // samples per pixel: 8, 16 or 32
     parameter W_MAX = 16384    // largest canvas width (cells 0..W_MAX)
@@ -73,23 +76,24 @@ module ef_slb_fill #(
     input  wire        plot_valid,
     output wire        plot_ready,
     input  wire        plot_last,
-    input  wire [13:0] plot_row,
-    input  wire [4:0]  plot_s,
-    input  wire [14:0] plot_q,
+    input  wire [`EF_PLOT_ROW_W-1:0] plot_row,
+    input  wire [`EF_PLOT_S_W-1:0] plot_s,
+    input  wire [`EF_PLOT_Q_W-1:0] plot_q,
     input  wire        plot_dir,    // 0: +1 (downward edge), 1: -1
 
     // span: y[13:0] x[13:0] len[14:0] mask[31:0]
     output wire        span_valid,
     input  wire        span_ready,
-    output wire [13:0] span_y,
-    output wire [13:0] span_x,
-    output wire [14:0] span_len,
-    output wire [31:0] span_mask,
+    output wire [`EF_SPAN_Y_W-1:0] span_y,
+    output wire [`EF_SPAN_X_W-1:0] span_x,
+    output wire [`EF_SPAN_LEN_W-1:0] span_len,
+    output wire [`EF_SPAN_MASK_W-1:0] span_mask,
 
     output wire        idle,        // nothing in flight (for testbenches)
     output wire        scan_done    // no scan in progress: from the cycle after the
                                     // flush step (its span, if any, transferring)
 );
+    `include "ef_ns.vh"
     localparam CW = 7 * NS;                 // cell width
     localparam AW = $clog2(W_MAX + 1);      // cell address width
 
@@ -144,11 +148,7 @@ module ef_slb_fill #(
     // ------------------------------------------------------------ stage 2
     // cur: the cell as it is now: the RAM read missed a write made at the same
     // edge (read first), so the latest write wins on an address match.
-`ifdef EF_FAULT_FWD
-    wire          fwd  = 1'b0 && lw_valid && (lw_addr == s2_addr[AW-1:0]);   // fault build: no forwarding
-`else
     wire          fwd  = lw_valid && (lw_addr == s2_addr[AW-1:0]);
-`endif
     wire [CW-1:0] cur  = fwd ? lw_data : ram_rd;
 
     wire [NS-1:0] s2_sel = {{(NS-1){1'b0}}, 1'b1} << s2_s;  // one-hot sample
@@ -169,14 +169,7 @@ module ef_slb_fill #(
             wire [6:0] an = f_rule ? (a ^ c) : (a + c);
             assign acc_next[7*l +: 7] = an;
             // mask bit: parity (even-odd) or counter != 0 (non-zero)
-`ifdef EF_FAULT_PAD
-            // fault build: the carry out of the 7-bit lane (the packed word's
-            // pad bit) is not masked off in the non-zero coverage test
-            wire [7:0] an8 = {1'b0, a} + {1'b0, c};
-            assign mask_next[l] = f_rule ? an[0] : (|an8);
-`else
             assign mask_next[l] = f_rule ? an[0] : (|an);
-`endif
         end
     endgenerate
 
@@ -196,15 +189,10 @@ module ef_slb_fill #(
     assign span_x     = start[13:0];   // start < W <= 16384 whenever valid
     // span_end <= W <= 16384 and start < span_end whenever valid: 15 bits.
     wire [14:0] span_end = (s2_op == OP_CELL) ? s2_addr : flush_end;
-`ifdef EF_FAULT_SPAN
-    // fault build: a span of two or more pixels cut one pixel short
-    assign span_len   = (span_end - start > 15'd1) ? span_end - start - 15'd1 : span_end - start;
-`else
     assign span_len   = span_end - start;
-`endif
     generate
-        if (NS < 32) begin : mask_pad
-            assign span_mask = {{(32-NS){1'b0}}, mask};
+        if (NS < `EF_SPAN_MASK_W) begin : mask_pad
+            assign span_mask = {{(`EF_SPAN_MASK_W-NS){1'b0}}, mask};
         end else begin : mask_full
             assign span_mask = mask;
         end

@@ -77,6 +77,39 @@ static void paint(ef_image *img, int64_t x, int64_t y, const uint8_t rgba[4])
     memcpy(img->px + (size_t)y * img->stride + (size_t)x * 4u, rgba, 4);
 }
 
+/* Every pix transaction of d in its blended colour, the last one of a pixel winning. */
+static void draw_pix(ef_image *img, const ef_vec_dump *dump)
+{
+    const ef_iface_desc *d = ef_iface_get(EF_IF_PIX);
+    int fy = field_named(d, "y"), fx = field_named(d, "x"), fc = field_named(d, "rgba");
+    for (size_t k = 0; k < dump->seq[EF_IF_PIX].n; k++) {
+        ef_txn t;
+        ef_vec_dump_txn(dump, EF_IF_PIX, k, &t);
+        uint64_t c = ef_txn_field(&t, (unsigned)fc); /* R in bits 31:24, then G, B, A */
+        uint8_t px[4] = { (uint8_t)(c >> 24), (uint8_t)(c >> 16 & 0xffu), (uint8_t)(c >> 8 & 0xffu),
+                          (uint8_t)(c & 0xffu) };
+        paint(img, (int64_t)ef_txn_field(&t, (unsigned)fx), (int64_t)ef_txn_field(&t, (unsigned)fy), px);
+    }
+}
+
+int ef_check_frame_image(const ef_vec_dump *d, ef_image *out, char *err, size_t errsize)
+{
+    memset(out, 0, sizeof *out);
+    if (d->width <= 0 || d->height <= 0) {
+        snprintf(err, errsize, "the frame size is unknown (the results carry no size)");
+        errno = 0;
+        return -1;
+    }
+    if (ef_image_alloc(out, d->width, d->height) != EF_OK) {
+        snprintf(err, errsize, "out of memory for a %dx%d image", (int)d->width, (int)d->height);
+        errno = ENOMEM;
+        return -1;
+    }
+    memset(out->px, 0, out->stride * (size_t)out->height);
+    draw_pix(out, d);
+    return 0;
+}
+
 int ef_check_diff_image(const ef_check_result *res, ef_image *out, char *err, size_t errsize)
 {
     const chk_run *r = res->run;
@@ -104,18 +137,8 @@ int ef_check_diff_image(const ef_check_result *res, ef_image *out, char *err, si
         return -1;
     }
     memset(img.px, 0, img.stride * (size_t)img.height);
-    if (r->have_bg) {
-        const ef_iface_desc *d = ef_iface_get(EF_IF_PIX);
-        int fy = field_named(d, "y"), fx = field_named(d, "x"), fc = field_named(d, "rgba");
-        for (size_t k = 0; k < r->bg.seq[EF_IF_PIX].n; k++) {
-            ef_txn t;
-            ef_vec_dump_txn(&r->bg, EF_IF_PIX, k, &t);
-            uint64_t c = ef_txn_field(&t, (unsigned)fc); /* R in bits 31:24, then G, B, A */
-            uint8_t px[4] = { (uint8_t)(c >> 24), (uint8_t)(c >> 16 & 0xffu), (uint8_t)(c >> 8 & 0xffu),
-                              (uint8_t)(c & 0xffu) };
-            paint(&img, (int64_t)ef_txn_field(&t, (unsigned)fx), (int64_t)ef_txn_field(&t, (unsigned)fy), px);
-        }
-    }
+    if (r->have_bg)
+        draw_pix(&img, &r->bg);
     for (size_t k = 0; k < r->nmarks; k++) {
         const chk_mark *m = &r->marks[k];
         int64_t len = m->len > 0 ? m->len : 1; /* a zero-length span still marks its place */

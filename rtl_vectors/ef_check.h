@@ -87,6 +87,13 @@ int ef_check_junit(const ef_check_result *res, FILE *f);
  * size is unknown). */
 int ef_check_diff_image(const ef_check_result *res, ef_image *img, char *err, size_t errsize);
 
+/* Draws a dump's frame (every pix transaction, the last of a pixel winning,
+ * premultiplied as the frame buffer holds it) into *img (allocated here, the
+ * dump's width x height; free with ef_image_free): edgeflag-host verify's
+ * --save-frame.  0, or -1 with a message in err and errno. */
+struct ef_vec_dump;
+int ef_check_frame_image(const struct ef_vec_dump *d, ef_image *img, char *err, size_t errsize);
+
 void ef_check_result_free(ef_check_result *res);
 
 #ifdef __cplusplus

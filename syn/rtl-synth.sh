@@ -78,7 +78,7 @@ count() { awk -v c="$2" '$1 ~ "^"c && $2 ~ /^[0-9]+$/ { s += $2 } $2 ~ "^"c && $
 
 # wrap TAG TOP 'PARAMS' 'CHPARAM ARGS' 'FILES': the pin-light wrapper in $out/TAG_pins.v
 wrap() {
-    yosys -q -p "read_verilog -defer $5; chparam$4 $2; hierarchy -top $2; proc; write_json $out/$1.ports.json" \
+    yosys -q -p "read_verilog -I$R -defer $5; chparam$4 $2; hierarchy -top $2; proc; write_json $out/$1.ports.json" \
         >/dev/null 2>&1 &&
         python3 "$root/syn/pins_wrap.py" "$out/$1.ports.json" "$2" "$3" \
             >"$out/${1}_pins.v" 2>"$out/$1.wrap.txt"
@@ -89,7 +89,7 @@ ecp5() {
     local tag=${1}_ecp5 top=$2 params=$3; shift 3
     local files="$*" chp="" p t0=$SECONDS
     for p in $params; do chp="$chp -set ${p%%=*} ${p#*=}"; done
-    if ! yosys -q -l "$out/$tag.log" -p "read_verilog -defer $files; chparam$chp $top; hierarchy -top $top; synth_ecp5 -top $top; tee -o $out/$tag.stat stat" \
+    if ! yosys -q -l "$out/$tag.log" -p "read_verilog -I$R -defer $files; chparam$chp $top; hierarchy -top $top; synth_ecp5 -top $top; tee -o $out/$tag.stat stat" \
         >/dev/null 2>&1; then
         grep -E 'ERROR' "$out/$tag.log" | head -n 3; echo "rtl-synth: $tag: yosys failed ($out/$tag.log)"; rc=1; return
     fi
@@ -99,10 +99,10 @@ ecp5() {
     local c s=""
     for c in LUT4 TRELLIS_FF DP16KD TRELLIS_DPR16X4 CCU2C MULT18X18D; do s="$s, $(count "$out/$tag.stat" $c) $c"; done
     echo "rtl-synth: $tag ($top $params): synth_ecp5${s#,} ($((SECONDS - t0)) s)"
-    echo "    yosys -p 'read_verilog -defer $(echo "$files" | sed "s|$root/||g"); chparam$chp $top; hierarchy -top $top; synth_ecp5 -top $top; stat'"
+    echo "    yosys -p 'read_verilog -Irtl -defer $(echo "$files" | sed "s|$root/||g"); chparam$chp $top; hierarchy -top $top; synth_ecp5 -top $top; stat'"
     t0=$SECONDS
     wrap "$tag" "$top" "$params" "$chp" "$files" &&
-        yosys -q -l "$out/${tag}_pins.log" -p "read_verilog -defer $out/${tag}_pins.v $files; hierarchy -top ${top}_pins; synth_ecp5 -top ${top}_pins -json $out/${tag}_pins.json" \
+        yosys -q -l "$out/${tag}_pins.log" -p "read_verilog -I$R -defer $out/${tag}_pins.v $files; hierarchy -top ${top}_pins; synth_ecp5 -top ${top}_pins -json $out/${tag}_pins.json" \
             >/dev/null 2>&1 || { echo "rtl-synth: $tag: the pin-light wrapper did not synthesise ($out/${tag}_pins.log)"; rc=1; return; }
     if ! "$ecp5_pnr" --"$ecp5_dev" --package "$ecp5_pkg" --speed "$ecp5_speed" --json "$out/${tag}_pins.json" --freq 12 --seed 1 >"$out/$tag.pnr.log" 2>&1; then
         tail -n 5 "$out/$tag.pnr.log"; echo "rtl-synth: $tag: nextpnr-ecp5 failed ($out/$tag.pnr.log)"; rc=1; return
@@ -127,7 +127,7 @@ synth() {
     for p in $params; do chp="$chp -set ${p%%=*} ${p#*=}"; done
     local t0=$SECONDS
     cat >"$out/$tag.ys" <<YS
-read_verilog -defer $files
+read_verilog -I$R -defer $files
 chparam$chp $top
 hierarchy -top $top
 synth_ice40 -top $top
@@ -146,7 +146,7 @@ YS
     lut=$(count "$out/$tag.stat" SB_LUT4) ff=$(count "$out/$tag.stat" SB_DFF)
     ram=$(count "$out/$tag.stat" SB_RAM40_4K) cy=$(count "$out/$tag.stat" SB_CARRY)
     echo "rtl-synth: $tag ($top $params): $lut LUT4, $ff flip-flops, $ram SB_RAM40_4K, $cy SB_CARRY ($((SECONDS - t0)) s)"
-    echo "    yosys -p 'read_verilog -defer $(echo "$files" | sed "s|$root/||g"); chparam$chp $top; hierarchy -top $top; synth_ice40 -top $top; stat'"
+    echo "    yosys -p 'read_verilog -Irtl -defer $(echo "$files" | sed "s|$root/||g"); chparam$chp $top; hierarchy -top $top; synth_ice40 -top $top; stat'"
     # a logic cell holds one LUT4 and one flip-flop: either count over the
     # device's cells cannot fit
     if [ "$lut" -gt "$lcs" ] || [ "$ff" -gt "$lcs" ] || [ "$ram" -gt "$brams" ]; then
@@ -156,7 +156,7 @@ YS
     # step 2: the pin-light wrapper, placed and routed
     t0=$SECONDS
     wrap "$tag" "$top" "$params" "$chp" "$files" &&
-        yosys -q -l "$out/${tag}_pins.log" -p "read_verilog -defer $out/${tag}_pins.v $files; hierarchy -top ${top}_pins; synth_ice40 -top ${top}_pins -json $out/${tag}_pins.json" \
+        yosys -q -l "$out/${tag}_pins.log" -p "read_verilog -I$R -defer $out/${tag}_pins.v $files; hierarchy -top ${top}_pins; synth_ice40 -top ${top}_pins -json $out/${tag}_pins.json" \
             >/dev/null 2>&1 || { echo "rtl-synth: $tag: the pin-light wrapper did not synthesise ($out/${tag}_pins.log)"; rc=1; return; }
     if ! nextpnr-ice40 --"$dev" --package "$pkg" --json "$out/${tag}_pins.json" --freq 12 >"$out/$tag.pnr.log" 2>&1; then
         # the placer's own word that the packed design has more logic cells than the device

@@ -85,7 +85,9 @@ include tests/rtl/module.mk
 include tests/regress/module.mk
 include tests/host/module.mk
 include tests/host/socket.mk
+include tests/host/serial.mk
 include tests/sanitize/module.mk
 include tests/portability.mk
 include tests/filter/module.mk
 include tests/layers/module.mk
+include tests/cov/module.mk

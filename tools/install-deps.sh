@@ -4,11 +4,16 @@
 #   tools/install-deps.sh test     + cmocka, clang, 32-bit multilib, Icarus, Verilator, GTKWave (the
 #                                  test suite), and the
 #                                  aarch64/s390x cross C libraries and qemu-user (best effort)
+#                                  lcov (genhtml: make rtl-coverage's report),
 #   tools/install-deps.sh portability   the same (what `make portability` needs)
 #   tools/install-deps.sh bench    + the peers and plotting for `make bench` (bench/README.md)
 #   tools/install-deps.sh synth    + Yosys, nextpnr-ice40 and icestorm for `make rtl-synth` (docs/synthesis.md)
 #   tools/install-deps.sh venv     + python3-venv for tools/install-venv.sh (PyPI tools in build/venv)
+#   tools/install-deps.sh board    + the RISC-V cross compiler, picolibc, Verilator and python3-venv for the
+#                                  ULX3S board's firmware, SoC and simulation (docs/board-ulx3s.md);
+#                                  the FPGA tools and LiteX come from PyPI (tools/install-venv.sh fpga soc)
 #   tools/install-deps.sh farm     + GNU parallel, Slurm and munge for `make farm-test` (docs/regress.md)
+#   tools/install-deps.sh loaded   + stress-ng for `make test-host-loaded` (docs/testing.md)
 set -euo pipefail
 
 pkgs=(gcc make pkg-config libexpat1-dev libpng-dev nettle-dev libjson-c-dev zlib1g-dev)
@@ -31,6 +36,11 @@ if [ "${1:-}" = test ] || [ "${1:-}" = portability ]; then
     pkgs+=(python3)
     # test-dpi runs the DPI-C lockstep bench once under valgrind's memcheck (docs/dpi.md)
     pkgs+=(valgrind)
+    # test-python and test-cocotb (docs/python.md): the venv, and libpython's shared library, which
+    # cocotb embeds in the simulator (Debian's python3 binary does not need it, so it is not there)
+    pkgs+=(python3-venv python3-pip libpython3-dev)
+    # make rtl-coverage and its slice in make test: verilator_coverage's lcov output to HTML (genhtml)
+    pkgs+=(lcov)
     # `make portability` builds static aarch64 and s390x (big-endian) programs
     # with clang --target and runs them under qemu-user.  gcc-aarch64-linux-gnu
     # cannot be installed beside gcc-multilib in Debian 12; these can.  Best
@@ -41,9 +51,17 @@ fi
 if [ "${1:-}" = farm ]; then
     pkgs+=(parallel libxml2-utils slurm-wlm munge)
 fi
+if [ "${1:-}" = loaded ]; then
+    # make test-host-loaded: the host stages again and again with both cores kept busy
+    pkgs+=(stress-ng)
+fi
 if [ "${1:-}" = synth ]; then
     # make rtl-synth (docs/synthesis.md): Yosys synth_ice40, nextpnr-ice40 and its chip database
     pkgs+=(yosys nextpnr-ice40 fpga-icestorm)
+fi
+if [ "${1:-}" = board ]; then
+    # board/firmware (ef_board.c as the SoC's firmware), board/sim (the SoC under Verilator), the venv
+    pkgs+=(gcc-riscv64-unknown-elf picolibc-riscv64-unknown-elf verilator g++ python3-venv python3-pip)
 fi
 if [ "${1:-}" = venv ]; then
     # tools/install-venv.sh: Python's venv module and pip (the PyPI tools live in build/venv)

@@ -33,8 +33,9 @@
 // Plusargs: +cmd=FILE (required), +rule=scene|nonzero|evenodd, +timeout=CYCLES,
 // +cov_lag=N.  Parameters: NS, W_MAX, H_MAX, E_MAX (the DUT's; E_MAX sizes
 // ef_raster's edge memories).
-// A fault to see the loop fail: the RTL's -DEF_FAULT_SPAN (ef_slb_fill.v) cuts
-// every span of two or more pixels one short.  With the SLB + FILL DUT,
+// A fault to see the loop fail: build from the RTL variant
+// `dv/rtl-variant.sh DIR span` (dv/faults/span.sed), which cuts every span of
+// two or more pixels one short.  With the SLB + FILL DUT,
 // +cov_lag=N makes the bench's COV take N cycles more per span (an
 // environment with other timing: the spans come late, and the cycle check
 // must say so).
@@ -107,10 +108,16 @@ module tb_lockstep #(
         end
     endfunction
 
+    // The frame's length as the DUT's transfers give it: one past the last
+    // transfer on any checked interface (docs/microarch.md section 4, item 7).
+    longint frame_len = 0;
+
     // The scoreboard step for one transfer the DUT made on iface at cycle c.
     function automatic void check(int iface, longint c, ef_payload_t actual);
         int st;
         bit more;
+        if (c + 1 > frame_len)
+            frame_len = c + 1;
         forever begin
             st = ef_dpi_expect(model, iface, c, actual, 1);
             if (st != EF_MS_EMPTY)
@@ -140,8 +147,11 @@ module tb_lockstep #(
     wire [13:0] fb_ry, fb_rx, fb_wy, fb_wx;
     wire [31:0] fb_wdata;
     bit  [31:0] fb_rdata = '0;
-    wire [14:0] cfg_width, cfg_height;
-    wire       frame_start, frame_end, err;
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [14:0] cfg_width, cfg_height;   // the model gives the frame; the DUT's copy is not checked here
+    wire       frame_end;
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire       frame_start, err;
     wire       seg_valid, seg_ready, et_wr_valid, et_wr_ready, et_rd_valid, et_rd_ready;
     wire       plot_valid, plot_ready, span_valid, span_ready;
     seg_t      seg;
@@ -218,8 +228,10 @@ module tb_lockstep #(
     // The word is the model's cmd transaction, which is the stimulus word
     // (with the rule of +rule= when the rule is overridden).
     function automatic void present(longint c);
-        longint t;
+        /* verilator lint_off UNUSEDSIGNAL */
+        longint t;                       // next_expected's out-arguments, partly used
         ef_payload_t p;
+        /* verilator lint_on UNUSEDSIGNAL */
         int st;
         st = next_expected(IF_CMD, t, p, 1'b0);
         cmd_valid <= 1'b0;
@@ -234,8 +246,10 @@ module tb_lockstep #(
     localparam int DRAIN = 64;
     int drain = -1;
     function automatic bit finished();
-        longint t;
+        /* verilator lint_off UNUSEDSIGNAL */
+        longint t;                       // next_expected's out-arguments, partly used
         ef_payload_t p;
+        /* verilator lint_on UNUSEDSIGNAL */
         int st;
         st = next_expected(IF_CMD, t, p, 1'b0);
         if (st != EF_MS_END)
@@ -250,7 +264,9 @@ module tb_lockstep #(
     endfunction
     localparam int CHECKED[7] = '{IF_CMD, IF_SEG, IF_ET_WR, IF_ET_RD, IF_PLOT, IF_SPAN, IF_PIX};
     localparam int KEEP = 0;                   // all
+    localparam bit WHOLE = 1'b1;               // the DUT's transfers span the frame
 `else
+    localparam bit WHOLE = 1'b0;               // SLB + FILL alone: its spans are not the frame
     // ef_slb_fill: plot in, span out, configuration registers.
     bit        plot_valid = 1'b0;
     plot_t  plot = '0;
@@ -294,9 +310,13 @@ module tb_lockstep #(
     // The DUT's inputs for cycle c: commands (configuration registers) and
     // the plot stamped c, from the model.
     function automatic void present(longint c);
-        longint t;
+        /* verilator lint_off UNUSEDSIGNAL */
+        longint t;                       // next_expected's out-arguments, partly used
         ef_payload_t p;
-        cmd_t cmd;
+        /* verilator lint_on UNUSEDSIGNAL */
+        /* verilator lint_off UNUSEDSIGNAL */
+        cmd_t cmd;                       // FRAME's width and SHAPE's rule are what SLB needs
+        /* verilator lint_on UNUSEDSIGNAL */
         while (next_expected(IF_CMD, t, p, 1'b0) == EF_MS_OK && t <= c) begin
             void'(ef_dpi_pop(model, IF_CMD, t, p));
             cmd = cmd_t'(p[CMD_W-1:0]);
@@ -315,8 +335,10 @@ module tb_lockstep #(
     // Over when every command is in, the model has nothing more to drive and
     // the DUT has nothing in flight.
     function automatic bit finished();
-        longint t;
+        /* verilator lint_off UNUSEDSIGNAL */
+        longint t;                       // next_expected's out-arguments, partly used
         ef_payload_t p;
+        /* verilator lint_on UNUSEDSIGNAL */
         return next_expected(IF_PLOT, t, p, 1'b0) == EF_MS_END && fed == stim.size() && !plot_valid && idle;
     endfunction
     localparam int CHECKED[1] = '{IF_SPAN};   // the interfaces this DUT shows
@@ -357,6 +379,10 @@ module tb_lockstep #(
             stim_line.push_back(line);
         end
         $fclose(fd);
+        if (stim.size() == 0) begin
+            $display("tb_lockstep: FAIL %s holds no command", name);
+            $fatal(1, "tb_lockstep: no stimulus");
+        end
     endfunction
 
     initial begin
@@ -409,10 +435,15 @@ module tb_lockstep #(
                     if (st != EF_MS_OK && !done)
                         die(ef_dpi_message(model));
                 end
+                // the whole pipeline's frame length must be the model's
+                if (WHOLE && !done && frame_len != ef_dpi_frame_cycles(model))
+                    die($sformatf("the DUT's frame is %0d cycles (one past its last transfer), the model's %0d",
+                                  frame_len, ef_dpi_frame_cycles(model)));
                 if (!done) begin
-                    $display("tb_lockstep: PASS NS=%0d: %0d commands; checked in lockstep: %0d cmd, %0d seg, %0d et_wr, %0d et_rd, %0d plot, %0d span, %0d pix; frame of %0d cycles (model), %0d simulated",
+                    $display("tb_lockstep: PASS NS=%0d: %0d commands; checked in lockstep: %0d cmd, %0d seg, %0d et_wr, %0d et_rd, %0d plot, %0d span, %0d pix; a frame of %0d cycles%0s",
                              NS, fed, n_checked[IF_CMD], n_checked[IF_SEG], n_checked[IF_ET_WR], n_checked[IF_ET_RD],
-                             n_checked[IF_PLOT], n_checked[IF_SPAN], n_checked[IF_PIX], ef_dpi_frame_cycles(model), cyc + 1);
+                             n_checked[IF_PLOT], n_checked[IF_SPAN], n_checked[IF_PIX], ef_dpi_frame_cycles(model),
+                             WHOLE ? "" : " (the model's: the DUT is SLB + FILL alone)");
                     done = 1'b1;
                     $finish;
                 end

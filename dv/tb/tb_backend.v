@@ -28,7 +28,6 @@ module tb_backend #(
 );
     localparam CWD = 48 + 100;
     localparam EW  = 48 + 181;
-    localparam EA  = (E_MAX > 1) ? $clog2(E_MAX) : 1;
 
     reg clk = 1'b0;
     always #5 clk = ~clk;
@@ -49,7 +48,10 @@ module tb_backend #(
     reg [29:0]   etw_qs = 0;
 
     // ------------------------------------------------ ETM <-> AET
-    wire          row_req, row_req_ready, row_ack, row_nonempty, etm_init;
+    wire          row_req, row_req_ready, etm_init;
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire          row_ack, row_nonempty;     // ETM's status outputs the AET does not use either
+    /* verilator lint_on UNUSEDSIGNAL */
     wire [13:0]   row_req_row;
     wire          rd_valid, rd_ready, rd_last;
     wire [13:0]   rd_row;
@@ -60,11 +62,12 @@ module tb_backend #(
     wire [24:0]   rec_x;
     wire [23:0]   rec_e, rec_rs, rec_dy;
     wire [29:0]   rec_qs;
-    wire          etw_ready, shape_go, shape_any, err_full;
+    wire          etw_ready;
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire          shape_go, shape_any, err_full;
     wire [13:0]   row_first, row_last;
     wire [22:0]   shape_nedges;
-    wire          nx_valid, nx_found;
-    wire [13:0]   nx_row;
+    /* verilator lint_on UNUSEDSIGNAL */
 
     // ------------------------------------------------ DUT
     wire        plot_valid, plot_ready, plot_last, plot_dir, aet_busy;
@@ -72,6 +75,9 @@ module tb_backend #(
     wire [4:0]  plot_s;
     wire [14:0] plot_q;
     wire        span_valid, span_ready, init_done, slb_idle;
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire        slb_scan_done;           // the bench waits for idle
+    /* verilator lint_on UNUSEDSIGNAL */
     wire [13:0] span_y, span_x;
     wire [14:0] span_len;
     wire [31:0] span_mask;
@@ -97,9 +103,7 @@ module tb_backend #(
         .et_rd_valid(rd_valid), .et_rd_ready(rd_ready), .et_rd_row(rd_row), .et_rd_eid(rd_eid),
         .et_rd_last(rd_last),
         .rec_re(rec_re), .rec_ra(rec_ra), .rec_r0(rec_r0), .rec_r1(rec_r1), .rec_x(rec_x), .rec_e(rec_e),
-        .rec_qs(rec_qs), .rec_rs(rec_rs), .rec_dy(rec_dy), .rec_dir(rec_dir),
-        // the sequencer keeps its own row bitmap (docs/microarch.md 3.6)
-        .nx_req(1'b0), .nx_after(14'd0), .nx_valid(nx_valid), .nx_found(nx_found), .nx_row(nx_row)
+        .rec_qs(rec_qs), .rec_rs(rec_rs), .rec_dy(rec_dy), .rec_dir(rec_dir)
     );
     ef_aet #(.NS(NS), .H_MAX(H_MAX), .E_MAX(E_MAX)) u_aet (
         .clk(clk), .rst(rst), .cfg_width(cfg_width),
@@ -118,7 +122,7 @@ module tb_backend #(
         .plot_valid(plot_valid), .plot_ready(plot_ready), .plot_last(plot_last),
         .plot_row(plot_row), .plot_s(plot_s), .plot_q(plot_q), .plot_dir(plot_dir),
         .span_valid(span_valid), .span_ready(span_ready), .span_y(span_y),
-        .span_x(span_x), .span_len(span_len), .span_mask(span_mask), .idle(slb_idle)
+        .span_x(span_x), .span_len(span_len), .span_mask(span_mask), .idle(slb_idle), .scan_done(slb_scan_done)
     );
     ef_cov #(.NS(NS)) u_cov (
         .clk(clk), .rst(rst), .cfg_rgb(cfg_rgb), .cfg_alpha(cfg_alpha),
@@ -144,7 +148,9 @@ module tb_backend #(
 
     function [FB_BITS-1:0] fb_find;      // the word of pixel a, or a free one
         input [31:0] a;
-        reg [63:0] h;
+        /* verilator lint_off UNUSEDSIGNAL */
+        reg [63:0] h;                    // its bits 31 -: FB_BITS are the hash
+        /* verilator lint_on UNUSEDSIGNAL */
         reg [FB_BITS-1:0] i;
         integer n;
         begin
@@ -158,7 +164,8 @@ module tb_backend #(
             fb_find = i;
         end
     endfunction
-    integer fi;
+    reg [FB_BITS-1:0] fi;
+    integer fj;
 
     // ------------------------------------------------ files
     reg [CWD-1:0] cmd_mem [0:NCMD];
@@ -189,7 +196,7 @@ module tb_backend #(
             f = $fopen(fname, "w");
             if (f == 0) begin
                 $display("tb_backend: FAIL cannot open %0s%0s.actual.hex", out_name, iface);
-                $finish;
+                $fatal(1, "tb_backend: FAIL");
             end
             $fwrite(f, "// edgeflag vectors format 1: interface %0s (%0s), role actual: dv/tb/tb_backend.v\n", iface, desc);
         end
@@ -198,8 +205,10 @@ module tb_backend #(
     // Present the stimulus of cycle c (set at the edge that ends c-1).
     task present;
         input [47:0] c;
-        reg [CWD-1:0] cw;
-        reg [EW-1:0]  ew;
+        /* verilator lint_off UNUSEDSIGNAL */
+        reg [CWD-1:0] cw;               // the fields COV and SLB need
+        reg [EW-1:0]  ew;               // the payload; the stamp is compared apart
+        /* verilator lint_on UNUSEDSIGNAL */
         begin
             while (ic < NCMD && cmd_mem[ic][CWD-1 -: 48] <= c) begin
                 cw = cmd_mem[ic];
@@ -246,8 +255,8 @@ module tb_backend #(
         $readmemh(cmd_name, cmd_mem, 0, NCMD - 1);
         if (NETW > 0)
             $readmemh(etw_name, etw_mem, 0, NETW - 1);
-        for (fi = 0; fi < (1 << FB_BITS); fi = fi + 1)
-            fb_gen[fi] = 16'd0;
+        for (fj = 0; fj < (1 << FB_BITS); fj = fj + 1)
+            fb_gen[fj] = 16'd0;
         frame_no = 16'd0;
         fb_used = 0;
         ic = 0; ie = 0; errors = 0; n_rd = 0; n_pl = 0; n_sp = 0; n_px = 0; n_bp = 0;
@@ -258,24 +267,25 @@ module tb_backend #(
         open_dump(f_sp, "span", "FILL -> COV");
         open_dump(f_px, "pix", "COV -> memory");
         repeat (3) @(posedge clk);
-        rst <= 1'b0;
+        @(negedge clk);       // no rising edge sees reset change
+        rst = 1'b0;
     end
 
     // ETM and frame memory: synchronous ports.
     always @(posedge clk) begin
         if (fb_re) begin
-            fb_a = fb_ry * cfg_width + fb_rx;
+            fb_a = {18'd0, fb_ry} * {17'd0, cfg_width} + {18'd0, fb_rx};
             fi = fb_find(fb_a);
             fb_rdata <= (fb_gen[fi] == frame_no) ? fb[fi] : 32'd0;
         end
         if (fb_we) begin
-            fb_a = fb_wy * cfg_width + fb_wx;
+            fb_a = {18'd0, fb_wy} * {17'd0, cfg_width} + {18'd0, fb_wx};
             fi = fb_find(fb_a);
             if (fb_gen[fi] != frame_no) begin
                 fb_used = fb_used + 1;
                 if (fb_used * 4 > 3 * (1 << FB_BITS)) begin
                     $display("tb_backend: FAIL the frame memory model is full (%0d pixels drawn): raise FB_BITS", fb_used);
-                    $finish;
+                    $fatal(1, "tb_backend: FAIL");
                 end
             end
             fb[fi] <= fb_wdata;
@@ -327,14 +337,15 @@ module tb_backend #(
                 done <= 1'b1;
                 $fclose(f_rd); $fclose(f_pl); $fclose(f_sp); $fclose(f_px);
                 if (errors == 0)
-                    $display("tb_backend: PASS NS=%0d: %0d et_rd, %0d plots, %0d spans, %0d pix, %0d cycles, %0d cycles of pix back-pressure, %0d cycles of stimulus held",
+                    $display("tb_backend: DONE NS=%0d: %0d et_rd, %0d plots, %0d spans, %0d pix, %0d cycles, %0d cycles of pix back-pressure, %0d cycles of stimulus held",
                              NS, n_rd, n_pl, n_sp, n_px, cyc, n_bp, n_freeze);
                 else
                     $display("tb_backend: FAIL NS=%0d: %0d errors", NS, errors);
+                if (errors != 0) $fatal(1, "tb_backend: FAIL");
                 $finish;
             end else if (cyc > limit) begin
                 $display("tb_backend: FAIL timeout at cycle %0d (et_wr %0d of %0d)", cyc, ie, NETW);
-                $finish;
+                $fatal(1, "tb_backend: FAIL");
             end
             cyc <= cyc + 48'd1;
             // A shape's records all precede its rows, and the next shape's

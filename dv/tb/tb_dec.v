@@ -34,10 +34,13 @@ module tb_dec #(
     reg [23:0] cmd_a = 24'd0, cmd_b = 24'd0, cmd_c = 24'd0, cmd_d = 24'd0;
     wire       cmd_ready, seg_valid, seg_eos;
     wire [23:0] seg_xa, seg_ya, seg_xb, seg_yb;
-    wire [14:0] cfg_width, cfg_height;
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [14:0] cfg_width, cfg_height;   // DEC's configuration outputs: not the bench's business
     wire [23:0] cfg_rgb;
     wire [7:0]  cfg_alpha;
-    wire        cfg_rule, frame_start, frame_end, cfg_err;
+    wire        cfg_rule, frame_start, frame_end;
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire        cfg_err;
 
     ef_dec #(.W_MAX(W_MAX), .H_MAX(H_MAX)) dut (
         .clk(clk), .rst(rst),
@@ -59,7 +62,9 @@ module tb_dec #(
     // Present the command stamped c (if any) and the drain handshake.
     task present;
         input [47:0] c;
-        reg [CWD-1:0] cw;
+        /* verilator lint_off UNUSEDSIGNAL */
+        reg [CWD-1:0] cw;               // the payload; the stamp is compared apart
+        /* verilator lint_on UNUSEDSIGNAL */
         begin
             cmd_valid  <= 1'b0;
             shape_done <= 1'b0;
@@ -89,14 +94,14 @@ module tb_dec #(
             if (k > 0 && cmd_mem[k][CWD-1 -: 48] <= cmd_mem[k-1][CWD-1 -: 48]) begin
                 $display("tb_dec: FAIL %0s: word %0d (line %0d): cycle stamp %0d does not increase (previous %0d)",
                          cmd_name, k, k + 5, cmd_mem[k][CWD-1 -: 48], cmd_mem[k-1][CWD-1 -: 48]);
-                $finish;
+                $fatal(1, "tb_dec: FAIL");
             end
             if (cmd_mem[k][`EF_CMD_OP_MSB:`EF_CMD_OP_LSB] == `EF_OP_FRAME &&
                 (cmd_mem[k][`EF_CMD_A_MSB:`EF_CMD_A_LSB] > W_MAX || cmd_mem[k][`EF_CMD_B_MSB:`EF_CMD_B_LSB] > H_MAX)) begin
                 $display("tb_dec: FAIL %0s: word %0d (line %0d): FRAME %0dx%0d is over W_MAX x H_MAX = %0dx%0d",
                          cmd_name, k, k + 5, cmd_mem[k][`EF_CMD_A_MSB:`EF_CMD_A_LSB],
                          cmd_mem[k][`EF_CMD_B_MSB:`EF_CMD_B_LSB], W_MAX, H_MAX);
-                $finish;
+                $fatal(1, "tb_dec: FAIL");
             end
         end
         ic = 0; nseg = 0; running = 1'b0; done = 1'b0; after_end = 1'b0; cyc = 0;
@@ -104,11 +109,12 @@ module tb_dec #(
         fo = $fopen(seg_name, "w");
         if (fo == 0) begin
             $display("tb_dec: FAIL cannot open %0s", seg_name);
-            $finish;
+            $fatal(1, "tb_dec: FAIL");
         end
         $fwrite(fo, "// edgeflag vectors format 1: interface seg (DEC -> SETUP), role actual: dv/tb/tb_dec.v\n");
         repeat (3) @(posedge clk);
-        rst <= 1'b0;
+        @(negedge clk);       // no rising edge sees reset change
+        rst = 1'b0;
     end
 
     always @(posedge clk) begin
@@ -148,9 +154,10 @@ module tb_dec #(
                 done <= 1'b1;
                 $fclose(fo);
                 if (errors == 0)
-                    $display("tb_dec: PASS %0d commands, %0d segs, %0d cycles", NCMD, nseg, cyc);
+                    $display("tb_dec: DONE %0d commands, %0d segs, %0d cycles", NCMD, nseg, cyc);
                 else
                     $display("tb_dec: FAIL %0d errors (%0d commands, %0d segs)", errors, NCMD, nseg);
+                if (errors != 0) $fatal(1, "tb_dec: FAIL");
                 $finish;
             end
             cyc <= cyc + 48'd1;

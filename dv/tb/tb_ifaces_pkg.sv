@@ -62,6 +62,7 @@ module tb_ifaces_pkg;
             $display("tb_ifaces_pkg: PASS 7 structs, %0d fields at their offsets", nfield);
         else
             $display("tb_ifaces_pkg: FAIL %0d errors", errors);
+        if (errors != 0) $fatal(1, "tb_ifaces_pkg: FAIL");
         $finish;
     end
 endmodule

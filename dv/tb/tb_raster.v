@@ -14,10 +14,24 @@
 // The bench refuses a stream the hardware cannot take, before simulating,
 // with FILE:LINE: a FRAME over W_MAX x H_MAX (or of size 0), a shape of more
 // than E_MAX EDGE commands, a cycle stamp that goes backwards, a word that is
-// not hex, more than CMD_MAX commands.  Exit: the result line
-// "tb_raster: PASS ..." or "tb_raster: FAIL ..." / "tb_raster: REFUSED ...".
+// not hex, more than CMD_MAX commands.
 //
-// Plusargs: +cmd=FILE +out=PREFIX (with the trailing /) +bp=SEED
+// The bench compares nothing against the vectors (`edgeflag check` does, on
+// its dumps); its own checks are the DUT's readiness for every command at
+// its stamp, `err` never raised and no timeout.  Result, the last line:
+//   "tb_raster: DONE ..." (exit 0): the dumps are written and closed, the
+//        bench's own checks held; the verdict is edgeflag check's;
+//   "tb_raster: FAIL ..." (exit non-zero): a bench check failed, a file
+//        could not be opened or written, no +cmd or +out was given;
+//   "tb_raster: REFUSED FILE:LINE: ..." (exit non-zero): the stream does
+//        not fit this build (W_MAX, H_MAX, E_MAX, CMD_MAX) or is malformed.
+// A non-zero exit is $fatal's: vvp exits 1, a Verilator binary aborts
+// (status 134).
+//
+// Defines: EF_TB_USER_DUT for a DUT other than rtl/'s ef_raster with its
+// ports (the bench then reaches into nothing inside it; dv/rtl-sim.sh --top).
+// Plusargs: +cmd=FILE (required) +out=DIR (required: the dumps go to
+// DIR/IFACE.actual.hex, nothing else is written) +bp=SEED
 // Parameters: NS, W_MAX, H_MAX, E_MAX, CMD_MAX, FB_BITS.
 module tb_raster #(
     parameter NS      = 8,
@@ -46,7 +60,10 @@ module tb_raster #(
     wire [13:0] fb_ry, fb_rx, fb_wy, fb_wx;
     wire [31:0] fb_wdata;
     reg  [31:0] fb_rdata = 32'd0;
-    wire [14:0] cfg_width, cfg_height;
+    wire [14:0] cfg_width;
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [14:0] cfg_height;              // the frame memory model needs the width only
+    /* verilator lint_on UNUSEDSIGNAL */
     wire        frame_start, frame_end, err;
     wire        seg_valid, seg_ready, seg_eos;
     wire [23:0] seg_xa, seg_ya, seg_xb, seg_yb;
@@ -100,11 +117,14 @@ module tb_raster #(
     reg [15:0] fb_gen [0:(1<<FB_BITS)-1];
     reg [15:0] frame_no;
     reg [31:0] fb_a;
-    integer    fb_used, fi;
+    integer    fb_used;
+    reg [FB_BITS-1:0] fi;
 
     function [FB_BITS-1:0] fb_find;      // the word of pixel a, or a free one
         input [31:0] a;
-        reg [63:0] h;
+        /* verilator lint_off UNUSEDSIGNAL */
+        reg [63:0] h;                    // its bits 31 -: FB_BITS are the hash
+        /* verilator lint_on UNUSEDSIGNAL */
         reg [FB_BITS-1:0] i;
         integer n;
         begin
@@ -125,18 +145,18 @@ module tb_raster #(
             fb_used = 0;
         end
         if (fb_re) begin
-            fb_a = fb_ry * cfg_width + fb_rx;
+            fb_a = {18'd0, fb_ry} * {17'd0, cfg_width} + {18'd0, fb_rx};
             fi = fb_find(fb_a);
             fb_rdata <= (fb_gen[fi] == frame_no) ? fb[fi] : 32'd0;
         end
         if (fb_we) begin
-            fb_a = fb_wy * cfg_width + fb_wx;
+            fb_a = {18'd0, fb_wy} * {17'd0, cfg_width} + {18'd0, fb_wx};
             fi = fb_find(fb_a);
             if (fb_gen[fi] != frame_no) begin
                 fb_used = fb_used + 1;
                 if (fb_used * 4 > 3 * (1 << FB_BITS)) begin
                     $display("tb_raster: FAIL the frame memory model is full (%0d pixels drawn): raise FB_BITS", fb_used);
-                    $finish;
+                    $fatal(1, "tb_raster: FAIL");
                 end
             end
             fb[fi] <= fb_wdata;
@@ -149,7 +169,8 @@ module tb_raster #(
     reg [CWD-1:0]   cmd_mem [0:CMD_MAX-1];
     reg [8*400-1:0] cmd_name, out_name;
     reg [8*1024-1:0] line;
-    integer ncmd, fd, lineno, r, nedge, refused;
+    integer ncmd, fd, lineno, nedge;
+    reg     refused;
     reg [CWD-1:0] w;
     reg [47:0] prev;
 
@@ -157,7 +178,7 @@ module tb_raster #(
         input [8*200-1:0] why;
         begin
             $display("tb_raster: REFUSED %0s:%0d: %0s", cmd_name, lineno, why);
-            refused = 1;
+            refused = 1'b1;
         end
     endtask
 
@@ -170,10 +191,10 @@ module tb_raster #(
         begin
             fd = $fopen(cmd_name, "r");
             if (fd == 0) begin
-                $display("tb_raster: REFUSED %0s: cannot open", cmd_name);
-                $finish;
+                $display("tb_raster: FAIL cannot open %0s", cmd_name);
+                $fatal(1, "tb_raster: FAIL");
             end
-            ncmd = 0; lineno = 0; nedge = 0; refused = 0; prev = 48'd0;
+            ncmd = 0; lineno = 0; nedge = 0; refused = 1'b0; prev = 48'd0;
             while (!$feof(fd) && !refused) begin
                 line = 0;
                 c = $fgets(line, fd);
@@ -203,7 +224,7 @@ module tb_raster #(
                         else begin
                             prev = w[CWD-1 -: 48];
                             case (w[99:96])
-                                4'd1: if (w[95:72] == 0 || w[95:72] > W_MAX || w[71:48] == 0 || w[71:48] > H_MAX)
+                                4'd1: if (w[95:72] == 0 || {8'd0, w[95:72]} > W_MAX || w[71:48] == 0 || {8'd0, w[71:48]} > H_MAX)
                                           refuse("FRAME canvas over the hardware's W_MAX x H_MAX (or empty)");
                                 4'd2: nedge = 0;
                                 4'd3: begin
@@ -222,7 +243,11 @@ module tb_raster #(
             $fclose(fd);
             if (refused) begin
                 $display("tb_raster: REFUSED (W_MAX %0d, H_MAX %0d, E_MAX %0d)", W_MAX, H_MAX, E_MAX);
-                $finish;
+                $fatal(1, "tb_raster: REFUSED");
+            end
+            if (ncmd == 0) begin
+                $display("tb_raster: FAIL %0s holds no command", cmd_name);
+                $fatal(1, "tb_raster: FAIL");
             end
         end
     endtask
@@ -235,11 +260,11 @@ module tb_raster #(
         input [8*40-1:0] desc;
         reg [8*440-1:0] fname;
         begin
-            $sformat(fname, "%0s%0s.actual.hex", out_name, iface);
+            $sformat(fname, "%0s/%0s.actual.hex", out_name, iface);
             f = $fopen(fname, "w");
             if (f == 0) begin
-                $display("tb_raster: FAIL cannot open %0s", fname);
-                $finish;
+                $display("tb_raster: FAIL cannot open %0s for writing", fname);
+                $fatal(1, "tb_raster: FAIL");
             end
             $fwrite(f, "// edgeflag vectors format 1: interface %0s (%0s), role actual: dv/tb/tb_raster.v\n", iface, desc);
         end
@@ -248,19 +273,26 @@ module tb_raster #(
     integer ic, bp_seed, n_pix, n_bp, errors;
     integer n_seg, n_etw, n_etr, n_plot, n_span;
     reg [47:0] cyc, limit;
+    reg [47:0] frame_len;      // one past the last transfer on any interface (docs/microarch.md 4, item 7)
     reg        running, use_bp;
     reg [31:0] rnd;
 
     initial begin
-        if (!$value$plusargs("cmd=%s", cmd_name)) cmd_name = "cmd.stim.hex";
-        if (!$value$plusargs("out=%s", out_name)) out_name = "";
+        if (!$value$plusargs("cmd=%s", cmd_name)) begin
+            $display("tb_raster: FAIL no +cmd=FILE (the command stream, cmd.stim.hex)");
+            $fatal(1, "tb_raster: FAIL");
+        end
+        if (!$value$plusargs("out=%s", out_name)) begin
+            $display("tb_raster: FAIL no +out=DIR (where the dumps IFACE.actual.hex go)");
+            $fatal(1, "tb_raster: FAIL");
+        end
         use_bp = $value$plusargs("bp=%d", bp_seed);
         rnd = use_bp ? bp_seed : 0;
         load;
-        for (fi = 0; fi < (1 << FB_BITS); fi = fi + 1)
-            fb_gen[fi] = 16'd0;
+        for (fb_used = 0; fb_used < (1 << FB_BITS); fb_used = fb_used + 1)
+            fb_gen[fb_used] = 16'd0;
         frame_no = 16'd0; fb_used = 0;
-        ic = 0; n_pix = 0; n_bp = 0; errors = 0; cyc = 0; running = 1'b0;
+        ic = 0; n_pix = 0; n_bp = 0; errors = 0; cyc = 0; running = 1'b0; frame_len = 48'd0;
         n_seg = 0; n_etw = 0; n_etr = 0; n_plot = 0; n_span = 0;
         // generous: every cycle of the stamps and then some per command
         // twice the stamps and then some: a slower DUT (back-pressure) fits,
@@ -272,8 +304,11 @@ module tb_raster #(
         open_dump(f_plot, "plot", "PLOT -> SLB");
         open_dump(f_span, "span", "FILL -> COV");
         open_dump(f_pix, "pix", "COV -> memory");
+        // reset low from the negative edge after the third rising one, so no
+        // rising edge sees it change
         repeat (3) @(posedge clk);
-        rst <= 1'b0;
+        @(negedge clk);
+        rst = 1'b0;
     end
 
     task present;              // the command for cycle c (set at the edge ending c-1)
@@ -302,8 +337,16 @@ module tb_raster #(
             // the transfers of cycle cyc happen at this edge
             if (cmd_valid && cmd_ready)
                 ic = ic + 1;
+            if ((cmd_valid && cmd_ready) || (seg_valid && seg_ready) || (et_wr_valid && et_wr_ready) ||
+                (et_rd_valid && et_rd_ready) || (plot_valid && plot_ready) || (span_valid && span_ready) ||
+                (pix_valid && pix_ready))
+                frame_len = cyc + 48'd1;
             if (cmd_valid && !cmd_ready && cmd_mem[ic][CWD-1 -: 48] == cyc && !use_bp) begin
+`ifdef EF_TB_USER_DUT
+                if (errors < 10) $display("tb_raster: cycle %0d: the DUT is not ready for the command stamped here", cyc);
+`else
                 if (errors < 10) $display("tb_raster: cycle %0d: the DUT is not ready for the command stamped here (eos_seen %0d, aet_busy %0d, slb_idle %0d, cov_busy %0d)", cyc, dut.eos_seen, dut.aet_busy, dut.slb_idle, dut.cov_busy);
+`endif
                 errors = errors + 1;
             end
             if (seg_valid && seg_ready) begin
@@ -335,20 +378,24 @@ module tb_raster #(
                 rnd = rnd * 32'd1103515245 + 32'd12345;
                 pix_ready <= rnd[17:16] != 2'd0;
             end
-            if (ic >= ncmd && frame_end_seen && !dut.aet_busy && dut.slb_idle && !dut.cov_busy
-                && !seg_valid && !et_wr_valid) begin
+            if (ic >= ncmd && frame_end_seen && drained) begin
                 $fclose(f_seg); $fclose(f_etw); $fclose(f_etr); $fclose(f_plot); $fclose(f_span); $fclose(f_pix);
-                if (errors == 0)
-                    $display("tb_raster: PASS NS=%0d: %0d cmd, %0d seg, %0d et_wr, %0d et_rd, %0d plot, %0d span, %0d pix, %0d cycles%0s",
-                             NS, ncmd, n_seg, n_etw, n_etr, n_plot, n_span, n_pix, cyc,
-                             use_bp ? " (random back-pressure on pix)" : "");
-                else
+                if (errors == 0) begin
+                    if (use_bp)
+                        $display("tb_raster: DONE NS=%0d: %0d cmd, %0d seg, %0d et_wr, %0d et_rd, %0d plot, %0d span, %0d pix, a frame of %0d cycles (random back-pressure on pix); the dumps are for edgeflag check",
+                                 NS, ncmd, n_seg, n_etw, n_etr, n_plot, n_span, n_pix, frame_len);
+                    else
+                        $display("tb_raster: DONE NS=%0d: %0d cmd, %0d seg, %0d et_wr, %0d et_rd, %0d plot, %0d span, %0d pix, a frame of %0d cycles; the dumps are for edgeflag check",
+                                 NS, ncmd, n_seg, n_etw, n_etr, n_plot, n_span, n_pix, frame_len);
+                    $finish;
+                end else begin
                     $display("tb_raster: FAIL NS=%0d: %0d errors", NS, errors);
-                $finish;
+                    $fatal(1, "tb_raster: FAIL");
+                end
             end else if (cyc > limit) begin
                 $fclose(f_seg); $fclose(f_etw); $fclose(f_etr); $fclose(f_plot); $fclose(f_span); $fclose(f_pix);
                 $display("tb_raster: FAIL timeout at cycle %0d (command %0d of %0d)", cyc, ic, ncmd);
-                $finish;
+                $fatal(1, "tb_raster: FAIL");
             end
             cyc <= cyc + 48'd1;
             present(cyc + 48'd1);
@@ -358,4 +405,21 @@ module tb_raster #(
     reg frame_end_seen = 1'b0;
     always @(posedge clk)
         if (frame_end) frame_end_seen <= 1'b1;
+
+    // Drained: nothing left in the DUT.  The reference ef_raster's blocks
+    // say so (busy and idle flags); another DUT with ef_raster's ports
+    // (EF_TB_USER_DUT: `dv/rtl-sim.sh --top`) is taken as drained after
+    // W_MAX + 64 cycles with no valid on any interface, longer than any
+    // row's scan, so a DUT still working after FRAME_END is waited for.
+`ifdef EF_TB_USER_DUT
+    integer quiet = 0;
+    always @(posedge clk)
+        if (seg_valid || et_wr_valid || et_rd_valid || plot_valid || span_valid || pix_valid || !frame_end_seen)
+            quiet <= 0;
+        else
+            quiet <= quiet + 1;
+    wire drained = quiet > W_MAX + 64;
+`else
+    wire drained = !dut.aet_busy && dut.slb_idle && !dut.cov_busy && !seg_valid && !et_wr_valid;
+`endif
 endmodule

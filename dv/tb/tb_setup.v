@@ -55,7 +55,9 @@ module tb_setup #(
 
     task present;
         input [47:0] c;
-        reg [SWD-1:0] w;
+        /* verilator lint_off UNUSEDSIGNAL */
+        reg [SWD-1:0] w;                // the payload; the stamp is compared apart
+        /* verilator lint_on UNUSEDSIGNAL */
         begin
             seg_valid <= 1'b0;
             if (is < NSEG && seg_mem[is][SWD-1 -: 48] == c) begin
@@ -85,30 +87,31 @@ module tb_setup #(
                 if (cmd_mem[k][`EF_CMD_B_MSB:`EF_CMD_B_LSB] > H_MAX || cmd_mem[k][`EF_CMD_B_MSB:`EF_CMD_B_LSB] == 0) begin
                     $display("tb_setup: FAIL %0s: word %0d (line %0d): FRAME height %0d outside 1..H_MAX=%0d",
                              cmd_name, k, k + 5, cmd_mem[k][`EF_CMD_B_MSB:`EF_CMD_B_LSB], H_MAX);
-                    $finish;
+                    $fatal(1, "tb_setup: FAIL");
                 end
                 cfg_height = cmd_mem[k][`EF_CMD_B_LSB +: 15];
             end
         if (nframe != 1) begin
             $display("tb_setup: FAIL %0s: %0d FRAME commands (expected 1)", cmd_name, nframe);
-            $finish;
+            $fatal(1, "tb_setup: FAIL");
         end
         for (k = 1; k < NSEG; k = k + 1)
             if (seg_mem[k][SWD-1 -: 48] <= seg_mem[k-1][SWD-1 -: 48]) begin
                 $display("tb_setup: FAIL %0s: word %0d (line %0d): cycle stamp %0d does not increase",
                          seg_name, k, k + 5, seg_mem[k][SWD-1 -: 48]);
-                $finish;
+                $fatal(1, "tb_setup: FAIL");
             end
         is = 0; nout = 0; running = 1'b0; done = 1'b0; cyc = 0;
         last = NSEG > 0 ? seg_mem[NSEG-1][SWD-1 -: 48] : 48'd0;
         fo = $fopen(out_name, "w");
         if (fo == 0) begin
             $display("tb_setup: FAIL cannot open %0s", out_name);
-            $finish;
+            $fatal(1, "tb_setup: FAIL");
         end
         $fwrite(fo, "// edgeflag vectors format 1: interface et_wr (SETUP -> ETM), role actual: dv/tb/tb_setup.v\n");
         repeat (3) @(posedge clk);
-        rst <= 1'b0;
+        @(negedge clk);       // no rising edge sees reset change
+        rst = 1'b0;
     end
 
     always @(posedge clk) begin
@@ -143,9 +146,10 @@ module tb_setup #(
                 done <= 1'b1;
                 $fclose(fo);
                 if (errors == 0)
-                    $display("tb_setup: PASS NS=%0d: %0d segs, %0d et_wr, %0d cycles", NS, NSEG, nout, cyc);
+                    $display("tb_setup: DONE NS=%0d: %0d segs, %0d et_wr, %0d cycles", NS, NSEG, nout, cyc);
                 else
                     $display("tb_setup: FAIL NS=%0d: %0d errors", NS, errors);
+                if (errors != 0) $fatal(1, "tb_setup: FAIL");
                 $finish;
             end
             cyc <= cyc + 48'd1;

@@ -469,6 +469,31 @@ else bad "--filter tent far vertex" "rc=$rc $(head -c 200 err)"; fi
 run render far.scene -o far.pam
 if [ $rc -eq 0 ]; then ok "the same scene renders without the options"; else bad "far scene without options" "rc=$rc"; fi
 
+# The DUT's limits (issue 27): over them, exit 3 naming the limit, nothing written; at them, the
+# same files as without the options.
+SVGT=$root/tests/data/svg/tiger.svg
+rm -rf dl_ok dl_plain dl_canvas dl_edges
+run vectors "$SVGT" -o dl_canvas --size 64x48 --samples 8 --dut-limits 63x48
+if [ $rc -eq 3 ] && [ ! -e dl_canvas ] && grep -q "canvas 64x48 over the DUT's 63x48 (--dut-limits): refused" err; then
+    ok "vectors --dut-limits: a canvas over it is refused (exit 3), naming the limit, nothing written"
+else bad "vectors --dut-limits refusal" "rc=$rc"; fi
+run vectors "$SVGT" -o dl_edges --size 64x48 --samples 8 --dut-edges 10
+if [ $rc -eq 3 ] && [ ! -e dl_edges ] && grep -Eq "shape [0-9]+ has [0-9]+ edges, over the DUT's 10 \(--dut-edges\): refused" err; then
+    ok "vectors --dut-edges: a shape over it is refused (exit 3), naming the shape and the limit, nothing written"
+else bad "vectors --dut-edges refusal" "rc=$rc"; fi
+run vectors "$SVGT" -o dl_ok --size 64x48 --samples 8 --formats hex --dut-limits 64x48 --dut-edges 4096; rc1=$rc
+run vectors "$SVGT" -o dl_plain --size 64x48 --samples 8 --formats hex; rc2=$rc
+if [ $rc1 -eq 0 ] && [ $rc2 -eq 0 ] && diff -r dl_ok dl_plain >/dev/null; then
+    ok "vectors within --dut-limits and --dut-edges: the same files as without them"
+else bad "vectors within the DUT's limits" "rc=$rc1/$rc2"; fi
+dl_u=1
+for args in "--dut-limits 64" "--dut-limits 0x48" "--dut-edges 0" "--dut-edges 5 --interfaces pix"; do
+    # shellcheck disable=SC2086 # the arguments split on purpose
+    run vectors "$SVGT" -o dl_usage $args
+    if [ $rc -ne 2 ] || [ -e dl_usage ]; then dl_u=0; bad "vectors $args: exit $rc, expected 2"; fi
+done
+[ $dl_u = 1 ] && ok "vectors --dut-limits/--dut-edges usage errors (a bad size, 0 edges, no cmd interface) exit 2"
+
 [ "$skip" -gt 0 ] && echo "cli: $skip skipped"
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -15,7 +15,7 @@
 #      package's structs are checked against the model's interface table at
 #      start-up; the gen case once more under valgrind's memcheck (when
 #      installed) with no error;
-#   3. the loop can fail: built with the RTL's -DEF_FAULT_SPAN (every span of
+#   3. the loop can fail: built from the RTL variant with the planted fault span (every span of
 #      two or more pixels one short) it must stop at the first such span, naming
 #      the simulation time, interface span, that span's cycle, and `len` as
 #      the one differing field (expected len = actual + 1); with +cov_lag=1
@@ -40,8 +40,9 @@ case $build in /*) ;; *) build=$PWD/$build ;; esac
 EF=$build/edgeflag
 DPI=$root/dv/dpi
 R=${EF_DPI_RTL:-$root/rtl}     # EF_DPI_RTL: another RTL folder (the same file names)
-RTL_SLB="$R/ef_slb_fill.v $R/ef_slb_ram.v"
-RTL_RASTER="$R/ef_raster.v $R/ef_dec.v $R/ef_setup.v $R/ef_div.v $R/ef_etm.v $R/ef_aet.v $R/ef_plot.v $RTL_SLB $R/ef_cov.v"
+# rtl_slb DIR, rtl_raster DIR: the DUT's files in an RTL folder
+rtl_slb() { echo "$1/ef_slb_fill.v $1/ef_slb_ram.v"; }
+rtl_raster() { echo "$1/ef_raster.v $1/ef_dec.v $1/ef_setup.v $1/ef_div.v $1/ef_etm.v $1/ef_aet.v $1/ef_plot.v $(rtl_slb "$1") $1/ef_cov.v"; }
 for f in "$EF" "$build/tests/test_model_stream"; do
     [ -e "$f" ] || { echo "test-dpi: $f not built (make test-dpi builds it)"; exit 1; }
 done
@@ -102,17 +103,19 @@ echo "test-dpi: $(verilator --version)"
 "$EF" vectors --rtl-headers -o "$work/hdr" >"$work/hdr.log" 2>&1 || { cat "$work/hdr.log"; exit 1; }
 [ -e "$build/libef_dpi.a" ] || { echo "test-dpi: $build/libef_dpi.a not built (make test-dpi builds it)"; exit 1; }
 
-# vl_build NAME DUT NS W_MAX H_MAX [-DFAULT]: builds tb_lockstep with DUT
-# (raster: ef_raster, the whole pipeline; slb: ef_slb_fill) into
-# $work/vl_NAME/obj/tb; "ok" or the reason in $work/vl_NAME/status.
+# vl_build NAME DUT NS W_MAX H_MAX [RTL_DIR]: builds tb_lockstep with DUT
+# (raster: ef_raster, the whole pipeline; slb: ef_slb_fill) from RTL_DIR
+# (default $R; a planted fault's RTL variant) into $work/vl_NAME/obj/tb;
+# "ok" or the reason in $work/vl_NAME/status.
 vl_build() {
-    local name=$1 dut=$2 ns=$3 w=$4 h=$5; shift 5
-    local d=$work/vl_$name s=$(date +%s) rtl=$RTL_RASTER
-    [ "$dut" = slb ] && { rtl=$RTL_SLB; set -- -DEF_TB_DUT_SLB "$@"; }
+    local name=$1 dut=$2 ns=$3 w=$4 h=$5 src=${6:-$R}; shift 5; [ $# -gt 0 ] && shift
+    local d=$work/vl_$name s=$(date +%s) rtl
+    rtl=$(rtl_raster "$src")
+    [ "$dut" = slb ] && { rtl=$(rtl_slb "$src"); set -- -DEF_TB_DUT_SLB "$@"; }
     mkdir -p "$d"
     if ! verilator --binary --timing --timescale 1ns/1ns -j 1 --Mdir "$d/obj" --top-module tb_lockstep \
             -MAKEFLAGS "OPT_FAST=-O0 OPT_SLOW=-O0 OPT_GLOBAL=-O0" \
-            -GNS="$ns" -GW_MAX="$w" -GH_MAX="$h" "$@" "$work/hdr/ef_ifaces_pkg.sv" "$DPI/ef_model_pkg.sv" \
+            -GNS="$ns" -GW_MAX="$w" -GH_MAX="$h" -I"$src" "$@" "$work/hdr/ef_ifaces_pkg.sv" "$DPI/ef_model_pkg.sv" \
             "$DPI/tb_lockstep.sv" $rtl "$build/libef_dpi.a" -o tb >"$d/build.log" 2>&1; then
         echo "verilator build failed" >"$d/status"; return
     fi
@@ -140,7 +143,9 @@ fi
 echo "test-dpi: DUT $DUT, checked in lockstep: $CHECKS"
 vl_build ns8 $DUT 8 160 120 & vl_build ns32 $DUT 32 160 120 &
 wait
-vl_build short $DUT 8 160 120 -DEF_FAULT_SPAN &
+# the planted fault dv/faults/span.sed: an RTL variant
+bash "$root/dv/rtl-variant.sh" "$work/rtl_span" span || bad "dv/rtl-variant.sh span"
+vl_build short $DUT 8 160 120 "$work/rtl_span" &
 [ $DUT = raster ] && vl_build slb8 slb 8 160 120 &
 wait
 
@@ -229,6 +234,23 @@ if vl ns8; then
     else
         cat "$work/back.sim"; bad "lockstep back: want cmd.stim.hex:7 refused"
     fi
+    # No input: no +cmd, a missing file, a file without a command: each a FAIL line and a
+    # non-zero exit, nothing simulated.
+    mkdir -p "$work/noin"; printf '// no command\n' >"$work/noin/cmd.stim.hex"
+    x_ok=1 x_msg=
+    for k in nocmd missing empty; do
+        case $k in
+            nocmd)   a=(); want="tb_lockstep: FAIL no +cmd=FILE" ;;
+            missing) a=(+cmd="$work/noin/no-such.hex"); want="tb_lockstep: FAIL cannot open $work/noin/no-such.hex" ;;
+            empty)   a=(+cmd="$work/noin/cmd.stim.hex"); want="tb_lockstep: FAIL $work/noin/cmd.stim.hex holds no command" ;;
+        esac
+        ( "$work/vl_ns8/obj/tb" "${a[@]}" >"$work/noin/$k.sim" 2>&1; echo $? >"$work/noin/$k.rc" ) 2>/dev/null
+        if [ "$(cat "$work/noin/$k.rc")" = 0 ] || ! grep -qF "$want" "$work/noin/$k.sim"; then
+            x_ok=0; cat "$work/noin/$k.sim"; bad "lockstep $k: want '$want' and a non-zero exit (exit $(cat "$work/noin/$k.rc"))"
+        fi
+        x_msg="$x_msg $k exit $(cat "$work/noin/$k.rc");"
+    done
+    [ $x_ok = 1 ] && ok "lockstep without input (no +cmd, a missing file, no command in it) fails with its line:$x_msg"
 fi
 if vl ns32; then
     run ns32 gen32 "$work/g32";             pass_run gen32 "$work/g32"
@@ -236,7 +258,7 @@ fi
 
 # --------------------------------------------------------------- 3. faults
 # The first expected span: its cycle (the word's top 48 bits) and fields.
-# The RTL's fault EF_FAULT_SPAN (rtl/ef_slb_fill.v) cuts every
+# The RTL's planted fault span (dv/faults/span.sed) cuts every
 # span of two or more pixels one short: the first such span of the files is
 # where the bench must stop.  A span word is 123 bits in 31 digits: its first
 # 13 digits are bits 123..72 and the cycle, bits 122..75, is their value
@@ -256,9 +278,9 @@ if vl short; then
     if [ "$(cat "$work/short.rc")" != 0 ] &&
        printf '%s\n' "$line" | grep -Eq "^tb_lockstep: FAIL at time [0-9]+ ns, cycle $c1: span: cycle $c1, y [0-9]+, x [0-9]+: fields differ: expected y=[0-9]+ x=[0-9]+ len=[0-9]+ mask=0x[0-9a-f]{8}; actual " &&
        [ -n "$el" ] && [ -n "$al" ] && [ "$el" = $((al + 1)) ] && [ "$stars" = 1 ]; then
-        ok "RTL fault EF_FAULT_SPAN (a span one pixel short) caught: ${line#tb_lockstep: FAIL }"
+        ok "RTL fault span (dv/faults/span.sed: a span one pixel short) caught: ${line#tb_lockstep: FAIL }"
     else
-        cat "$work/short.sim"; bad "fault EF_FAULT_SPAN: want the first span of 2+ pixels (cycle $c1) reported with len one short, exit != 0"
+        cat "$work/short.sim"; bad "fault span: want the first span of 2+ pixels (cycle $c1) reported with len one short, exit != 0"
     fi
 fi
 echo "test-dpi: $(( $(date +%s) - t0 )) s"

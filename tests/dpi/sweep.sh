@@ -33,7 +33,7 @@ t0=$(date +%s)
 
 for ns in 8 16 32; do
     verilator --binary --timing --timescale 1ns/1ns -j 2 --Mdir "$work/vl$ns" --top-module tb_lockstep \
-        -GNS="$ns" -GW_MAX=16384 -GH_MAX=16384 -GE_MAX=4194304 -DEF_TB_DUT_SLB "$work/hdr/ef_ifaces_pkg.sv" "$DPI/ef_model_pkg.sv" "$DPI/tb_lockstep.sv" $RTL \
+        -GNS="$ns" -GW_MAX=16384 -GH_MAX=16384 -GE_MAX=4194304 -DEF_TB_DUT_SLB -I"$root/rtl" "$work/hdr/ef_ifaces_pkg.sv" "$DPI/ef_model_pkg.sv" "$DPI/tb_lockstep.sv" $RTL \
         "$build/libef_dpi.a" -o tb >"$work/build$ns.log" 2>&1 ||
         { tail -n 30 "$work/build$ns.log"; echo "dpi-sweep: verilator build NS=$ns failed"; exit 1; }
 done

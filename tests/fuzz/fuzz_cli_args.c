@@ -175,14 +175,17 @@ static void check_patterns(int argc, char **argv)
         FAIL("patterns: exit code %d", rc);
     if (rc != -1)
         return;
-    static const char *const p_valued[] = { "--samples", NULL }, *const p_flags[] = { "--emit-c", NULL };
+    static const char *const p_valued[] = { "--samples", NULL }, *const p_flags[] = { "--emit-c", "--emit-verilog",
+                                                                                      NULL };
     if (!ref_full_names(argc, argv, p_valued, p_flags, false))
         FAIL("patterns: accepted a word that is no option");
     if (!(a.samples == 0 || ef_samples_valid(a.samples)))
         FAIL("patterns: %" PRId32 " samples", a.samples);
-    if (a.emit_c && a.samples)
-        FAIL("patterns: --emit-c with --samples accepted");
-    if (a.samples != b.samples || a.emit_c != b.emit_c)
+    if ((a.emit_c || a.emit_verilog) && a.samples)
+        FAIL("patterns: --emit-c or --emit-verilog with --samples accepted");
+    if (a.emit_c && a.emit_verilog)
+        FAIL("patterns: --emit-c with --emit-verilog accepted");
+    if (a.samples != b.samples || a.emit_c != b.emit_c || a.emit_verilog != b.emit_verilog)
         FAIL("patterns: two parses differ");
 }
 
@@ -284,8 +287,9 @@ static void check_vectors(int argc, char **argv)
         FAIL("vectors: exit code %d", rc);
     if (rc != -1)
         return;
-    static const char *const v_valued[] = { "-o",        "--output",     "--samples", "--rule",     "--size",
-                                            "--formats", "--interfaces", "--filter",  "--subpixel", NULL };
+    static const char *const v_valued[] = { "-o",         "--output",     "--samples",    "--rule",
+                                            "--size",     "--formats",    "--interfaces", "--filter",
+                                            "--subpixel", "--dut-limits", "--dut-edges",  NULL };
     static const char *const v_flags[] = { "--force", "--dump", "--rtl-headers", NULL };
     if (!ref_full_names(argc, argv, v_valued, v_flags, true))
         FAIL("vectors: accepted a word that is no option");

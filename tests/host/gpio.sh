@@ -5,6 +5,9 @@
 # built into BUILD/libgpiod2 (skipped, saying why, without ../shared).
 #   tests/host/gpio.sh BUILD
 set -u
+cd "$(dirname "$0")/../.." || exit 1
+# shellcheck source=tests/host/waits.sh disable=SC1091
+. tests/host/waits.sh
 build=${1:-build}
 make=${MAKE:-make}
 out=$build/test-host-gpio
@@ -46,7 +49,7 @@ run_one() {   # NAME PROGRAM
         echo "gpio ($name): FAIL: umockdev-wrapper is missing (tools/install-deps.sh test installs umockdev)"
         fail=1; return
     fi
-    if ! timeout 50 umockdev-wrapper "$prog" "$out/vec/vectors.bin" "$res"; then
+    if ! timeout "$EF_GUARD_S" umockdev-wrapper "$prog" "$out/vec/vectors.bin" "$res"; then
         echo "gpio ($name): FAIL: the emulator test failed"; fail=1; return
     fi
     # The board's results against the expected records, by the project's own checker.

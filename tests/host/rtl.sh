@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
 # tests/host/rtl.sh - the Verilated reference RTL as the simulated board's DUT
-# (`edgeflag-host --transport sim --sim-dut rtl`, docs/board.md 5.3): the unmodified
+# (`edgeflag-host "${SIM[@]}" --sim-dut rtl`, docs/board.md 5.3): the unmodified
 # edgeflag-host, built with the RTL DUT (make host-rtl), against the model's own vectors.
 #   1. verify of two shared SVGs at 64x48, 8 and 16 samples: PASS cycle-exact on pix and
 #      every internal interface (seg, et_wr, et_rd, plot, span), and the RTL's results
 #      byte-identical to the model DUT's;
 #   2. a link fault (--sim-faults drop=2): still PASS, the frame sent again; unplugged
 #      mid-commands (exit 5), then --resume with --sim-state: byte-identical results;
-#   3. a planted RTL fault (an edgeflag-host built with the RTL's EF_FAULT_ROOKS: one wrong
+#   3. a planted RTL fault (an edgeflag-host built with the RTL variant dv/faults/rooks.sed: one wrong
 #      n-rooks offset in PLOT): verify exits 1, the earliest mismatch (by cycle) on plot, none
 #      on seg or et_wr (et_rd, span and pix follow: PLOT's back-pressure and its wrong samples);
 #   4. a canvas over the RTL's W_MAX: exit 3, the host refusing it from identify's limits; a
@@ -22,6 +22,8 @@ set -u
 export LC_ALL=C
 build=${1:?usage: tests/host/rtl.sh BUILD_DIR}
 root=$(cd "$(dirname "$0")/../.." && pwd)
+# shellcheck source=tests/host/waits.sh disable=SC1091
+. "$root/tests/host/waits.sh"
 case $build in /*) ;; *) build=$PWD/$build ;; esac
 MAKE=${MAKE:-make}
 if ! command -v verilator >/dev/null 2>&1; then
@@ -30,6 +32,10 @@ if ! command -v verilator >/dev/null 2>&1; then
 fi
 E=$build/edgeflag H=$build/edgeflag-host HF=$build/edgeflag-host-rtlfault HN=$build/edgeflag-host-nortl
 SVG=$root/tests/data/svg
+# The RTL DUT runs inside the host's reads and writes (a whole frame at a FRAME_END, slower than
+# the model's), so a busy machine stretches the time between two ACKs: a generous --timeout
+# (tests/host/waits.sh); no case here tests a timeout.
+SIM=(--transport sim --timeout "$EF_LINK_MS")
 src=()
 [ -n "${EF_RTL_DUT_SRC:-}" ] && src=(RTL_DUT_SRC="$EF_RTL_DUT_SRC")
 pass=0 fail=0
@@ -44,11 +50,13 @@ if ! $MAKE -C "$root" --no-print-directory -j2 BUILD="$build" WITH_RTL_DUT=1 "${
         >"$tmp/build.log" 2>&1; then
     tail -n 30 "$tmp/build.log"; bad "build edgeflag-host with the RTL DUT"; echo "$pass passed, $fail failed"; exit 1
 fi
-# the planted fault: NS 8 only, its own objects and binary
-if ! $MAKE -C "$root" --no-print-directory -j2 BUILD="$build" WITH_RTL_DUT=1 "${src[@]}" RTL_DUT_NS=8 \
-        RTL_DUT_FAULT=EF_FAULT_ROOKS RTL_DUT_OPT=-O0 RTL_DUT_DIR="$build/host/rtl-fault" EDGEFLAG_HOST="$HF" "$HF" \
+# the planted fault: NS 8 only, its own objects and binary, built from the
+# RTL variant of dv/faults/rooks.sed
+if ! bash "$root/dv/rtl-variant.sh" "$build/host/rtl-fault-src" rooks >"$tmp/build_fault.log" 2>&1 ||
+   ! $MAKE -C "$root" --no-print-directory -j2 BUILD="$build" WITH_RTL_DUT=1 RTL_DUT_SRC="$build/host/rtl-fault-src" RTL_DUT_NS=8 \
+        RTL_DUT_FAULT=rooks RTL_DUT_OPT=-O0 RTL_DUT_DIR="$build/host/rtl-fault" EDGEFLAG_HOST="$HF" "$HF" \
         >"$tmp/build_fault.log" 2>&1; then
-    tail -n 30 "$tmp/build_fault.log"; bad "build edgeflag-host with the RTL DUT and EF_FAULT_ROOKS"
+    tail -n 30 "$tmp/build_fault.log"; bad "build edgeflag-host with the RTL DUT and the planted fault rooks"
 fi
 # without the RTL DUT (a relink: the stub)
 if ! $MAKE -C "$root" --no-print-directory -j2 BUILD="$build" WITH_RTL_DUT=0 RTL_DUT_DIR="$build/host/rtl-none" \
@@ -76,7 +84,7 @@ for svg in stress_pixi_figure8.svg stress_pixi_fill_rule_multiple_holes.svg; do
         n=${svg%.svg}_$ns
         vec "$n" "$svg" "$ns" || continue
         start=$(date +%s%N)
-        "$H" verify "$n/vectors.bin" --transport sim --sim-dut rtl --results "$n.rtl" >"$n.out" 2>&1
+        "$H" verify "$n/vectors.bin" "${SIM[@]}" --sim-dut rtl --results "$n.rtl" >"$n.out" 2>&1
         rc=$?
         ms=$((($(date +%s%N) - start) / 1000000))
         allzero=1 want="seg et_wr et_rd plot span pix"
@@ -88,7 +96,7 @@ for svg in stress_pixi_figure8.svg stress_pixi_fill_rule_multiple_holes.svg; do
             continue
         fi
         # the model DUT's results: the RTL's must be the same bytes
-        "$H" verify "$n/vectors.bin" --transport sim --results "$n.model" >/dev/null 2>&1
+        "$H" verify "$n/vectors.bin" "${SIM[@]}" --results "$n.model" >/dev/null 2>&1
         if cmp -s "$n.model/vectors.actual.bin" "$n.rtl/vectors.actual.bin"; then
             ok "$svg at $ns: the RTL DUT's vectors.actual.bin is byte-identical to the model DUT's"
         else
@@ -99,7 +107,7 @@ done
 
 # ---------------------------------------------------------------- 2. a link fault
 n=stress_pixi_figure8_8
-"$H" verify "$n/vectors.bin" --transport sim --sim-dut rtl --sim-faults drop=2 --results drop >drop.out 2>&1
+"$H" verify "$n/vectors.bin" "${SIM[@]}" --sim-dut rtl --sim-faults drop=2 --results drop >drop.out 2>&1
 rc=$?
 again=$(sed -n 's/.*(\([0-9]*\) sent again).*/\1/p' drop.out | head -n 1)
 if [ $rc = 0 ] && grep -q 'edgeflag check: PASS' drop.out && [ "${again:-0}" -ge 1 ] &&
@@ -111,10 +119,10 @@ fi
 
 # unplugged mid-commands, then --resume: the board's state (--sim-state) is replayed into a
 # fresh RTL, and the results are the same bytes as an uninterrupted run
-"$H" verify "$n/vectors.bin" --transport sim --sim-dut rtl --sim-state st --sim-faults unplug=4 --frame-cmds 20 \
+"$H" verify "$n/vectors.bin" "${SIM[@]}" --sim-dut rtl --sim-state st --sim-faults unplug=4 --frame-cmds 20 \
     --results res >unplug.out 2>&1
 rc1=$?
-"$H" verify "$n/vectors.bin" --transport sim --sim-dut rtl --sim-state st --resume --frame-cmds 20 \
+"$H" verify "$n/vectors.bin" "${SIM[@]}" --sim-dut rtl --sim-state st --resume --frame-cmds 20 \
     --results res >resume.out 2>&1
 rc2=$?
 if [ $rc1 = 5 ] && grep -q 'went away' unplug.out && [ $rc2 = 0 ] && grep -q 'edgeflag check: PASS' resume.out &&
@@ -126,7 +134,7 @@ fi
 
 # ---------------------------------------------------------------- 3. a planted RTL fault
 if [ -x "$HF" ]; then
-    "$HF" verify "$n/vectors.bin" --transport sim --sim-dut rtl --results fault --errors 100000 >fault.out 2>&1
+    "$HF" verify "$n/vectors.bin" "${SIM[@]}" --sim-dut rtl --results fault --errors 100000 >fault.out 2>&1
     rc=$?
     p=$(grep -c "^fault/vectors.actual.bin: record [0-9]* (byte offset [0-9]*): plot: cycle" fault.out)
     up="$(nmis fault.out seg)$(nmis fault.out et_wr)"
@@ -135,16 +143,16 @@ if [ -x "$HF" ]; then
                 fault.out | sort -n | head -n 1)
     if [ $rc = 1 ] && [ -n "$p" ] && [ "$p" -gt 0 ] && [ "$up" = 00 ] && [ "${first#* }" = plot ] &&
        grep -q 'edgeflag check: FAIL' fault.out; then
-        ok "EF_FAULT_ROOKS in the RTL: verify exit 1, $p mismatches on plot, the earliest at cycle ${first% *} on plot, none on seg or et_wr ($(grep -m1 ": plot: cycle ${first% *}" fault.out | cut -d: -f3- | cut -c1-160))"
+        ok "the planted RTL fault rooks (dv/faults/rooks.sed): verify exit 1, $p mismatches on plot, the earliest at cycle ${first% *} on plot, none on seg or et_wr ($(grep -m1 ": plot: cycle ${first% *}" fault.out | cut -d: -f3- | cut -c1-160))"
     else
-        bad "EF_FAULT_ROOKS in the RTL was not caught on plot" "exit $rc, plot '$p', seg+et_wr '$up', first '$first'; $(head -n 20 fault.out)"
+        bad "the planted RTL fault rooks (dv/faults/rooks.sed) was not caught on plot" "exit $rc, plot '$p', seg+et_wr '$up', first '$first'; $(head -n 20 fault.out)"
     fi
 fi
 
 # ---------------------------------------------------------------- 4. errors
 vec wide stress_pixi_figure8.svg 8 1100x40 &&
 {
-    "$H" verify wide/vectors.bin --transport sim --sim-dut rtl --results wide.r >wide.out 2>wide.err
+    "$H" verify wide/vectors.bin "${SIM[@]}" --sim-dut rtl --results wide.r >wide.out 2>wide.err
     rc=$?
     if [ $rc = 3 ] && grep -q 'does not fit this board.*canvas up to 1024x1024' wide.err && [ ! -e wide.r/vectors.actual.bin ]; then
         ok "a 1100x40 canvas with the RTL DUT: exit 3, $(head -n 1 wide.err | cut -c1-200)"
@@ -158,7 +166,7 @@ awk 'BEGIN { printf "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"64\" heig
                                              24 + (i % 2 ? 20 : 10) * sin(6.2831853 * i / 34000)
              print " Z\" fill=\"red\"/></svg>" }' >many.svg
 if "$E" vectors many.svg -o many --samples 8 >many.log 2>&1; then
-    "$H" verify many/vectors.bin --transport sim --sim-dut rtl --results many.r >many.out 2>many.err
+    "$H" verify many/vectors.bin "${SIM[@]}" --sim-dut rtl --results many.r >many.out 2>many.err
     rc=$?
     if [ $rc = 6 ] && grep -q "code 16: a shape of more EDGE commands than the RTL's E_MAX (32768)" many.err &&
        [ ! -e many.r/vectors.actual.bin ]; then
@@ -169,7 +177,7 @@ if "$E" vectors many.svg -o many --samples 8 >many.log 2>&1; then
 else
     cat many.log; bad "edgeflag vectors of a 34000-edge shape"
 fi
-"$H" verify "$n/vectors.bin" --transport sim --sim-dut verilog >usage.out 2>usage.err
+"$H" verify "$n/vectors.bin" "${SIM[@]}" --sim-dut verilog >usage.out 2>usage.err
 rc=$?
 if [ $rc = 2 ] && grep -q -- '--sim-dut must be model or rtl' usage.err; then
     ok "--sim-dut verilog: exit 2, $(cat usage.err | head -n 1)"
@@ -177,7 +185,7 @@ else
     bad "--sim-dut verilog" "exit $rc; $(cat usage.err)"
 fi
 if [ -x "$HN" ]; then
-    "$HN" verify "$n/vectors.bin" --transport sim --sim-dut rtl --results none >none.out 2>none.err
+    "$HN" verify "$n/vectors.bin" "${SIM[@]}" --sim-dut rtl --results none >none.out 2>none.err
     rc=$?
     if [ $rc = 7 ] && grep -q 'make host-rtl' none.err && "$HN" --version | grep -q 'sim-dut rtl: not built in'; then
         ok "built without the RTL DUT: --sim-dut rtl exit 7, $(head -n 1 none.err | cut -c1-160); --version says not built in"

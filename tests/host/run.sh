@@ -18,6 +18,8 @@ set -u
 export LC_ALL=C
 build=${1:?usage: tests/host/run.sh BUILD_DIR}
 root=$(cd "$(dirname "$0")/../.." && pwd)
+# shellcheck source=tests/host/waits.sh disable=SC1091
+. "$root/tests/host/waits.sh"
 case $build in /*) ;; *) build=$PWD/$build ;; esac
 E=$build/edgeflag H=$build/edgeflag-host
 SVG=${EF_SVG:-$root/tests/data/svg}
@@ -33,12 +35,17 @@ cd "$tmp" || exit 1
 ALL=cmd,seg,et_wr,et_rd,plot,span,pix
 "$E" vectors --help | grep -q 'seg' || ALL=cmd,edge,et_wr,et_rd,plot,span,pix
 INTERNAL=${ALL#cmd,}
+# The simulated board works inside the host's reads and writes (a whole frame of the model at a
+# FRAME_END), so a busy machine stretches the time between two ACKs: every run gets a generous
+# --timeout (tests/host/waits.sh); only the stall, whose timeout is what it tests, a short one
+# after it (the last --timeout given wins).
+SIM=(--transport sim --timeout "$EF_LINK_MS")
 
 # run NAME EXPECTED_EXIT STDERR_REGEX -- COMMAND...: the exit code and a line of the message
 run() {
     local name=$1 want=$2 re=$3
     shift 4
-    timeout 120 "$@" >out.txt 2>err.txt
+    timeout "$EF_GUARD_S" "$@" >out.txt 2>err.txt
     local rc=$?
     if [ "$rc" = "$want" ] && { [ -z "$re" ] || grep -Eq "$re" err.txt; }; then
         ok "$name"
@@ -55,15 +62,15 @@ json() { sed -n 's/.*"'"$1"'": \([0-9]*\).*/\1/p' out.txt | tail -1; }
 "$E" vectors "$SVG/tiger.svg" -o tiger --size 200x150 --samples 32 --formats bin >/dev/null 2>&1
 for v in small holes tiger; do
     run "verify $v over sim: PASS on every interface" 0 'check: PASS: 6 comparisons' -- \
-        "$H" verify $v/vectors.bin --transport sim
+        "$H" verify $v/vectors.bin "${SIM[@]}"
 done
 cp tiger/board/vectors.actual.bin clean.bin
 run "stream: results in the default folder, summary line" 0 'commands in .* frames .* result records \(pix\)' -- \
-    "$H" stream small/vectors.bin --transport sim
+    "$H" stream small/vectors.bin "${SIM[@]}"
 [ -s small/board/vectors.actual.bin ] && [ ! -e small/board/.resume ] && [ ! -e small/board/.results.part ] &&
     ok "stream leaves vectors.actual.bin and no resume state" || bad "stream's results folder"
 run "--json summary with --quiet: nothing on stderr" 0 '' -- \
-    "$H" verify holes/vectors.bin --transport sim --quiet --json --results J
+    "$H" verify holes/vectors.bin "${SIM[@]}" --quiet --json --results J
 grep -q '"check": "pass"' out.txt && [ "$(grep -c . err.txt)" = 0 ] && ok "--json says pass, --quiet is quiet" ||
     bad "--json/--quiet" "$(cat out.txt err.txt | head -c 300)"
 grep -q $'\r' err.txt && bad "progress bar drawn when stderr is not a terminal" || ok "no progress bar on a pipe"
@@ -71,8 +78,8 @@ grep -q $'\r' err.txt && bad "progress bar drawn when stderr is not a terminal" 
 # --------------------------------------------------------------- 2. the fault matrix
 # faulty link or board, the run still completes with every frame taken once
 for f in drop=3 corrupt=4 drop=2,drop=3,corrupt=5 drop-reply=20 corrupt-reply=25 "drop-reply=7,corrupt-reply=9"; do
-    run "fault $f: recovered, PASS" 0 'check: PASS' -- "$H" verify tiger/vectors.bin --transport sim \
-        --frame-cmds 40 --timeout 200 --sim-faults "$f" --results F --json
+    run "fault $f: recovered, PASS" 0 'check: PASS' -- "$H" verify tiger/vectors.bin "${SIM[@]}" \
+        --frame-cmds 40 --sim-faults "$f" --results F --json
     case $f in drop=*|corrupt=*)
         [ "$(json retransmits)" -gt 0 ] 2>/dev/null && ok "fault $f: frames were sent again" ||
             bad "fault $f: no retransmission counted" "$(cat out.txt)"
@@ -87,11 +94,11 @@ done
 for at in 5 60; do
     rm -rf S R
     run "unplug at host frame $at: exit 5, says --resume" 5 'went away.*--resume' -- "$H" verify tiger/vectors.bin \
-        --transport sim --frame-cmds 40 --timeout 200 --sim-state S --results R --sim-faults unplug=$at
+        "${SIM[@]}" --frame-cmds 40 --sim-state S --results R --sim-faults unplug=$at
     [ -s R/.resume ] && [ ! -e R/vectors.actual.bin ] && ok "unplug at $at: resume state kept, no results file" ||
         bad "unplug at $at: results folder" "$(ls -a R)"
     run "resume after unplug at $at: PASS" 0 'check: PASS: 6 comparisons' -- "$H" verify tiger/vectors.bin \
-        --transport sim --frame-cmds 40 --timeout 200 --sim-state S --results R --resume --json
+        "${SIM[@]}" --frame-cmds 40 --sim-state S --results R --resume --json
     [ "$(json resumed_from_frame)" -gt 0 ] 2>/dev/null && ok "resume at $at continued mid-stream" ||
         bad "resume at $at started over" "$(cat out.txt)"
     cmp -s R/vectors.actual.bin clean.bin && ok "resume at $at: results byte-identical to a clean run" ||
@@ -99,17 +106,17 @@ for at in 5 60; do
 done
 # the host killed (SIGKILL) at some moment of a long run; the board (its state in S) lives on
 "$E" vectors "$SVG/tiger.svg" -o big --size 640x480 --formats bin >/dev/null 2>&1
-"$H" stream big/vectors.bin --transport sim --interfaces pix,span --results BC --quiet
+"$H" stream big/vectors.bin "${SIM[@]}" --interfaces pix,span --results BC --quiet
 for delay in 0.15 0.3 0.45; do
     rm -rf S R
-    timeout -s KILL $delay "$H" stream big/vectors.bin --transport sim --interfaces pix,span --frame-cmds 100 \
+    timeout -s KILL $delay "$H" stream big/vectors.bin "${SIM[@]}" --interfaces pix,span --frame-cmds 100 \
         --sim-state S --results R --quiet >/dev/null 2>&1
     krc=$?
     if [ -e R/.resume ]; then
-        "$H" stream big/vectors.bin --transport sim --interfaces pix,span --frame-cmds 100 --sim-state S \
+        "$H" stream big/vectors.bin "${SIM[@]}" --interfaces pix,span --frame-cmds 100 --sim-state S \
             --results R --resume --quiet --json >out.txt 2>err.txt
     else
-        "$H" stream big/vectors.bin --transport sim --interfaces pix,span --frame-cmds 100 --sim-state S \
+        "$H" stream big/vectors.bin "${SIM[@]}" --interfaces pix,span --frame-cmds 100 --sim-state S \
             --results R --quiet --json >out.txt 2>err.txt
     fi
     rrc=$?
@@ -120,56 +127,58 @@ done
 
 rm -rf S R
 run "stall past the timeout: exit 5 after 4 tries" 5 'stopped answering.*--resume' -- "$H" verify \
-    tiger/vectors.bin --transport sim --frame-cmds 40 --timeout 50 --sim-state S --results R --sim-faults stall=8
-run "resume after the stall: PASS" 0 'check: PASS' -- "$H" verify tiger/vectors.bin --transport sim \
-    --frame-cmds 40 --timeout 200 --sim-state S --results R --resume
+    tiger/vectors.bin "${SIM[@]}" --frame-cmds 40 --timeout 50 --sim-state S --results R --sim-faults stall=8 --json
+if [ "$(json timeouts)" = 4 ]; then ok "the stall: the run ended after 4 timeouts in a row"; else
+    bad "the stall: not 4 timeouts" "$(cat out.txt)"; fi
+run "resume after the stall: PASS" 0 'check: PASS' -- "$H" verify tiger/vectors.bin "${SIM[@]}" \
+    --frame-cmds 40 --sim-state S --results R --resume
 cmp -s R/vectors.actual.bin clean.bin && ok "resume after stall: byte-identical" || bad "resume after stall: differs"
-run "board reset mid-run: exit 6" 6 'reset or lost its state' -- "$H" verify tiger/vectors.bin --transport sim \
-    --frame-cmds 40 --timeout 200 --sim-faults reset=30 --results R2
+run "board reset mid-run: exit 6" 6 'reset or lost its state' -- "$H" verify tiger/vectors.bin "${SIM[@]}" \
+    --frame-cmds 40 --sim-faults reset=30 --results R2
 rm -rf S R
-"$H" stream tiger/vectors.bin --transport sim --frame-cmds 40 --sim-state S --results R --sim-faults unplug=5 \
+"$H" stream tiger/vectors.bin "${SIM[@]}" --frame-cmds 40 --sim-state S --results R --sim-faults unplug=5 \
     >/dev/null 2>&1
 printf '\377\377\377\377' >>S/board.log    # the simulated board is power-cycled (docs/board.md 5.3)
 run "power-cycled board then --resume: exit 6, nothing to resume" 6 'no run to resume' -- "$H" verify \
-    tiger/vectors.bin --transport sim --frame-cmds 40 --sim-state S --results R --resume
+    tiger/vectors.bin "${SIM[@]}" --frame-cmds 40 --sim-state S --results R --resume
 run "another device (no magic): exit 6" 6 'did not answer identify as an edgeflag board' -- \
-    "$H" stream small/vectors.bin --transport sim --sim-faults not-ours=1
+    "$H" stream small/vectors.bin "${SIM[@]}" --sim-faults not-ours=1
 run "another protocol version: exit 6" 6 'protocol version 2' -- \
-    "$H" stream small/vectors.bin --transport sim --sim-faults protocol=2
+    "$H" stream small/vectors.bin "${SIM[@]}" --sim-faults protocol=2
 [ ! -e small/board/vectors.actual.bin ] && ok "a failed run leaves no earlier run's results looking complete" ||
     bad "an earlier run's vectors.actual.bin survived a failed run"
-run "bad --sim-faults: exit 2" 2 'is not KIND=N' -- "$H" stream small/vectors.bin --transport sim --sim-faults jam=1
+run "bad --sim-faults: exit 2" 2 'is not KIND=N' -- "$H" stream small/vectors.bin "${SIM[@]}" --sim-faults jam=1
 
 # --------------------------------------------------------------------- 3. wrong use
 rm -rf N
 run "--resume with nothing interrupted: exit 2" 2 'no resume state' -- \
-    "$H" stream small/vectors.bin --transport sim --results N --resume
+    "$H" stream small/vectors.bin "${SIM[@]}" --results N --resume
 rm -rf S R
-"$H" stream tiger/vectors.bin --transport sim --frame-cmds 40 --sim-state S --results R --sim-faults unplug=5 \
+"$H" stream tiger/vectors.bin "${SIM[@]}" --frame-cmds 40 --sim-state S --results R --sim-faults unplug=5 \
     >/dev/null 2>&1
 run "--resume with another vectors file's state: exit 2" 2 'another vectors file' -- \
-    "$H" stream small/vectors.bin --transport sim --sim-state S --results R --resume
+    "$H" stream small/vectors.bin "${SIM[@]}" --sim-state S --results R --resume
 run "auto with no board: exit 7, never the sim" 7 'no board found' -- "$H" stream small/vectors.bin
-run "missing vectors file: exit 3" 3 'nope.bin: No such file' -- "$H" stream nope.bin --transport sim
+run "missing vectors file: exit 3" 3 'nope.bin: No such file' -- "$H" stream nope.bin "${SIM[@]}"
 head -c 300 small/vectors.bin >trunc.bin
-run "truncated vectors.bin: exit 3, names the place" 3 'trunc.bin' -- "$H" stream trunc.bin --transport sim
+run "truncated vectors.bin: exit 3, names the place" 3 'trunc.bin' -- "$H" stream trunc.bin "${SIM[@]}"
 cp small/vectors.bin badcrc.bin
 printf '\x55' | dd of=badcrc.bin bs=1 seek=200 conv=notrunc 2>/dev/null
-run "vectors.bin with a bad record CRC: exit 3" 3 'badcrc.bin.*CRC' -- "$H" stream badcrc.bin --transport sim
+run "vectors.bin with a bad record CRC: exit 3" 3 'badcrc.bin.*CRC' -- "$H" stream badcrc.bin "${SIM[@]}"
 cp small/vectors.bin v2.bin
 printf '\x02' | dd of=v2.bin bs=1 seek=8 conv=notrunc 2>/dev/null
-run "vectors.bin of another format version: exit 3" 3 'v2.bin' -- "$H" stream v2.bin --transport sim
+run "vectors.bin of another format version: exit 3" 3 'v2.bin' -- "$H" stream v2.bin "${SIM[@]}"
 "$E" vectors "$SVG/stress_pixi_bowtie.svg" -o hex --size 32x24 --formats hex >/dev/null 2>&1
 run "a hex file: exit 3, asks for vectors.bin" 3 'not a binary vector stream' -- \
-    "$H" stream hex/cmd.stim.hex --transport sim
+    "$H" stream hex/cmd.stim.hex "${SIM[@]}"
 "$E" vectors "$SVG/stress_pixi_bowtie.svg" -o nocmd --size 32x24 --formats bin --interfaces pix >/dev/null 2>&1
-run "vectors.bin without cmd: exit 3" 3 'records no cmd' -- "$H" stream nocmd/vectors.bin --transport sim
+run "vectors.bin without cmd: exit 3" 3 'records no cmd' -- "$H" stream nocmd/vectors.bin "${SIM[@]}"
 : >blocker
 run "results folder blocked by a file: exit 4" 4 'cannot create the results folder' -- \
-    "$H" stream small/vectors.bin --transport sim --results blocker/sub
+    "$H" stream small/vectors.bin "${SIM[@]}" --results blocker/sub
 run "--interfaces without pix: exit 2" 2 'including pix' -- \
-    "$H" verify small/vectors.bin --transport sim --interfaces span
-run "unknown transport: exit 2" 2 'must be usb, gpio, sim' -- "$H" stream small/vectors.bin --transport tcp
+    "$H" verify small/vectors.bin "${SIM[@]}" --interfaces span
+run "unknown transport: exit 2" 2 'must be usb, gpio, serial, sim' -- "$H" stream small/vectors.bin --transport tcp
 # a board whose result differs: one pix payload bit changed in the expected file (CRCs
 # made right again by Python's zlib, an implementation of CRC-32 independent of ours)
 python3 - small/vectors.bin wrong.bin <<'EOF'
@@ -186,14 +195,14 @@ struct.pack_into('<I', b, 100, zlib.crc32(bytes(b[:100])))
 open(sys.argv[2], 'wb').write(b)
 EOF
 run "board result differs from the vectors: exit 1, named" 1 'check: pix: FAIL|FAIL' -- \
-    "$H" verify wrong.bin --transport sim --junit wrong.xml
+    "$H" verify wrong.bin "${SIM[@]}" --junit wrong.xml
 grep -q '<failure' wrong.xml 2>/dev/null && ok "verify --junit records the failure" || bad "verify --junit"
 
 # ---------------------------------------------------------------- 4. bench, list, version
 run "bench over null" 0 '' -- "$H" bench --transport null --mib 64
 grep -Eq '^null +sink +[0-9.]+ MB/s' out.txt && grep -q 'latency' out.txt && ok "bench null: sink MB/s and latency" ||
     bad "bench null output" "$(cat out.txt)"
-run "bench over sim" 0 '' -- "$H" bench --transport sim --mib 16 --json
+run "bench over sim" 0 '' -- "$H" bench "${SIM[@]}" --mib 16 --json
 grep -q '"sink": {"ran": true' out.txt && grep -q '"source": {"ran": true' out.txt &&
     grep -q '"loopback": {"ran": true' out.txt && ok "bench sim: sink, source, loopback ran" ||
     bad "bench sim output" "$(cat out.txt)"

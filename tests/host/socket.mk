@@ -3,11 +3,14 @@
 # from docs/board.md alone) and against sockboard (the board engine behind a unix socket).
 SOCKBOARD := $(BUILD)/tests/host/sockboard
 
-$(BUILD)/tests/host/sockboard.o: tests/host/sockboard.c
+# (and tests/host/serial.mk's ptyboard: the board engine behind a pseudo-terminal)
+PTYBOARD := $(BUILD)/tests/host/ptyboard
+
+$(SOCKBOARD:%=%.o) $(PTYBOARD:%=%.o): $(BUILD)/tests/host/%.o: tests/host/%.c
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(HOST_CPPFLAGS) $(CFLAGS_ALL) -c $< -o $@
 
-$(SOCKBOARD): $(BUILD)/tests/host/sockboard.o $(HOST_BOARD_OBJ) $(HOST_CLI_OBJ) $(LIB_A)
+$(SOCKBOARD) $(PTYBOARD): %: %.o $(HOST_BOARD_OBJ) $(HOST_CLI_OBJ) $(LIB_A)
 	$(CC) $(LDFLAGS_ALL) -o $@ $^ $(PNG_LIBS) $(EXPAT_LIBS) $(VEC_LIBS) -lz
 
 .PHONY: test-host-socket

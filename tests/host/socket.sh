@@ -12,12 +12,18 @@
 #      version and another device (6), a board that never answers identify (5);
 #   3. nobody listening (exit 7 naming the address), a malformed --connect (2);
 #   4. bench --transport socket against pyboard and against the engine (numbers printed).
+# Recovery is asserted by how it happened (the host's NAK, retransmission and timeout counts,
+# the board's gap, damage, duplicate and resend counters), never by how fast: every run that must
+# not time out gets a generous --timeout (tests/host/waits.sh, EF_TEST_TIMEOUT_SCALE), and only the
+# stall and the mute board, whose timeouts are what they test, get a short one.
 # usage: bash tests/host/socket.sh BUILD_DIR   (`make test-host-socket`)
 # Ends with "N passed, M failed"; exit status 0 only if nothing failed.
 set -u
 export LC_ALL=C
 build=${1:?usage: tests/host/socket.sh BUILD_DIR}
 root=$(cd "$(dirname "$0")/../.." && pwd)
+# shellcheck source=tests/host/waits.sh disable=SC1091
+. "$root/tests/host/waits.sh"
 case $build in /*) ;; *) build=$PWD/$build ;; esac
 E=$build/edgeflag H=$build/edgeflag-host SB=$build/tests/host/sockboard
 PY=${PYTHON:-python3}
@@ -42,26 +48,43 @@ stop_board() {
 trap 'stop_board; rm -rf "$tmp"' EXIT
 cd "$tmp" || exit 1
 
+# listening FILE: waits (up to EF_READY_S) until the board process $bpid has made FILE (its
+# port file or its socket), and says so; a board that died or never listens is a failure
+listening() {
+    local i
+    for ((i = 0; i < EF_READY_S * 20; i++)); do
+        [ -s "$1" ] || [ -S "$1" ] && return 0
+        kill -0 "$bpid" 2>/dev/null || break
+        sleep 0.05
+    done
+    bad "the board process is not listening ($1)" "$(head -c 400 board.err sockboard.err 2>/dev/null | tr '\n' ' ')"
+    return 1
+}
 # board ARGS...: pyboard on unix:$tmp/b.sock (or with --tcp 0: its port in $port); waits until it listens
 board() {
     stop_board
     rm -f b.sock port stats.txt
     "$PY" "$PYBOARD" --port-file port --stats stats.txt "$@" 2>board.err &
     bpid=$!
-    for _ in $(seq 100); do
-        [ -s port ] && break
-        sleep 0.05
-    done
+    listening port
     port=$(cat port 2>/dev/null)
 }
 # bstat KEY: the board's last counter line's KEY
 bstat() { tail -1 stats.txt 2>/dev/null | sed -n 's/.*"'"$1"'": \([0-9]*\).*/\1/p'; }
+# hstat KEY: the host's --json summary's KEY (the last run's)
+hstat() { sed -n 's/.*"'"$1"'": \([0-9]*\).*/\1/p' out.txt | tail -1; }
+# how NAME TEST...: a counter check, failing with both sides' counters
+how() {
+    local name=$1
+    shift
+    if "$@"; then ok "$name"; else bad "$name" "host: $(grep -o '"frames_sent.*timeouts": [0-9]*' out.txt); board: $(tail -1 stats.txt)"; fi
+}
 
 # run NAME EXPECTED_EXIT STDERR_REGEX -- COMMAND...
 run() {
     local name=$1 want=$2 re=$3
     shift 4
-    timeout 60 "$@" >out.txt 2>err.txt
+    timeout "$EF_GUARD_S" "$@" >out.txt 2>err.txt
     local rc=$?
     if [ "$rc" = "$want" ] && { [ -z "$re" ] || grep -Eq "$re" err.txt out.txt; }; then
         ok "$name"
@@ -80,7 +103,9 @@ same() { # NAME FILE: FILE is byte-identical to the simulated board's results
 "$H" verify tiger/vectors.bin --transport sim --frame-cmds 40 --quiet --results simres >/dev/null 2>&1
 cp simres/vectors.actual.bin sim.bin 2>/dev/null || : >sim.bin
 SOCK=unix:$tmp/b.sock
-LINK=(--transport socket --frame-cmds 40 --timeout 300)
+# runs that must not time out: a generous --timeout; a stall and a mute board: 300 ms
+LINK=(--transport socket --frame-cmds 40 --timeout "$EF_LINK_MS")
+SHORT=300
 
 # ------------------------------------------------------------------ 1. plain runs
 board --unix b.sock --vectors small/vectors.bin
@@ -88,10 +113,10 @@ run "verify over unix: against pyboard: PASS" 0 'check: PASS: 6 comparisons' -- 
     "$H" verify small/vectors.bin --transport socket --connect "$SOCK"
 board --unix b.sock --vectors tiger/vectors.bin
 run "verify the tiger over unix: (40 commands a frame): PASS" 0 'check: PASS: 6 comparisons' -- \
-    "$H" verify tiger/vectors.bin "${LINK[@]}" --connect "$SOCK" --results r0
+    "$H" verify tiger/vectors.bin "${LINK[@]}" --connect "$SOCK" --results r0 --json
 same "unix: results identical to the simulated board's" r0/vectors.actual.bin
-[ "$(bstat dup)" = 0 ] && [ "$(bstat naks)" = 0 ] && [ "$(bstat resets)" = 1 ] && ok "the board took every frame once, no NAK, one reset" ||
-    bad "clean run's board counters" "$(tail -1 stats.txt)"
+how "clean run: the board took every frame once, no NAK, one reset; the host sent nothing again, no timeout" \
+    [ "$(bstat dup)/$(bstat gap)/$(bstat bad)/$(bstat naks)/$(bstat resets)/$(hstat retransmits)/$(hstat timeouts)" = 0/0/0/0/1/0/0 ]
 board --tcp 0 --vectors tiger/vectors.bin
 run "verify the tiger over tcp:127.0.0.1:PORT: PASS" 0 'check: PASS: 6 comparisons' -- \
     "$H" verify tiger/vectors.bin "${LINK[@]}" --connect "tcp:127.0.0.1:$port" --results r1 --json
@@ -103,7 +128,7 @@ if [ -x "$SB" ]; then
     rm -f e.sock
     "$SB" "$tmp/e.sock" 2>sockboard.err &
     bpid=$!
-    for _ in $(seq 100); do [ -S e.sock ] && break; sleep 0.05; done
+    listening e.sock
     run "verify the tiger against the board engine behind a socket: PASS" 0 'check: PASS: 6 comparisons' -- \
         "$H" verify tiger/vectors.bin "${LINK[@]}" --connect "unix:$tmp/e.sock" --results r2
     same "engine behind a socket: results identical to the simulated board's" r2/vectors.actual.bin
@@ -115,14 +140,14 @@ if [ -x "$SB" ]; then
     rm -f e.sock
     "$SB" "$tmp/e.sock" 100001 2>sockboard.err &
     bpid=$!
-    for _ in $(seq 100); do [ -S e.sock ] && break; sleep 0.05; done
+    listening e.sock
     run "the engine's link cut mid-frame: exit 5" 5 'went away.*--resume' -- \
         "$H" verify tiger/vectors.bin "${LINK[@]}" --connect "unix:$tmp/e.sock" --results r4
     run "the engine's link cut mid-frame: --resume: PASS" 0 'check: PASS: 6 comparisons' -- \
         "$H" verify tiger/vectors.bin "${LINK[@]}" --connect "unix:$tmp/e.sock" --results r4 --resume
     same "the engine's link cut mid-frame: results identical to the simulated board's" r4/vectors.actual.bin
     run "bench against the engine behind a socket" 0 'sink|source|loopback' -- \
-        "$H" bench --transport socket --connect "unix:$tmp/e.sock" --mib 16
+        "$H" bench --transport socket --connect "unix:$tmp/e.sock" --mib 16 --timeout "$EF_LINK_MS"
     sed 's/^/# engine: /' out.txt
     stop_board
 else
@@ -130,42 +155,68 @@ else
 fi
 
 # ------------------------------------------------------------------ 2. faults
-# fault NAME FLAG N WANT REGEX: pyboard plays FLAG N; the host exits WANT saying REGEX; a
-# resumable failure is resumed; the results must equal the simulated board's either way
+# fault NAME FLAG N WANT REGEX [TIMEOUT_MS]: pyboard plays FLAG N; the host exits WANT saying REGEX
+# (its --json summary in out.txt, the board's counters in stats.txt, for the caller to ask how);
+# a resumable failure is resumed; the results must equal the simulated board's either way
 fault() {
-    local name=$1 flag=$2 n=$3 want=$4 re=$5
+    local name=$1 flag=$2 n=$3 want=$4 re=$5 ms=${6:-$EF_LINK_MS}
     board --unix b.sock --vectors tiger/vectors.bin "$flag" "$n"
     rm -rf rf
-    run "$name: exit $want" "$want" "$re" -- "$H" verify tiger/vectors.bin "${LINK[@]}" --connect "$SOCK" --results rf
+    run "$name: exit $want" "$want" "$re" -- "$H" verify tiger/vectors.bin "${LINK[@]}" --timeout "$ms" \
+        --connect "$SOCK" --results rf --json
+    cp out.txt fault.json
     if [ "$want" = 5 ]; then
         [ -e rf/vectors.actual.bin ] && bad "$name: a failed run left vectors.actual.bin"
         run "$name: --resume: PASS" 0 'check: PASS' -- \
-            "$H" verify tiger/vectors.bin "${LINK[@]}" --connect "$SOCK" --results rf --resume
+            "$H" verify tiger/vectors.bin "${LINK[@]}" --connect "$SOCK" --results rf --resume --json
+        how "$name: --resume went on from where the board was (frame > 0), with no timeout" \
+            [ "$(hstat resumed_from_frame)" -gt 0 ] && [ "$(hstat timeouts)" = 0 ]
     fi
     if [ "$want" = 0 ] || [ "$want" = 5 ]; then
         same "$name: results identical to the simulated board's" rf/vectors.actual.bin
         [ "$(bstat resets)" = 1 ] && ok "$name: the board was reset once (the first run's start only)" ||
             bad "$name: board resets" "$(tail -1 stats.txt)"
     fi
+    cp fault.json out.txt
 }
+# a frame to the board lost or damaged: the board NAKs the frame it expects, the host goes back to
+# it (retransmits), no timeout (docs/board.md 4.1)
 fault "a host frame dropped" --drop 5 0 'PASS'
-[ "$(bstat gap)" -ge 1 ] && ok "the dropped frame: the board saw the gap" || bad "drop: no gap seen" "$(tail -1 stats.txt)"
+how "the dropped frame: the board saw the gap and NAKed it, the host sent again from there, no timeout" \
+    [ "$(bstat gap)" -ge 1 ] && [ "$(bstat naks)" -ge 1 ] && [ "$(bstat bad)" = 0 ] && [ "$(hstat naks)" -ge 1 ] &&
+    [ "$(hstat retransmits)" -ge 1 ] && [ "$(hstat timeouts)" = 0 ]
 fault "a host frame corrupted" --corrupt 5 0 'PASS'
-[ "$(bstat bad)" -ge 1 ] && ok "the corrupted frame: the board saw damage" || bad "corrupt: no damage" "$(tail -1 stats.txt)"
+how "the corrupted frame: the board saw damage and NAKed it, the host sent again from there, no timeout" \
+    [ "$(bstat bad)" -ge 1 ] && [ "$(bstat naks)" -ge 1 ] && [ "$(hstat naks)" -ge 1 ] &&
+    [ "$(hstat retransmits)" -ge 1 ] && [ "$(hstat timeouts)" = 0 ]
+# a frame to the host lost or damaged: the host sees the next one's gap and asks for every result
+# again (ACKR with RESEND): the board sends copies, the board's frames were all taken once
 fault "a reply dropped" --drop-reply 3 0 'PASS'
+how "the dropped reply: asked again, the board sent copies (board frames > results), nothing resent to it, no timeout" \
+    [ "$(bstat board_frames)" -gt "$(bstat results_made)" ] && [ "$(bstat dup)/$(bstat naks)" = 0/0 ] &&
+    [ "$(hstat retransmits)/$(hstat timeouts)" = 0/0 ]
 fault "a reply corrupted" --corrupt-reply 3 0 'PASS'
+how "the corrupted reply: asked again, the board sent copies, nothing resent to it, no timeout" \
+    [ "$(bstat board_frames)" -gt "$(bstat results_made)" ] && [ "$(bstat dup)/$(bstat naks)" = 0/0 ] &&
+    [ "$(hstat retransmits)/$(hstat timeouts)" = 0/0 ]
 fault "the connection closed mid-commands" --disconnect 6 5 'went away.*--resume'
+how "closed mid-commands: the host saw the link go, no timeout" [ "$(hstat timeouts)" = 0 ]
 fault "the connection closed mid-results" --disconnect-reply 4 5 'went away.*--resume'
-fault "a stall" --stall 6 5 'stopped answering.*--resume'
+how "closed mid-results: the host saw the link go, no timeout" [ "$(hstat timeouts)" = 0 ]
+# the stall's timeout is what it tests: a short one, four of them in a row end the run
+fault "a stall" --stall 6 5 'stopped answering.*--resume' "$SHORT"
+how "the stall: the run ended after 4 timeouts in a row" [ "$(hstat timeouts)" = 4 ]
 # (late enough that frames were acknowledged: a reset before any ACK is a legitimate fresh start)
 fault "a board reset mid-run" --reset 60 6 'reset or lost its state'
+how "the reset: the board's NAK asked for a frame it had acknowledged, no timeout" \
+    [ "$(hstat naks)" -ge 1 ] && [ "$(hstat timeouts)" = 0 ]
 fault "another protocol version" --protocol 2 6 'protocol version 2'
 board --unix b.sock --vectors tiger/vectors.bin --not-ours
 run "another device: exit 6" 6 'did not answer identify as an edgeflag board' -- \
     "$H" verify tiger/vectors.bin "${LINK[@]}" --connect "$SOCK" --results rn
 board --unix b.sock --vectors tiger/vectors.bin --mute
-run "a board that never answers identify: exit 5 after four tries" 5 'no identify reply in 4 tries of 300 ms' -- \
-    "$H" verify tiger/vectors.bin "${LINK[@]}" --connect "$SOCK" --results rm
+run "a board that never answers identify: exit 5 after four tries" 5 "no identify reply in 4 tries of $SHORT ms" -- \
+    "$H" verify tiger/vectors.bin "${LINK[@]}" --timeout "$SHORT" --connect "$SOCK" --results rm
 stop_board
 
 # ------------------------------------------------------------------ 3. nobody there, bad address
@@ -185,7 +236,7 @@ run "socket without --connect: exit 2" 2 'needs --connect' -- \
 # ------------------------------------------------------------------ 4. bench
 board --unix b.sock
 run "bench --transport socket against pyboard" 0 'sink|source|loopback' -- \
-    "$H" bench --transport socket --connect "$SOCK" --mib 4
+    "$H" bench --transport socket --connect "$SOCK" --mib 4 --timeout "$EF_LINK_MS"
 sed 's/^/# pyboard: /' out.txt
 stop_board
 

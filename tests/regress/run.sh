@@ -5,7 +5,9 @@
 #   2. a shard killed mid-run and a shard never started show as missing, never as passed;
 #   3. a DUT that gets one pixel wrong, one that never writes pix.actual.hex, and one that hangs
 #      past --timeout fail, with the case's seed and first mismatch line in the summary;
-#   4. shards of another seed (or level) are refused by the merge.
+#   4. shards of another seed (or level) are refused by the merge;
+#   5. the DUT's limits: runs over --dut-limits/--dut-edges are refused by name before any
+#      simulation, and a DUT's own REFUSED is quoted; both counted apart from failures.
 # usage: bash tests/regress/run.sh BUILD_DIR   (`make test-regress`)
 # Ends with "N passed, M failed"; exit status 0 only if nothing failed.
 set -u
@@ -100,6 +102,38 @@ nt=$(grep -c '	timeout	' T/shard_9_of_130/cases.tsv)
 nr=$(grep -c '^[0-9]' T/shard_9_of_130/cases.tsv)
 [ $trc = 1 ] && [ "$nt" = "$nr" ] && [ "$nr" -gt 0 ] && grep -q '<error type="timeout"' T/shard_9_of_130/junit.xml &&
     ok "a DUT that hangs: every run a timeout after --timeout 1 ($nt runs), JUnit errors" || bad "timeout" "exit $trc, $nt of $nr"
+
+# ------------------------------------------------------------ 5. the DUT's limits
+# Level 1 in 4 shards for a DUT of 64x64 pixels and 200 edges a shape: the cases over it are
+# refused by name before any simulation, counted apart, and the merge passes.
+parallel --halt never -j2 "$SHARD" --out L --shard {}/4 --dut-limits 64x64 --dut-edges 200 ::: 1 2 3 4 >lpar.log 2>&1
+lprc=$?
+"$MERGE" L >lmerge.out 2>&1
+lmrc=$?
+# cases.tsv: case samples rule seed verdict seconds first
+refs() { cat L/shard_*_of_4/cases.tsv | awk -F'\t' -v re="$1" '$5 == "refused" && $7 ~ re { n++ } END { print n + 0 }'; }
+nref=$(refs '^refused before simulation: ')
+ncanvas=$(refs "^refused before simulation: canvas [0-9]+x[0-9]+ over the DUT's 64x64\$")
+nedges=$(refs "^refused before simulation: a shape of [0-9]+ edges over the DUT's 200\$")
+if [ $lprc = 0 ] && [ $lmrc = 0 ] && [ "$nref" -gt 0 ] && [ "$ncanvas" -gt 0 ] && [ "$nedges" -gt 0 ] &&
+    grep -q "^runs: $ncases in 4 of 4 shards; failed: 0; refused (do not fit the DUT, not failures): $nref;" L/merged/summary.txt &&
+    grep -q '^REFUSED runs' L/merged/summary.txt && grep -q '^RESULT: PASS' L/merged/summary.txt &&
+    xmllint --noout L/merged/junit.xml && [ "$(grep -c '<skipped message="refused before simulation' L/merged/junit.xml)" = "$nref" ]; then
+    ok "the DUT's limits (64x64, 200 edges): $nref of $ncases runs refused by name before simulation ($ncanvas canvas, $nedges edges), counted apart, JUnit skipped, merge PASS"
+else
+    bad "DUT limits" "parallel $lprc, merge $lmrc, $nref refused ($ncanvas canvas, $nedges edges); $(grep -E '^runs|^RESULT' L/merged/summary.txt)"
+fi
+# A DUT that refuses a case itself (exit non-zero with its REFUSED line): refused, its own words quoted.
+"$SHARD" --out D --shard 9/130 --run 'echo "tb_raster: REFUSED cmd.stim.hex:5: FRAME canvas over the hardware W_MAX x H_MAX"; exit 1' >d.log 2>&1
+drc=$?
+nd=$(awk -F'\t' '$5 == "refused" && index($7, "the DUT refused it: tb_raster: REFUSED cmd.stim.hex:5: FRAME canvas over") == 1 { n++ }
+              END { print n + 0 }' D/shard_9_of_130/cases.tsv)
+nr=$(grep -c '^[0-9]' D/shard_9_of_130/cases.tsv)
+if [ $drc = 0 ] && [ "$nd" = "$nr" ] && [ "$nr" -gt 0 ] && grep -q "^refused	$nr$" D/shard_9_of_130/shard.meta; then
+    ok "a DUT that refuses a case itself: refused ($nd runs), quoting its REFUSED line, not a failure (exit 0)"
+else
+    bad "a refusing DUT" "exit $drc, $nd of $nr refused: $(tail -n 2 D/shard_9_of_130/cases.tsv)"
+fi
 
 # ------------------------------------------------------------ 4. shards that do not belong together
 mkdir -p X && cp -R R/shard_1_of_4 R/shard_2_of_4 R/shard_3_of_4 X/

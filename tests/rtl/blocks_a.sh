@@ -16,7 +16,7 @@
 # SystemVerilog package is checked by dv/tb/tb_ifaces_pkg.sv.  Lint:
 # verilator --lint-only -Wall and iverilog -g2005 -Wall silent for every
 # block at NS 8/16/32.  Negative control: the divider without its floor
-# correction (-DEF_FAULT_DIV_FLOOR) must fail with the first mismatch on
+# correction (the RTL variant dv/faults/div_floor.sed) must fail with the first mismatch on
 # et_wr with a quotient field marked: x or qs (the fault skips the quotient's
 # correction in both lanes; which one shows first depends on the first edge
 # whose remainder needs it).
@@ -43,11 +43,11 @@ lint_a() {
         [ -f "${files%% *}" ] || continue
         if [ $have_vl = 1 ]; then
             # shellcheck disable=SC2086
-            out=$(verilator --lint-only -Wall $g --top-module $top $files 2>&1)
+            out=$(verilator --lint-only -Wall -I"$RTLA" $g --top-module $top $files 2>&1)
             [ -z "$out" ] || { echo "$out"; echo "RESULT FAIL lint $top NS=$ns: verilator -Wall is not silent"; return; }
         fi
         # shellcheck disable=SC2086
-        out=$(iverilog -g2005 -Wall $(echo "$g" | sed "s/-G/-P$top./g") -s $top -o /dev/null $files 2>&1)
+        out=$(iverilog -g2005 -Wall -I"$RTLA" $(echo "$g" | sed "s/-G/-P$top./g") -s $top -o /dev/null $files 2>&1)
         [ -z "$out" ] || { echo "$out"; echo "RESULT FAIL lint $top NS=$ns: iverilog -g2005 -Wall is not silent"; return; }
     done
     echo "RESULT PASS lint ef_dec, ef_setup + ef_div, ef_etm NS=$ns: verilator -Wall and iverilog -g2005 -Wall silent"
@@ -55,10 +55,11 @@ lint_a() {
 for ns in 8 16 32; do submit "lint_a_$ns" lint_a "$ns"; done
 
 # ------------------------------------------------------- block benches
-# blk_run SIM TB D NS OUT_IFACE [defines]: build and run one bench on vector
-# set D; prints the bench's result line, returns 0 when it says PASS.
+# blk_run SIM TB D NS OUT_IFACE [FAULT]: build and run one bench on vector
+# set D (on the RTL variant with dv/faults/FAULT.sed when given); prints the
+# bench's result line, returns 0 when it says PASS.
 blk_run() {
-    local sim=$1 tb=$2 d=$3 ns=$4 out=$5 def=${6:-} files params=() o
+    local sim=$1 tb=$2 d=$3 ns=$4 out=$5 def=${6:-} files params=() o src=$RTLA
     local nc ns_ nw
     nc=$(count "$d/cmd.stim.hex"); ns_=$(count "$d/seg.expected.hex"); nw=$(count "$d/et_wr.expected.hex")
     case $tb in
@@ -71,6 +72,11 @@ blk_run() {
     esac
     o=$d/$sim-$tb$def
     mkdir -p "$o"
+    if [ -n "$def" ]; then
+        src=$o/rtl
+        bash "$root/dv/rtl-variant.sh" "$src" "$def" || { echo "$tb: FAIL the RTL variant $def"; return 1; }
+        files=${files//$RTLA/$src}
+    fi
     local plus=(+cmd="$d/cmd.stim.hex" +seg_in="$d/seg.expected.hex" +et_wr_in="$d/et_wr.expected.hex"
                 +plot="$d/plot.expected.hex" +et_rd_exp="$d/et_rd.expected.hex")
     case $tb in
@@ -82,20 +88,20 @@ blk_run() {
         local p=() kv
         for kv in "${params[@]}"; do p+=(-P"$tb.$kv"); done
         # shellcheck disable=SC2086
-        iverilog -g2005 -I"$inc" ${def:+-D$def} "${p[@]}" -o "$o/tb.vvp" "$TB/$tb.v" $files >"$o/build.log" 2>&1 ||
+        iverilog -g2005 -I"$inc" -I"$src" "${p[@]}" -o "$o/tb.vvp" "$TB/$tb.v" $files >"$o/build.log" 2>&1 ||
             { cat "$o/build.log"; echo "$tb: FAIL compile"; return 1; }
         vvp -n "$o/tb.vvp" "${plus[@]}" >"$o/sim" 2>&1
     else
         local g=() kv
         for kv in "${params[@]}"; do g+=(-G"$kv"); done
         # shellcheck disable=SC2086
-        verilator --binary --timing -Wno-fatal -Wno-WIDTH -I"$inc" ${def:+-D$def} --Mdir "$o/obj" --top-module "$tb" \
+        verilator --binary --timing -Wno-fatal -Wno-WIDTH -I"$inc" -I"$src" --Mdir "$o/obj" --top-module "$tb" \
             "${g[@]}" "$TB/$tb.v" $files -o tb >"$o/build.log" 2>&1 ||
             { tail -n 20 "$o/build.log"; echo "$tb: FAIL verilator build"; return 1; }
         "$o/obj/tb" "${plus[@]}" >"$o/sim" 2>&1
     fi
-    grep -E "^$tb: (PASS|FAIL)" "$o/sim" || { tail -n 5 "$o/sim"; echo "$tb: FAIL no result line"; }
-    grep -q "^$tb: PASS" "$o/sim"
+    grep -E "^$tb: (DONE|FAIL)" "$o/sim" || { tail -n 5 "$o/sim"; echo "$tb: FAIL no result line"; }
+    grep -q "^$tb: DONE" "$o/sim"
 }
 
 # blk NAME INPUT NS RULE SIMS [vectors options...]: vectors (hex), then DEC,
@@ -171,8 +177,8 @@ fault_div() {
     mkdir -p "$d"
     "$EF" vectors "$root/tests/data/svg/lion.svg" -o "$d" --samples 8 --size 40x30 --formats hex \
         --interfaces cmd,seg,et_wr,et_rd,plot >"$d/vectors.log" 2>&1 || { echo "RESULT FAIL fault-div: vectors"; return; }
-    blk_run iv tb_setup "$d" 8 et_wr EF_FAULT_DIV_FLOOR
-    out=$("$EF" check "$d/et_wr.expected.hex" "$d/iv-tb_setupEF_FAULT_DIV_FLOOR/et_wr.actual.hex" --cycles --errors 1 2>/dev/null)
+    blk_run iv tb_setup "$d" 8 et_wr div_floor
+    out=$("$EF" check "$d/et_wr.expected.hex" "$d/iv-tb_setupdiv_floor/et_wr.actual.hex" --cycles --errors 1 2>/dev/null)
     local rc=$?
     echo "$out"
     if [ $rc = 1 ] && echo "$out" | grep -Eq '^[^ ]*et_wr.actual.hex:[0-9]+: et_wr: cycle [0-9]+, .*fields differ: .*actual .* (x|qs)=-?[0-9]+\*'; then
@@ -194,13 +200,13 @@ refuse() {
     n=$(count "$d/cmd.stim.hex"); nw=$(count "$d/et_wr.expected.hex")
     nr=$(count "$d/et_rd.expected.hex"); np=$(count "$d/plot.expected.hex")
     # 1. FRAME 40x30 on a DEC built for W_MAX = 32
-    iverilog -g2005 -I"$inc" -Ptb_dec.NCMD="$n" -Ptb_dec.W_MAX=32 -o "$d/dec.vvp" "$TB/tb_dec.v" $A_DEC &&
+    iverilog -g2005 -I"$inc" -I"$RTLA" -Ptb_dec.NCMD="$n" -Ptb_dec.W_MAX=32 -o "$d/dec.vvp" "$TB/tb_dec.v" $A_DEC &&
         vvp -n "$d/dec.vvp" +cmd="$d/cmd.stim.hex" +seg="$d/seg.actual.hex" >"$d/sim1" 2>&1
     want="^tb_dec: FAIL $d/cmd.stim.hex: word 0 \\(line 5\\): FRAME 40x30 is over W_MAX x H_MAX = 32x16384\$"
     grep -Eq "$want" "$d/sim1" || { cat "$d/sim1"; echo "RESULT FAIL refuse: canvas over W_MAX not refused as expected"; return; }
     # 2. a shape of more than E_MAX = 4 edges
     # shellcheck disable=SC2086
-    iverilog -g2005 -I"$inc" -Ptb_etm.NWR="$nw" -Ptb_etm.NRD="$nr" -Ptb_etm.NPLOT="$np" -Ptb_etm.E_MAX=4 \
+    iverilog -g2005 -I"$inc" -I"$RTLA" -Ptb_etm.NWR="$nw" -Ptb_etm.NRD="$nr" -Ptb_etm.NPLOT="$np" -Ptb_etm.E_MAX=4 \
         -o "$d/etm.vvp" "$TB/tb_etm.v" $A_ETM &&
         vvp -n "$d/etm.vvp" +et_wr_in="$d/et_wr.expected.hex" +et_rd_exp="$d/et_rd.expected.hex" \
             +plot="$d/plot.expected.hex" +et_rd="$d/et_rd.actual.hex" >"$d/sim2" 2>&1
@@ -209,7 +215,7 @@ refuse() {
     # 3. commands 3 and 4 swapped: line 9 (word 4) has the smaller stamp
     awk '!/^\/\// { k++; if (k == 4) { held = $0; next } if (k == 5) { print; print held; next } } { print }' \
         "$d/cmd.stim.hex" >"$d/swapped.hex"
-    iverilog -g2005 -I"$inc" -Ptb_dec.NCMD="$n" -o "$d/dec2.vvp" "$TB/tb_dec.v" $A_DEC &&
+    iverilog -g2005 -I"$inc" -I"$RTLA" -Ptb_dec.NCMD="$n" -o "$d/dec2.vvp" "$TB/tb_dec.v" $A_DEC &&
         vvp -n "$d/dec2.vvp" +cmd="$d/swapped.hex" +seg="$d/seg2.actual.hex" >"$d/sim3" 2>&1
     grep -Eq "^tb_dec: FAIL $d/swapped.hex: word 4 \\(line 9\\): cycle stamp [0-9]+ does not increase" "$d/sim3" ||
         { cat "$d/sim3"; echo "RESULT FAIL refuse: stamps going backwards not refused as expected"; return; }

@@ -15,7 +15,8 @@
 #   4. refusals: a canvas over W_MAX, a shape over E_MAX edges and a stamp
 #      going backwards are refused by tb_raster naming the file and line,
 #      which the script finds independently (the line of the offending word);
-#   5. faults: each EF_FAULT_* build runs a case that exercises it; `edgeflag
+#   5. faults: each planted fault (dv/faults/NAME.sed, an RTL variant made by
+#      dv/rtl-variant.sh) runs a case that exercises it; `edgeflag
 #      check` must fail (exit 1) and its earliest reported mismatch must be on
 #      the fault's interface, at the cycle where a plain in-order comparison
 #      of the two hex files (awk, independent of edgeflag check) first
@@ -34,7 +35,12 @@ case $build in /*) ;; *) build=$PWD/$build ;; esac
 EF=$build/edgeflag
 TB=$root/dv/tb
 R=$root/rtl
-RTL="$R/ef_raster.v $R/ef_dec.v $R/ef_setup.v $R/ef_div.v $R/ef_etm.v $R/ef_aet.v $R/ef_plot.v $R/ef_slb_fill.v $R/ef_slb_ram.v $R/ef_cov.v"
+# rtl_files DIR: the whole pipeline's files in DIR (rtl/ or a variant's copy)
+rtl_files() {
+    local d=$1
+    echo "$d/ef_raster.v $d/ef_dec.v $d/ef_setup.v $d/ef_div.v $d/ef_etm.v $d/ef_aet.v $d/ef_plot.v $d/ef_slb_fill.v $d/ef_slb_ram.v $d/ef_cov.v"
+}
+RTL=$(rtl_files "$R")
 jobs=${EF_RTL_JOBS:-2}
 slice=${EF_RTL_SLICE:-11}
 # the hardware the cases run on (small: the gen slice's canvases fit)
@@ -78,31 +84,37 @@ collect() {
 # ---------------------------------------------------------------- 1. lint
 lint() {
     local ns=$1 out
-    out=$(verilator --lint-only -Wall -GNS="$ns" -GW_MAX=320 -GH_MAX=240 -GE_MAX=512 --top-module ef_raster $RTL 2>&1)
+    out=$(verilator --lint-only -Wall -I"$R" -GNS="$ns" -GW_MAX=320 -GH_MAX=240 -GE_MAX=512 --top-module ef_raster $RTL 2>&1)
     [ -z "$out" ] || { echo "$out" | head -20; echo "RESULT FAIL lint ef_raster NS=$ns: verilator -Wall is not silent"; return; }
-    out=$(iverilog -g2005 -Wall -Pef_raster.NS="$ns" -s ef_raster -o /dev/null $RTL 2>&1)
+    out=$(iverilog -g2005 -Wall -I"$R" -Pef_raster.NS="$ns" -s ef_raster -o /dev/null $RTL 2>&1)
     [ -z "$out" ] || { echo "$out" | head -20; echo "RESULT FAIL lint ef_raster NS=$ns: iverilog -Wall is not silent"; return; }
     echo "RESULT PASS lint ef_raster NS=$ns: verilator --lint-only -Wall and iverilog -g2005 -Wall silent"
 }
 for ns in 8 16 32; do submit "lint_$ns" lint $ns; done
 
 # ---------------------------------------------------------------- builds
-# build_iv NS [DEFINE]: one Icarus build per sample count (and fault)
+# build_iv NS [FAULT]: one Icarus build per sample count (and planted fault:
+# the RTL variant dv/rtl-variant.sh makes from dv/faults/FAULT.sed)
 build_iv() {
-    local ns=$1 def=${2:-} o=$work/iv_$1${2:+_$2}
+    local ns=$1 fault=${2:-} o=$work/iv_$1${2:+_$2} src=$R
     mkdir -p "$o"
-    iverilog -g2005 ${def:+-D$def} -o "$o/t.vvp" -Ptb_raster.NS="$ns" -Ptb_raster.W_MAX=$WM -Ptb_raster.H_MAX=$HM \
-        -Ptb_raster.E_MAX=$EM -Ptb_raster.FB_BITS=16 "$TB/tb_raster.v" $RTL &&
-        echo "RESULT PASS build icarus NS=$ns ${def}" || echo "RESULT FAIL build icarus NS=$ns $def"
+    if [ -n "$fault" ]; then
+        src=$o/rtl
+        bash "$root/dv/rtl-variant.sh" "$src" "$fault" || { echo "RESULT FAIL build icarus NS=$ns $fault: the variant"; return; }
+    fi
+    # shellcheck disable=SC2046 # the file list splits on purpose
+    iverilog -g2005 -I"$src" -o "$o/t.vvp" -Ptb_raster.NS="$ns" -Ptb_raster.W_MAX=$WM -Ptb_raster.H_MAX=$HM \
+        -Ptb_raster.E_MAX=$EM -Ptb_raster.FB_BITS=16 "$TB/tb_raster.v" $(rtl_files "$src") &&
+        echo "RESULT PASS build icarus NS=$ns ${fault}" || echo "RESULT FAIL build icarus NS=$ns $fault"
 }
 build_vl() {
     local ns=$1 o=$work/vl_$1
     mkdir -p "$o"
-    verilator --binary --timing -O1 -Wno-fatal -Wno-WIDTH --Mdir "$o/obj" --top-module tb_raster \
+    verilator --binary --timing -O1 -Wno-fatal -Wno-WIDTH -I"$R" --Mdir "$o/obj" --top-module tb_raster \
         -GNS="$ns" -GW_MAX=$WM -GH_MAX=$HM -GE_MAX=$EM -GFB_BITS=16 "$TB/tb_raster.v" $RTL >"$o/build.log" 2>&1 &&
         echo "RESULT PASS build verilator NS=$ns" || { tail -20 "$o/build.log"; echo "RESULT FAIL build verilator NS=$ns"; }
 }
-faults="EF_FAULT_ROOKS EF_FAULT_PAD EF_FAULT_TOPCLIP EF_FAULT_LASTEDGE EF_FAULT_DIV_FLOOR EF_FAULT_SB_RING EF_FAULT_FWD EF_FAULT_SPAN"
+faults="rooks pad topclip lastedge div_floor sb_ring fwd span"
 for ns in 8 16 32; do submit "build_vl_$ns" build_vl $ns; done
 for ns in 8 16 32; do submit "build_iv_$ns" build_iv $ns; done
 for f in $faults; do submit "build_iv_$f" build_iv 8 "$f"; done
@@ -153,16 +165,24 @@ collect
 
 # ---------------------------------------------------------------- 2. cases
 # run SIM NAME NS [bp SEED]
+# sim_run SIM NS PLUSARGS...: the NS build of SIM; its output, its exit status
+# (in a subshell with stderr closed: a Verilator $fatal aborts, and the shell
+# would say so)
+sim_run() {
+    local sim=$1 ns=$2; shift 2
+    if [ "$sim" = icarus ]; then ( vvp -n "$work/iv_$ns/t.vvp" "$@" 2>&1 ) 2>/dev/null
+    else ( "$work/vl_$ns/obj/Vtb_raster" "$@" 2>&1 ) 2>/dev/null; fi
+}
 run() {
-    local sim=$1 n=$2 ns=$3 bp=${4:-} v=$work/vec/$2 a=$work/act_$1_$2 mode=--cycles pa=() t0 t1 out
+    local sim=$1 n=$2 ns=$3 bp=${4:-} v=$work/vec/$2 a=$work/act_$1_$2 mode=--cycles pa=() t0 t1 out rc
     mkdir -p "$a"
     [ -n "$bp" ] && { pa+=(+bp="$bp"); mode=--transactions; }
     t0=$(date +%s.%N)
-    if [ "$sim" = icarus ]; then out=$(vvp -n "$work/iv_$ns/t.vvp" +cmd="$v/cmd.stim.hex" +out="$a/" "${pa[@]}" 2>&1)
-    else out=$("$work/vl_$ns/obj/Vtb_raster" +cmd="$v/cmd.stim.hex" +out="$a/" "${pa[@]}" 2>&1); fi
+    out=$(sim_run "$sim" "$ns" +cmd="$v/cmd.stim.hex" +out="$a" "${pa[@]}"); rc=$?
     t1=$(date +%s.%N)
     echo "$out"
-    echo "$out" | grep -q '^tb_raster: PASS' || { echo "RESULT FAIL $sim $n${bp:+ bp}: the bench did not pass"; return; }
+    { [ "$rc" = 0 ] && echo "$out" | grep -q '^tb_raster: DONE'; } ||
+        { echo "RESULT FAIL $sim $n${bp:+ bp}: the bench did not finish (exit $rc)"; return; }
     "$EF" check "$v" "$a" $mode --errors 5 || { echo "RESULT FAIL $sim $n${bp:+ bp}: edgeflag check $mode"; return; }
     cyc=$(echo "$out" | sed -n 's/.* \([0-9]*\) cycles.*/\1/p' | head -n 1)
     echo "RESULT PASS $sim $n${bp:+ (back-pressure seed $bp)}: edgeflag check $mode passes on seg, et_wr, et_rd, plot, span, pix ($cyc cycles, $(awk -v a="$t0" -v b="$t1" -v c="$cyc" 'BEGIN { printf "%.0f", c / (b - a) }') cycles/s)"
@@ -179,8 +199,8 @@ submit icarus_bp run icarus "$bpcase" "$bpns" 20070101
 submit verilator_bp run verilator "$bpcase" "$bpns" 424242
 
 # ---------------------------------------------------------------- 4. refusals
-refusal() {      # refusal KIND
-    local kind=$1 d=$work/ref_$1 src f line want out
+refusal() {      # refusal KIND SIM
+    local kind=$1 sim=$2 d=$work/ref_$1_$2 src f line want out rc
     mkdir -p "$d"; src=$work/vec/$bpcase/cmd.stim.hex; f=$d/cmd.stim.hex
     case $kind in
         canvas)   # the FRAME word (the first word) gets a width of W_MAX + 1
@@ -195,12 +215,59 @@ refusal() {      # refusal KIND
         edges)     line=$(grep -vn '^//' "$f" | sed -n "$((EM + 3))p" | cut -d: -f1); want="a shape of more EDGE commands than" ;;
         backwards) line=$(grep -vn '^//' "$f" | sed -n 3p | cut -d: -f1); want="cycle stamp does not increase" ;;
     esac
-    out=$(vvp -n "$work/iv_8/t.vvp" +cmd="$f" +out="$d/" 2>&1); echo "$out"
-    echo "$out" | grep -qF "tb_raster: REFUSED $f:$line: $want" &&
-        echo "RESULT PASS refusal $kind: tb_raster refuses it at $(basename "$f"):$line ($want ...)" ||
-        echo "RESULT FAIL refusal $kind: expected 'REFUSED $f:$line: $want'"
+    out=$(sim_run "$sim" 8 +cmd="$f" +out="$d"); rc=$?; echo "$out"
+    [ "$rc" != 0 ] && echo "$out" | grep -qF "tb_raster: REFUSED $f:$line: $want" &&
+        echo "RESULT PASS refusal $kind ($sim): tb_raster refuses it at $(basename "$f"):$line ($want ...), exit $rc" ||
+        echo "RESULT FAIL refusal $kind ($sim): expected 'REFUSED $f:$line: $want' and a non-zero exit (exit $rc)"
 }
-for k in canvas edges backwards; do submit "refusal_$k" refusal $k; done
+for k in canvas edges backwards; do
+    for sim in icarus verilator; do submit "refusal_${k}_$sim" refusal $k $sim; done
+done
+
+# Every other exit of the bench (docs/testing.md): non-zero with its FAIL
+# line for no +cmd, no +out, a command file that is missing or holds no
+# command, an output folder that cannot be written, a DUT not ready for a
+# command at its stamp; exit 0 with DONE on a good run, which writes exactly
+# the six dumps in +out and nothing in the working folder.
+exits() {        # exits SIM
+    local sim=$1 d=$work/exits_$1 src=$work/vec/$bpcase/cmd.stim.hex out rc k want args files
+    mkdir -p "$d/out" "$d/cwd" "$d/ro"; chmod 0555 "$d/ro"
+    printf '// no command here\n\n' >"$d/empty.hex"
+    # the first command after the first SHAPE_END stamped one cycle after
+    # it: the DUT is draining the shape then, so it is not ready
+    awk 'function hex(h,   k, v) { v = 0; for (k = 1; k <= length(h); k++) v = v * 16 + index("0123456789abcdef", tolower(substr(h, k, 1))) - 1; return v }
+         !/^\/\// && NF { if (late) { printf "%012x%s\n", stamp + 1, substr($0, 13); late = 0; next }
+                           if (substr($0, 13, 1) == "4" && !done) { stamp = hex(substr($0, 1, 12)); late = 1; done = 1 } }
+         { print }' "$src" >"$d/notready.hex"
+    cmp -s "$src" "$d/notready.hex" && { echo "RESULT FAIL exits ($sim): could not make the not-ready stream"; return; }
+    for k in nocmd noout missing empty unwritable notready good; do
+        case $k in
+            nocmd)      args=(+out="$d/out"); want="tb_raster: FAIL no +cmd=FILE" ;;
+            noout)      args=(+cmd="$src"); want="tb_raster: FAIL no +out=DIR" ;;
+            missing)    args=(+cmd="$d/no-such.hex" +out="$d/out"); want="tb_raster: FAIL cannot open $d/no-such.hex" ;;
+            empty)      args=(+cmd="$d/empty.hex" +out="$d/out"); want="tb_raster: FAIL $d/empty.hex holds no command" ;;
+            unwritable) args=(+cmd="$src" +out="$d/ro/no-such-dir"); want="tb_raster: FAIL cannot open $d/ro/no-such-dir/seg.actual.hex for writing" ;;
+            notready)   args=(+cmd="$d/notready.hex" +out="$d/out"); want="tb_raster: FAIL NS=8: " ;;
+            good)       args=(+cmd="$src" +out="$d/out"); want="tb_raster: DONE NS=8: " ;;
+        esac
+        rm -f "$d"/out/*
+        out=$(cd "$d/cwd" && sim_run "$sim" 8 "${args[@]}"); rc=$?
+        if ! printf '%s\n' "$out" | grep -qF "$want"; then
+            echo "$out" | tail -n 5; echo "RESULT FAIL exits ($sim) $k: no line '$want' (exit $rc)"; return
+        fi
+        if [ $k = good ]; then
+            files=$(cd "$d/out" && ls | tr '\n' ' ')
+            [ "$rc" = 0 ] && [ "$files" = "et_rd.actual.hex et_wr.actual.hex pix.actual.hex plot.actual.hex seg.actual.hex span.actual.hex " ] &&
+                [ -z "$(ls -A "$d/cwd")" ] ||
+                { echo "RESULT FAIL exits ($sim) good: exit $rc, wrote '$files' and '$(ls -A "$d/cwd")' in the working folder"; return; }
+        elif [ "$rc" = 0 ]; then
+            echo "RESULT FAIL exits ($sim) $k: '$want' but exit 0"; return
+        fi
+        echo "$k: exit $rc: $(printf '%s\n' "$out" | grep -F "$want" | head -n 1)"
+    done
+    echo "RESULT PASS exits ($sim): no +cmd, no +out, a missing or empty command file, an unwritable folder and a DUT not ready at a stamp exit non-zero with their FAIL line; a good run exits 0 (DONE) and writes only the six dumps in +out"
+}
+for sim in icarus verilator; do submit "exits_$sim" exits $sim; done
 
 # ---------------------------------------------------------------- 5. faults
 # first_diff DIR_EXPECTED DIR_ACTUAL: "IFACE CYCLE" of the earliest first
@@ -229,10 +296,10 @@ first_diff() {
             "$1/${i%:*}.expected.hex" "$2/${i%:*}.actual.hex"
     done | sort -k2,2n -k1,1 | head -n 1
 }
-fault() {        # fault DEFINE CASE IFACE FIELDS
+fault() {        # fault NAME CASE IFACE FIELDS
     local def=$1 n=$2 want_if=$3 fields=$4 v=$work/vec/$2 a=$work/fault_$1 rc rep got_if got_cyc ind
     mkdir -p "$a"
-    vvp -n "$work/iv_8_$def/t.vvp" +cmd="$v/cmd.stim.hex" +out="$a/" | tail -n 2
+    ( vvp -n "$work/iv_8_$def/t.vvp" +cmd="$v/cmd.stim.hex" +out="$a" 2>&1 | tail -n 2 ) 2>/dev/null
     "$EF" check "$v" "$a" --cycles --errors 100000 >"$a/check.out" 2>"$a/check.err"; rc=$?
     [ $rc = 1 ] || { echo "RESULT FAIL fault $def: edgeflag check exit $rc, expected 1"; return; }
     # the earliest reported mismatch
@@ -267,14 +334,14 @@ done
 for nm in outside-crossing slope-1-sample-per-row; do
     f=$(awk -F'\t' -v n=$nm '$5 == n { print $2 }' "$work/gen/index.tsv"); vectors "f_$nm" "$work/gen/$f" 8 scene -
 done
-submit fault_rooks     fault EF_FAULT_ROOKS     f_tiger plot q
-submit fault_pad       fault EF_FAULT_PAD       f_tiger_nz span mask,x,len,extra
-submit fault_topclip   fault EF_FAULT_TOPCLIP   f_outside-crossing et_wr r0,x,e,slot
-submit fault_lastedge  fault EF_FAULT_LASTEDGE  f_tiger plot -
-submit fault_divfloor  fault EF_FAULT_DIV_FLOOR f_tiger et_wr x,e,qs,rs
-submit fault_sbring    fault EF_FAULT_SB_RING   f_tiger et_wr x,e,qs,rs,dy
-submit fault_fwd       fault EF_FAULT_FWD       f_tiger span -
-submit fault_span      fault EF_FAULT_SPAN      f_tiger span len
+submit fault_rooks     fault rooks     f_tiger plot q
+submit fault_pad       fault pad       f_tiger_nz span mask,x,len,extra
+submit fault_topclip   fault topclip   f_outside-crossing et_wr r0,x,e,slot
+submit fault_lastedge  fault lastedge  f_tiger plot -
+submit fault_divfloor  fault div_floor f_tiger et_wr x,e,qs,rs
+submit fault_sbring    fault sb_ring   f_tiger et_wr x,e,qs,rs,dy
+submit fault_fwd       fault fwd       f_tiger span -
+submit fault_span      fault span      f_tiger span len
 collect
 
 echo "rtl-test: ${#cases[@]} cases in Verilator, $niv of them in Icarus; $(( $(date +%s) - t_start )) s"

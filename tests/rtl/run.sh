@@ -46,6 +46,7 @@ root=$(cd "$(dirname "$0")/../.." && pwd)
 case $build in /*) ;; *) build=$PWD/$build ;; esac
 EF=$build/edgeflag
 RTL="$root/rtl/ef_slb_fill.v $root/rtl/ef_slb_ram.v"
+RI=$root/rtl      # the include folder (ef_ifaces.vh, ef_ns.vh)
 TB=$root/dv/tb
 jobs=${EF_RTL_JOBS:-$(nproc 2>/dev/null || echo 2)}
 
@@ -120,10 +121,10 @@ expected_file() { [ "$2" = cmd ] && echo "$1/cmd.stim.hex" || echo "$1/$2.expect
 lint() {
     local ns=$1 w=$2 out
     if [ $have_vl = 1 ]; then
-        out=$(verilator --lint-only -Wall -GNS="$ns" -GW_MAX="$w" --top-module ef_slb_fill $RTL 2>&1)
+        out=$(verilator --lint-only -Wall -I"$RI" -GNS="$ns" -GW_MAX="$w" --top-module ef_slb_fill $RTL 2>&1)
         [ -z "$out" ] || { echo "$out"; echo "RESULT FAIL lint NS=$ns W_MAX=$w: verilator -Wall is not silent"; return; }
     fi
-    out=$(iverilog -g2005 -Wall -Pef_slb_fill.NS="$ns" -Pef_slb_fill.W_MAX="$w" -s ef_slb_fill -o /dev/null $RTL 2>&1)
+    out=$(iverilog -g2005 -Wall -I"$RI" -Pef_slb_fill.NS="$ns" -Pef_slb_fill.W_MAX="$w" -s ef_slb_fill -o /dev/null $RTL 2>&1)
     [ -z "$out" ] || { echo "$out"; echo "RESULT FAIL lint NS=$ns W_MAX=$w: iverilog -g2005 -Wall is not silent"; return; }
     if [ $have_vl = 1 ]; then
         echo "RESULT PASS lint NS=$ns W_MAX=$w: verilator --lint-only -Wall and iverilog -g2005 -Wall silent"
@@ -233,14 +234,14 @@ slb() {
         --interfaces cmd,plot,span "$@" >"$d/vectors.log" 2>&1 ||
         { cat "$d/vectors.log"; echo "RESULT FAIL slb $name: edgeflag vectors"; return; }
     np=$(count "$d/plot.expected.hex"); nc=$(count "$d/cmd.stim.hex")
-    iverilog -g2005 -o "$d/slb.vvp" -Ptb_slb_fill.NS="$ns" -Ptb_slb_fill.NPLOT="$np" \
+    iverilog -g2005 -I"$RI" -o "$d/slb.vvp" -Ptb_slb_fill.NS="$ns" -Ptb_slb_fill.NPLOT="$np" \
         -Ptb_slb_fill.NCMD="$nc" "$TB/tb_slb_fill.v" $RTL ||
         { echo "RESULT FAIL slb $name: compile"; return; }
     vvp -n "$d/slb.vvp" +plot="$d/plot.expected.hex" +cmd="$d/cmd.stim.hex" \
         +span="$d/span.actual.hex" >"$d/sim" 2>&1
     cat "$d/sim"
-    sim=$(grep -E '^tb_slb_fill: (PASS|FAIL)' "$d/sim")
-    [ "${sim#tb_slb_fill: PASS}" != "$sim" ] || { echo "RESULT FAIL slb $name: testbench"; return; }
+    sim=$(grep -E '^tb_slb_fill: (DONE|FAIL)' "$d/sim")
+    [ "${sim#tb_slb_fill: DONE}" != "$sim" ] || { echo "RESULT FAIL slb $name: testbench"; return; }
     "$EF" check "$d/span.expected.hex" "$d/span.actual.hex" --cycles ||
         { "$EF" check "$d/span.expected.hex" "$d/span.actual.hex" --transactions >/dev/null 2>&1 &&
               echo "RESULT FAIL slb $name: --cycles fails but --transactions passes (timing differs)" ||
@@ -287,12 +288,12 @@ slb_vl() {
     "$EF" vectors "$tiger" -o "$d" --samples "$ns" --rule "$rule" --size 160x120 --formats hex \
         --interfaces cmd,plot,span >"$d/vectors.log" 2>&1 || { echo "RESULT FAIL slb/verilator: vectors"; return; }
     np=$(count "$d/plot.expected.hex"); nc=$(count "$d/cmd.stim.hex")
-    verilator --binary --timing -Wno-fatal -Wno-WIDTH --Mdir "$d/obj" --top-module tb_slb_fill \
+    verilator --binary --timing -Wno-fatal -Wno-WIDTH -I"$RI" --Mdir "$d/obj" --top-module tb_slb_fill \
         -GNS="$ns" -GNPLOT="$np" -GNCMD="$nc" "$TB/tb_slb_fill.v" $RTL -o tb >"$d/build.log" 2>&1 ||
         { tail -n 20 "$d/build.log"; echo "RESULT FAIL slb/verilator: build"; return; }
     "$d/obj/tb" +plot="$d/plot.expected.hex" +cmd="$d/cmd.stim.hex" +span="$d/span.actual.hex" >"$d/sim" 2>&1
     cat "$d/sim"
-    grep -q '^tb_slb_fill: PASS' "$d/sim" || { echo "RESULT FAIL slb/verilator: testbench"; return; }
+    grep -q '^tb_slb_fill: DONE' "$d/sim" || { echo "RESULT FAIL slb/verilator: testbench"; return; }
     "$EF" check "$d/span.expected.hex" "$d/span.actual.hex" --cycles ||
         { echo "RESULT FAIL slb/verilator tiger-160x120/$ns/$rule: edgeflag check --cycles"; return; }
     echo "RESULT PASS slb/verilator tiger-160x120/$ns/$rule: $np plots -> $(count "$d/span.expected.hex") spans cycle-exact"
@@ -301,22 +302,20 @@ slb_vl() {
 
 # ---------------------------------------------------------------- 4. mutants
 mutant() {
-    local kind=$1 d=$work/mut_$1 np nc rtl=$RTL lag=0 elastic=0 rc_c rc_t
+    local kind=$1 d=$work/mut_$1 np nc rtl=$RTL inc=$RI lag=0 elastic=0 rc_c rc_t
     mkdir -p "$d"
     "$EF" vectors "$tiger" -o "$d" --samples 8 --size 160x120 --formats hex \
         --interfaces cmd,plot,span >"$d/vectors.log" 2>&1 || { echo "RESULT FAIL mutant $kind: vectors"; return; }
     np=$(count "$d/plot.expected.hex"); nc=$(count "$d/cmd.stim.hex")
     case $kind in
         no-forwarding)
-            # The read-first RAM then misses the write made at the same edge.
-            sed 's/wire          fwd  = lw_valid \&\&/wire          fwd  = 1'"'"'b0 \&\&/' \
-                "$root/rtl/ef_slb_fill.v" >"$d/ef_slb_fill.v"
-            cmp -s "$d/ef_slb_fill.v" "$root/rtl/ef_slb_fill.v" &&
-                { echo "RESULT FAIL mutant $kind: the sed did not apply"; return; }
-            rtl="$d/ef_slb_fill.v $root/rtl/ef_slb_ram.v" ;;
+            # The read-first RAM then misses the write made at the same edge
+            # (the RTL variant of dv/faults/fwd.sed).
+            bash "$root/dv/rtl-variant.sh" "$d/rtl" fwd || { echo "RESULT FAIL mutant $kind: the variant"; return; }
+            inc=$d/rtl rtl="$d/rtl/ef_slb_fill.v $d/rtl/ef_slb_ram.v" ;;
         cov-lag) lag=1; elastic=1 ;;
     esac
-    iverilog -g2005 -o "$d/slb.vvp" -Ptb_slb_fill.NS=8 -Ptb_slb_fill.NPLOT="$np" -Ptb_slb_fill.NCMD="$nc" \
+    iverilog -g2005 -I"$inc" -o "$d/slb.vvp" -Ptb_slb_fill.NS=8 -Ptb_slb_fill.NPLOT="$np" -Ptb_slb_fill.NCMD="$nc" \
         -Ptb_slb_fill.COV_LAG="$lag" -Ptb_slb_fill.ELASTIC="$elastic" "$TB/tb_slb_fill.v" $rtl || { echo "RESULT FAIL mutant $kind: compile"; return; }
     vvp -n "$d/slb.vvp" +plot="$d/plot.expected.hex" +cmd="$d/cmd.stim.hex" +span="$d/span.actual.hex" >"$d/sim" 2>&1
     cat "$d/sim"
@@ -337,7 +336,7 @@ submit mutant_no_forwarding mutant no-forwarding
 submit mutant_cov_lag mutant cov-lag
 
 # 5. DEC, SETUP (+ divider) and ETM in RTL, block by block (tests/rtl/blocks_a.sh)
-. "$TB/blocks_a.sh"
+. "$root/tests/rtl/blocks_a.sh"
 
 collect
 # What the RTL runs exercised, summed over every tb_slb_fill run above.

@@ -1,0 +1,4 @@
+# span: a span of two or more pixels cut one pixel short.
+# Caught on: span, field len (tests/rtl/rtl-test.sh, tests/dpi/run.sh).
+# file: ef_slb_fill.v
+s/^    assign span_len   = span_end - start;$/    assign span_len   = (span_end - start > 15'd1) ? span_end - start - 15'd1 : span_end - start;/

@@ -1,0 +1,90 @@
+#!/usr/bin/env bash
+# tests/mutants/c-mutants.sh - mutation testing of the board engine and the
+# host link (issue 27; make c-mutants): tests/mutants.sh's idea (the tests must
+# fail on a broken build) over board/ef_board.c and host/host_link.c.
+#   1. a private copy of BUILD_DIR (edgeflag, edgeflag-host) in the work folder;
+#   2. tests/host/run.sh (make test-host: verify on every interface, the fault
+#      matrix, resume, wrong use) must pass on it unmutated;
+#   3. for each mutant drawn (tests/mutants/c_mutate.py: comparisons flipped,
+#      && and || swapped, decimal constants off by one; EF_CMUT_SAMPLE per file,
+#      seeded by EF_CMUT_SEED), the mutated file is compiled with the build's
+#      own command line into the copy, edgeflag-host relinked, and
+#      tests/host/run.sh run (EF_CMUT_TIMEOUT s): a failure kills the mutant;
+#      a mutant that does not compile is stillborn (not counted);
+#   4. the report: per file mutants, stillborn, killed, survivors with their
+#      line and text.
+# usage: bash tests/mutants/c-mutants.sh BUILD_DIR   (EF_CMUT_SAMPLE (20),
+#        EF_CMUT_SEED (27), EF_CMUT_FILES, EF_CMUT_TIMEOUT (600), EF_CMUT_OUT=DIR)
+# Ends with "N passed, M failed".
+set -u
+export LC_ALL=C
+build=${1:?usage: tests/mutants/c-mutants.sh BUILD_DIR}
+root=$(cd "$(dirname "$0")/../.." && pwd)
+case $build in /*) ;; *) build=$PWD/$build ;; esac
+sample=${EF_CMUT_SAMPLE:-20}
+seed=${EF_CMUT_SEED:-27}
+tmo=${EF_CMUT_TIMEOUT:-600}
+files=${EF_CMUT_FILES:-board/ef_board.c host/host_link.c}
+[ -x "$build/edgeflag-host" ] && [ -x "$build/edgeflag" ] || { echo "c-mutants: build edgeflag and edgeflag-host first (make cli host)"; echo "0 passed, 1 failed"; exit 1; }
+work=$(mktemp -d "${TMPDIR:-/tmp}/edgeflag-cmut.XXXXXX") || exit 1
+trap 'rm -rf "$work"' EXIT
+t0=$(date +%s)
+b=$work/b
+mkdir -p "$b"
+(cd "$build" && tar --exclude=./venv -cf - .) | (cd "$b" && tar -xf -)
+cd "$root" || exit 1
+relink() { make --no-print-directory -s BUILD="$b" "$b/edgeflag-host" >"$work/link.log" 2>&1; }
+relink || { cat "$work/link.log"; echo "FAIL c-mutants: the copy does not link"; echo "0 passed, 1 failed"; exit 1; }
+# The baseline: what tests/host/run.sh says of the unmutated copy.  A check that already fails
+# there (a test out of step with the tree) is no oracle: a mutant is killed when fewer checks
+# pass than unmutated ("ok - " lines), or the run times out.
+timeout "$tmo" bash "$root/tests/host/run.sh" "$b" >"$work/m0.log" 2>&1
+grep '^FAIL - ' "$work/m0.log" >"$work/m0.fail"
+nok=$(grep -c '^ok - ' "$work/m0.log")
+[ "$nok" -gt 0 ] || { tail -20 "$work/m0.log"; echo "FAIL c-mutants: tests/host/run.sh passes nothing on the unmutated copy"; echo "0 passed, 1 failed"; exit 1; }
+echo "PASS c-mutants: tests/host/run.sh on the unmutated copy: $(tail -n 1 "$work/m0.log") (the baseline)"
+[ -s "$work/m0.fail" ] && sed 's/^/    already failing unmutated, not an oracle: /' "$work/m0.fail"
+: >"$work/results.tsv"
+for f in $files; do
+    obj=$b/${f%.c}.o
+    cp "$obj" "$work/orig.o"
+    # the build's own compile command for this object, with the source swapped
+    cmd=$(make --no-print-directory -n -B BUILD="$b" "$obj" 2>/dev/null | grep -E "(^| )-c $f " | tail -n 1)
+    [ -n "$cmd" ] || { echo "FAIL c-mutants: no compile command for $f"; echo "0 passed, 1 failed"; exit 1; }
+    python3 "$root/tests/mutants/c_mutate.py" list "$f" >"$work/all.tsv"
+    python3 - "$work/all.tsv" "$sample" "$seed" >"$work/sel.tsv" <<'EOF'
+import random, sys
+rows = [l.rstrip("\n") for l in open(sys.argv[1]) if l.strip()]
+n = int(sys.argv[2])
+if 0 < n < len(rows):
+    rows = sorted(random.Random(int(sys.argv[3])).sample(rows, n), key=lambda r: int(r.split("\t")[0]))
+print("\n".join(rows))
+EOF
+    echo "c-mutants: $f: $(grep -c . "$work/sel.tsv") of $(grep -c . "$work/all.tsv") mutants drawn (seed $seed)"
+    while IFS=$'\t' read -r id line op old new; do
+        mdir=$work/src/$(dirname "$f"); mkdir -p "$mdir"
+        python3 "$root/tests/mutants/c_mutate.py" write "$f" "$id" "$mdir/$(basename "$f")"
+        mcmd=${cmd/ -c $f / -iquote $(dirname "$f") -c $mdir/$(basename "$f") }
+        if ! eval "$mcmd" >"$work/cc.log" 2>&1 || ! relink; then
+            printf '%s\t%s\t%s\t%s\t%s\t%s\tstillborn\n' "$f" "$id" "$line" "$op" "$old" "$new" >>"$work/results.tsv"
+        else
+            timeout "$tmo" bash "$root/tests/host/run.sh" "$b" >"$work/run.log" 2>&1; rc=$?
+            nf=$(grep -m1 '^FAIL - ' "$work/run.log")
+            if [ $rc = 124 ] || [ "$(grep -c '^ok - ' "$work/run.log")" -lt "$nok" ]; then
+                printf '%s\t%s\t%s\t%s\t%s\t%s\tkilled %s\n' "$f" "$id" "$line" "$op" "$old" "$new" \
+                    "$( [ $rc = 124 ] && echo timeout || echo "${nf:-no summary}" | cut -c1-80)" >>"$work/results.tsv"
+            else
+                printf '%s\t%s\t%s\t%s\t%s\t%s\tSURVIVED\n' "$f" "$id" "$line" "$op" "$old" "$new" >>"$work/results.tsv"
+            fi
+        fi
+    done <"$work/sel.tsv"
+    cp "$work/orig.o" "$obj"; touch "$obj"; relink
+done
+awk -F'\t' '{ n[$1]++; if ($7 == "stillborn") s[$1]++; else if ($7 == "SURVIVED") v[$1]++; else k[$1]++ }
+    END { printf "%-20s %8s %10s %8s %9s %8s\n", "file", "mutants", "stillborn", "killed", "survived", "score"
+          for (f in n) { c = n[f] - s[f]; printf "%-20s %8d %10d %8d %9d %7.1f%%\n", f, n[f], s[f], k[f], v[f], c ? 100 * k[f] / c : 0 } }' \
+    "$work/results.tsv" | tee "$work/report.txt"
+awk -F'\t' '$7 == "SURVIVED" { printf "survivor: %s:%s %s: %s -> %s\n", $1, $3, $4, $5, $6 }' "$work/results.tsv" | tee -a "$work/report.txt"
+[ -n "${EF_CMUT_OUT:-}" ] && { mkdir -p "$EF_CMUT_OUT"; cp "$work/results.tsv" "$work/report.txt" "$EF_CMUT_OUT/"; }
+echo "c-mutants: $(( $(date +%s) - t0 )) s"
+echo "1 passed, 0 failed"

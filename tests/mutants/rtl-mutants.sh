@@ -1,0 +1,260 @@
+#!/usr/bin/env bash
+# tests/mutants/rtl-mutants.sh - mutation testing of the RTL (issue 27; make
+# rtl-mutants, docs/testing.md "RTL mutants").
+#
+#   1. dv/mutants/rtl_mutate.py writes mutant schemata of rtl/*.v into the
+#      work folder (rtl/ is never touched): every mutant in one design,
+#      chosen at run time by +mut=K;
+#   2. Verilator builds the whole-pipeline bench (dv/tb/tb_raster.v) on them
+#      at NS 8/16/32, the build make rtl-test runs (W_MAX = H_MAX = 256);
+#   3. mutant 0 (the design itself) must pass every case: the schemata
+#      change nothing until a mutant is chosen;
+#   4. stage "rtl-test": each mutant runs make rtl-test's Verilator cases
+#      (every shared SVG at 24x18 and every 11th `edgeflag gen` level-1 case,
+#      rotating over NS x rule, and the tiger with random back-pressure on
+#      pix), shortest first, each under a timeout; the mutant is killed by the
+#      first case whose bench does not pass, times out, or whose dumps fail
+#      `edgeflag check` (--cycles; --transactions under back-pressure);
+#   5. stage "regression": the survivors run every `edgeflag gen` level-1
+#      case that fits the build (NS and rule rotating per case);
+#   6. the report: per block (file), mutants, killed by each stage,
+#      equivalent (dv/mutants/equivalent.tsv: key and reason, reviewed like
+#      code), survivors listed with file:line, operator and text.
+#
+# usage: bash tests/mutants/rtl-mutants.sh BUILD_DIR
+#   EF_MUT_SAMPLE=N   run N mutants drawn with EF_MUT_SEED (default 27) instead
+#                     of all (the draw is deterministic: python's random.Random)
+#   EF_MUT_OPS=LIST   only these operators (comma-separated)
+#   EF_MUT_FILES=LIST only these rtl/ files (comma-separated, e.g. ef_plot.v)
+#   EF_MUT_REGRESS=0  skip stage 5;  EF_MUT_JOBS (2);  EF_MUT_TIMEOUT (s, 30, plus a second per 10,000 cycles of the case)
+#   EF_MUT_NS="8 16 32" the builds (cases of other NS are left out)
+#   EF_MUT_GEN_SLICE (11: stage 4's gen slice);  EF_MUT_SVGS (all: a count)
+#   EF_MUT_SIM=icarus Icarus instead of Verilator (the slice in make test: it
+#                     compiles in seconds); EF_MUT_MAXCYC leaves out cases of
+#                     more cycles (default: none; 4000 is sensible for Icarus)
+#   EF_MUT_REG_MAXCYC the regression stage's cases of at most this many cycles
+#                     (default 250000: a survivor runs all of them)
+#   EF_MUT_REUSE=DIR  a work folder kept (EF_MUT_KEEP=1) by an earlier run of the
+#                     same tree: its builds and vectors are reused
+#   EF_MUT_OUT=DIR    keep results.tsv and report.txt there
+# Ends with "N passed, M failed": failed when mutant 0 fails, or a
+# non-equivalent mutant survives both stages while EF_MUT_REQUIRE=1.
+set -u
+export LC_ALL=C
+build=${1:?usage: tests/mutants/rtl-mutants.sh BUILD_DIR}
+root=$(cd "$(dirname "$0")/../.." && pwd)
+case $build in /*) ;; *) build=$PWD/$build ;; esac
+EF=$build/edgeflag
+jobs=${EF_MUT_JOBS:-2}
+tmo=${EF_MUT_TIMEOUT:-30}
+nslist=${EF_MUT_NS:-8 16 32}
+gslice=${EF_MUT_GEN_SLICE:-11}
+WM=256 HM=256 EM=16384
+sim=${EF_MUT_SIM:-verilator}
+maxcyc=${EF_MUT_MAXCYC:-0}
+regmax=${EF_MUT_REG_MAXCYC:-250000}
+simtools="verilator"; [ "$sim" = icarus ] && simtools="iverilog vvp"
+for t in $simtools python3 parallel timeout; do
+    command -v "$t" >/dev/null 2>&1 || { echo "rtl-mutants: $t is not installed ('make deps-test')"; echo "0 passed, 1 failed"; exit 1; }
+done
+[ -x "$EF" ] || { echo "rtl-mutants: $EF not built (make cli)"; echo "0 passed, 1 failed"; exit 1; }
+tmpbase=${TMPDIR:-/tmp}
+[ -z "${TMPDIR:-}" ] && [ -d /dev/shm ] && [ -w /dev/shm ] && tmpbase=/dev/shm
+if [ -n "${EF_MUT_REUSE:-}" ]; then
+    work=$EF_MUT_REUSE    # a kept work folder of the same tree: its builds and vectors are reused
+    EF_MUT_KEEP=1
+else
+    work=$(mktemp -d "$tmpbase/edgeflag-rtlmut.XXXXXX") || exit 1
+fi
+if [ -n "${EF_MUT_KEEP:-}" ]; then echo "rtl-mutants: keeping $work"; else trap 'rm -rf "$work"' EXIT; fi
+t0=$(date +%s)
+pass=0 fail=0
+
+# ------------------------------------------------------------ 1. schemata
+files=(ef_raster.v ef_dec.v ef_setup.v ef_div.v ef_etm.v ef_aet.v ef_plot.v ef_slb_fill.v ef_slb_ram.v ef_cov.v)
+nall=$(python3 "$root/dv/mutants/rtl_mutate.py" "$work/mut" "${files[@]/#/$root/rtl/}") || { echo "0 passed, 1 failed"; exit 1; }
+MUTRTL=("${files[@]/#/$work/mut/}")
+
+# ------------------------------------------------------------ 2. builds
+buildone() {
+    [ -x "$work/vl_$1/Vtb_raster" ] && [ -n "${EF_MUT_REUSE:-}" ] && return 0
+    if [ "$sim" = icarus ]; then
+        mkdir -p "$work/vl_$1"
+        iverilog -g2005 -I"$root/rtl" -o "$work/vl_$1/t.vvp" -Ptb_raster.NS="$1" -Ptb_raster.W_MAX=$WM -Ptb_raster.H_MAX=$HM \
+            -Ptb_raster.E_MAX=$EM -Ptb_raster.FB_BITS=16 "$root/dv/tb/tb_raster.v" "${MUTRTL[@]}" >"$work/build_$1.log" 2>&1 ||
+            { tail -20 "$work/build_$1.log"; return 1; }
+        return
+    fi
+    verilator --binary --timing -O1 -Wno-fatal -Wno-WIDTH -I"$root/rtl" --x-assign unique --x-initial unique --Mdir "$work/vl_$1" --top-module tb_raster \
+        -GNS="$1" -GW_MAX=$WM -GH_MAX=$HM -GE_MAX=$EM -GFB_BITS=16 "$root/dv/tb/tb_raster.v" "${MUTRTL[@]}" \
+        >"$work/build_$1.log" 2>&1 || { tail -20 "$work/build_$1.log"; return 1; }
+}
+pids=()
+for ns in $nslist; do buildone "$ns" & pids+=($!); done
+for p in "${pids[@]}"; do wait "$p" || { echo "FAIL rtl-mutants: Verilator did not build the schemata"; echo "0 passed, 1 failed"; exit 1; }; done
+echo "rtl-mutants: $nall mutants in $(echo "${files[@]}" | wc -w) files; schemata built ($sim) at NS $nslist in $(( $(date +%s) - t0 )) s"
+
+# ------------------------------------------------------------ 3. cases
+[ -f "$work/gen/index.tsv" ] || "$EF" gen -o "$work/gen" >/dev/null 2>&1 || { echo "FAIL rtl-mutants: edgeflag gen"; echo "0 passed, 1 failed"; exit 1; }
+mkdir -p "$work/vec"
+rules=(scene nonzero evenodd)
+mkcase() {   # mkcase STAGE NAME INPUT NS RULE SIZE [BP]
+    local d=$work/vec/$2 args=() w h me cyc
+    case " $nslist " in *" $4 "*) ;; *) return ;; esac
+    [ "$5" != scene ] && args+=(--rule "$5"); [ "$6" != - ] && args+=(--size "$6")
+    [ -f "$d/manifest.json" ] || "$EF" vectors "$3" -o "$d" --samples "$4" "${args[@]}" --formats hex >/dev/null 2>&1 || return
+    read -r w h <<<"$(sed -n 's/.*; size \([0-9]*\)x\([0-9]*\);.*/\1 \2/p' "$d/cmd.stim.hex" | head -n 1)"
+    if [ "$w" -gt $WM ] || [ "$h" -gt $HM ]; then rm -rf "$d"; return; fi
+    me=$(awk '!/^\/\// && NF { op = substr($1, 13, 1); if (op == "2") n = 0; if (op == "3" && ++n > m) m = n } END { print m + 0 }' "$d/cmd.stim.hex")
+    if [ "$me" -gt $EM ]; then rm -rf "$d"; return; fi
+    cyc=$(sed -n 's/.*"cycles": \([0-9]*\).*/\1/p' "$d/manifest.json")
+    if [ "$maxcyc" -gt 0 ] && [ "$cyc" -gt "$maxcyc" ]; then rm -rf "$d"; return; fi
+    if [ "$1" = r ] && [ "$cyc" -gt "$regmax" ]; then rm -rf "$d"; return; fi
+    echo "$1 $cyc $2 $4 ${7:--}"
+}
+{
+    k=0 nsv=0
+    for f in "$root"/tests/data/svg/*.svg; do
+        [ -n "${EF_MUT_SVGS:-}" ] && [ $nsv -ge "$EF_MUT_SVGS" ] && break
+        mkcase t "svg_$(basename "$f" .svg)" "$f" $((8 << (k % 3))) "${rules[$(( (k / 3) % 3 ))]}" "${EF_MUT_SVG_SIZE:-24x18}"
+        k=$((k + 1)) nsv=$((nsv + 1))
+    done
+    while IFS=$'\t' read -r num file _ _ name _; do
+        case $name in canvas-max*|zigzag-4096|same-cell-4096) continue ;; esac
+        if [ $((num % gslice)) = 0 ]; then
+            mkcase t "gen_$num" "$work/gen/$file" $((8 << (k % 3))) "${rules[$(( (k / 3) % 3 ))]}" -
+            k=$((k + 1))
+        elif [ "${EF_MUT_REGRESS:-1}" = 1 ]; then
+            mkcase r "reg_$num" "$work/gen/$file" $((8 << (num % 3))) "${rules[$(( (num / 3) % 3 ))]}" -
+        fi
+    done < <(tail -n +3 "$work/gen/index.tsv")
+    case " $nslist " in *" 8 "*) mkcase t bp_tiger "$root/tests/data/svg/tiger.svg" 8 scene 24x18 424242 ;; esac
+} >"$work/cases.all"
+sort -k1,1 -k2,2n "$work/cases.all" >"$work/cases.txt"
+nt=$(grep -c '^t ' "$work/cases.txt"); nr=$(grep -c '^r ' "$work/cases.txt")
+echo "rtl-mutants: stage rtl-test: $nt cases; stage regression: $nr level-1 cases (those fitting ${WM}x$HM, $EM edges and $regmax cycles)"
+
+# runmut K STAGE: "K killed CASE" at the first case that fails, else "K survived"
+runmut() {
+    local k=$1 st=$2 s cyc n ns bp a out mode
+    while read -r s cyc n ns bp; do
+        [ "$s" = "$st" ] || continue
+        a=$work/act/$k.$n; mkdir -p "$a"; mode=--cycles
+        local t=$((tmo + cyc / 10000))   # the timeout grows with the case: ~30,000 cycles/s on a busy core
+        local pa=(); [ "$bp" != - ] && { pa=(+bp="$bp"); mode=--transactions; }
+        if [ "$sim" = icarus ]; then
+            out=$(timeout "$t" vvp -n "$work/vl_$ns/t.vvp" +mut="$k" +cmd="$work/vec/$n/cmd.stim.hex" +out="$a/" "${pa[@]}" 2>&1)
+        else
+            out=$(timeout "$t" "$work/vl_$ns/Vtb_raster" +verilator+rand+reset+2 +verilator+seed+$((k + 1)) +mut="$k" \
+                +cmd="$work/vec/$n/cmd.stim.hex" +out="$a/" "${pa[@]}" 2>&1)
+        fi
+        if ! echo "$out" | grep -q '^tb_raster: DONE' || ! "$EF" check "$work/vec/$n" "$a" $mode --errors 1 >/dev/null 2>&1; then
+            rm -rf "$a"; echo "$k killed $n"; return
+        fi
+        rm -rf "$a"
+    done <"$work/cases.txt"
+    echo "$k survived"
+}
+export -f runmut; export work EF tmo sim
+
+# ------------------------------------------------------------ sanity: mutant 0
+for st in t r; do
+    r=$(runmut 0 $st)
+    if [ "$r" != "0 survived" ]; then
+        echo "FAIL rtl-mutants: the unmutated schemata (mutant 0) fail: $r"; echo "0 passed, 1 failed"; exit 1
+    fi
+done
+pass=$((pass + 1)); echo "PASS rtl-mutants: mutant 0 (the design) passes every case of both stages"
+
+# ------------------------------------------------------------ selection
+python3 - "$work/mut/mutants.tsv" "${EF_MUT_SAMPLE:-0}" "${EF_MUT_SEED:-27}" "${EF_MUT_OPS:-}" "${EF_MUT_FILES:-}" >"$work/selected.tsv" <<'EOF'
+import random, sys
+rows = [l.rstrip("\n").split("\t") for l in open(sys.argv[1])][1:]
+n, seed = int(sys.argv[2]), int(sys.argv[3])
+ops = set(sys.argv[4].split(",")) if sys.argv[4] else None
+fs = set(sys.argv[5].split(",")) if sys.argv[5] else None
+rows = [r for r in rows if (not ops or r[3] in ops) and (not fs or r[1] in fs)]
+if 0 < n < len(rows):
+    rows = sorted(random.Random(seed).sample(rows, n), key=lambda r: int(r[0]))
+for r in rows:
+    print("\t".join(r))
+EOF
+nsel=$(grep -c . "$work/selected.tsv")
+echo "rtl-mutants: $nsel of $nall mutants selected${EF_MUT_SAMPLE:+ (seeded sample, seed ${EF_MUT_SEED:-27})}"
+
+# ------------------------------------------------------------ 4. + 5.
+cut -f1 "$work/selected.tsv" | parallel -j "$jobs" runmut '{}' t >"$work/stage1.txt"
+if [ "${EF_MUT_REGRESS:-1}" = 1 ]; then
+    awk '$2 == "survived" { print $1 }' "$work/stage1.txt" | parallel -j "$jobs" runmut '{}' r >"$work/stage2.txt"
+else
+    : >"$work/stage2.txt"
+fi
+
+# ------------------------------------------------------------ 6. report
+python3 - "$work/selected.tsv" "$work/stage1.txt" "$work/stage2.txt" "$root/dv/mutants/equivalent.tsv" \
+    "${EF_MUT_REGRESS:-1}" >"$work/report.txt" 2>"$work/results.tsv" <<'EOF'
+import sys
+sel = [l.rstrip("\n").split("\t") for l in open(sys.argv[1]) if l.strip()]
+def res(p):
+    d = {}
+    for l in open(p):
+        f = l.split()
+        if f:
+            d[f[0]] = (f[1], f[2] if len(f) > 2 else "")
+    return d
+s1, s2 = res(sys.argv[2]), res(sys.argv[3])
+eqv = {}
+try:
+    for l in open(sys.argv[4]):
+        if l.startswith("#") or not l.strip() or l.startswith("key\t"):
+            continue
+        k, why = l.rstrip("\n").split("\t", 1)
+        eqv[k] = why
+except FileNotFoundError:
+    pass
+regress = sys.argv[5] == "1"
+blocks = {}
+surv = []
+for mid, f, line, op, key, old, new in sel:
+    b = blocks.setdefault(f, [0, 0, 0, 0, 0])
+    b[0] += 1
+    st1 = s1.get(mid, ("missing", ""))[0]
+    st2 = s2.get(mid, ("", ""))[0]
+    if st1 == "killed":
+        b[1] += 1; verdict = "killed-rtl-test " + s1[mid][1]
+    elif st2 == "killed":
+        b[2] += 1; verdict = "killed-regression " + s2[mid][1]
+    elif key in eqv:
+        b[3] += 1; verdict = "equivalent"
+    else:
+        b[4] += 1; verdict = "SURVIVED"; surv.append((f, line, op, old, new, key))
+    sys.stderr.write("%s\t%s\t%s\t%s\t%s\t%s\n" % (mid, f, line, op, key, verdict))
+print("%-14s %8s %10s %10s %10s %9s %12s %12s" % ("block", "mutants", "rtl-test", "regression", "equivalent",
+                                                   "survived", "score(test)", "score(+reg)"))
+tot = [0, 0, 0, 0, 0]
+def line(name, b):
+    ne = b[0] - b[3]
+    sc1 = "%d.%d %%" % divmod(b[1] * 1000 // ne, 10) if ne else "-"
+    sc2 = "%d.%d %%" % divmod((b[1] + b[2]) * 1000 // ne, 10) if ne else "-"
+    print("%-14s %8d %10d %10d %10d %9d %12s %12s" % (name, b[0], b[1], b[2], b[3], b[4], sc1, sc2))
+for f in sorted(blocks):
+    line(f.replace(".v", ""), blocks[f])
+    tot = [a + b for a, b in zip(tot, blocks[f])]
+line("all", tot)
+if not regress:
+    print("(stage regression skipped: EF_MUT_REGRESS=0)")
+for f, ln, op, old, new, key in surv:
+    print("survivor: rtl/%s:%s %s: '%s' -> '%s'  key %s" % (f, ln, op, old[:60], new[:60], key))
+print("SURVIVORS %d" % len(surv))
+EOF
+cat "$work/report.txt"
+if [ -n "${EF_MUT_OUT:-}" ]; then mkdir -p "$EF_MUT_OUT"; cp "$work/report.txt" "$work/results.tsv" "$work/selected.tsv" "$EF_MUT_OUT/"; fi
+ns=$(sed -n 's/^SURVIVORS //p' "$work/report.txt")
+if [ "${EF_MUT_REQUIRE:-0}" = 1 ] && [ "${ns:-1}" != 0 ]; then
+    fail=$((fail + 1)); echo "FAIL rtl-mutants: $ns non-equivalent mutants survive"
+else
+    pass=$((pass + 1)); echo "PASS rtl-mutants: report written ($nsel mutants; ${ns:-?} non-equivalent survivors)"
+fi
+echo "rtl-mutants: $(( $(date +%s) - t0 )) s"
+echo "$pass passed, $fail failed"
+[ $fail = 0 ]
