@@ -104,7 +104,7 @@ module ef_cov #(
     // ------------------------------------------------ stages
     reg [14:0] a_cnt;
     reg [13:0] a_y, a_x;
-    reg [7:0]  a_cov, a_sr, a_sg, a_sb, a_sa;
+    reg [7:0]  a_cov;
     reg        b_valid;
     reg [13:0] b_y, b_x;
     reg [7:0]  b_cov, b_sr, b_sg, b_sb, b_sa;
@@ -146,8 +146,12 @@ module ef_cov #(
             // B <- A
             b_valid <= issue;
             if (issue) begin
+                // the span's products from its registered coverage (issue
+                // 25: popcount and coverage, then the products, each in
+                // a cycle of its own; the schedule is unchanged)
                 b_y <= a_y; b_x <= a_x; b_cov <= a_cov;
-                b_sr <= a_sr; b_sg <= a_sg; b_sb <= a_sb; b_sa <= a_sa;
+                b_sr <= mul(p_r, a_cov); b_sg <= mul(p_g, a_cov); b_sb <= mul(p_b, a_cov);
+                b_sa <= mul(cfg_alpha, a_cov);
                 a_x <= a_x + 14'd1;
             end
             // A
@@ -156,10 +160,6 @@ module ef_cov #(
                 a_y <= span_y;
                 a_x <= span_x;
                 a_cov <= cov;
-                a_sr <= mul(p_r, cov);
-                a_sg <= mul(p_g, cov);
-                a_sb <= mul(p_b, cov);
-                a_sa <= mul(cfg_alpha, cov);
             end else if (issue) begin
                 a_cnt <= a_cnt - 15'd1;
             end
