@@ -117,6 +117,18 @@ def gen_case(k, rule="scene", **kw):
 # ------------------------------------------------------------------ the slice
 # Small gen cases (a few hundred to a few thousand cycles: Icarus runs the whole pipeline at about a
 # thousand cycles a second) and shared SVGs at 24x18 in Verilator.
+def directed_text():
+    """A scene for cover points the shared SVGs and the small gen cases miss: an edge wholly above
+    the canvas (clip.drop_above), a near-horizontal edge with |qs| >= 2^20 (div.qs_big: dY = 1/256 px
+    across sample row 0, dX = 256 px), a shape of alpha 0 (shape.alpha0) and one of 4096 EDGE
+    commands (shape.edges_4096: a zigzag of 4096 vertices, 1/256 px a step down)."""
+    zig = " ".join(f"{1 if i % 2 == 0 else 7} {ef.q8(i // 2)}" for i in range(4096))
+    return ("scene 8 8\n"
+            "shape nonzero 255 0 0 0\ncontour 1 -3 6 -2 3 -1\n"
+            "shape nonzero 0 255 0 255\ncontour -100 0.0625 156 0.06640625 2 5\n"
+            f"shape evenodd 0 0 255 200\ncontour {zig}\n")
+
+
 ICARUS_GEN = {8: [(0, "scene"), (22, "nonzero"), (48, "evenodd"), (52, "scene"), (30, "nonzero")],
               16: [(4, "evenodd"), (14, "scene"), (51, "nonzero"), (74, "scene")],
               32: [(1, "nonzero"), (19, "evenodd"), (55, "scene"), (104, "nonzero")]}
@@ -127,7 +139,8 @@ def test_verilator_slice():
     cases = [svg_case("lion", rule="nonzero"), svg_case("stress_pixi_fill_rule_star_nonzero"),
              svg_case("stress_pixi_figure8", rule="evenodd"), svg_case("tiger", rule="evenodd", size=(16, 12)),
              gen_case(36, "scene"), gen_case(38, "scene"), gen_case(44, "nonzero"), gen_case(46, "evenodd"),
-             gen_case(47, "scene"), gen_case(52, "nonzero"), gen_case(17, "scene"),
+             gen_case(47, "scene"), gen_case(52, "nonzero"), gen_case(17, "scene"), gen_case(35, "scene"),
+             {"name": "directed_holes", "scene_text": directed_text(), "may_lack": True},
              svg_case("lion", rule="scene", bp_seed=7, size=(12, 9))]
     run("verilator", 8, cases, "verilator_ns8")
 

@@ -3,3 +3,8 @@
 .PHONY: test-host
 test-host: cli host
 	@bash tests/host/run.sh $(BUILD)
+# The host stages 5 times in a row with every core kept busy by stress-ng (docs/testing.md,
+# tests/host/loaded.sh): not in `make test`; tools/install-deps.sh loaded installs stress-ng.
+.PHONY: test-host-loaded
+test-host-loaded: cli host
+	@bash tests/host/loaded.sh

@@ -17,6 +17,7 @@
 # machine cannot arrange is SKIPPED with the reason: docs/testing.md, "What the tests assume").
 # Recovery is asserted by how it happened (the host's --json counts); runs that must not time out
 # get a generous --timeout (tests/host/waits.sh, EF_TEST_TIMEOUT_SCALE).
+# shellcheck disable=SC2016 # how's conditions are single-quoted on purpose: evaluated when checked
 set -u
 export LC_ALL=C
 build=${1:?usage: tests/host/serial.sh BUILD_DIR [BOARD_CMD]}
@@ -91,10 +92,8 @@ for v in small tiger lion; do # the simulated board's results: what every serial
 done
 # hstat KEY: the host's --json summary's KEY (the last run's)
 hstat() { sed -n 's/.*"'"$1"'": \([0-9]*\).*/\1/p' out.txt | tail -1; }
-how() { # NAME TEST...: how a run went, by the host's counters
-    local name=$1
-    shift
-    if "$@"; then ok "$name"; else bad "$name" "$(grep -o '"frames_sent.*timeouts": [0-9]*' out.txt)"; fi
+how() { # NAME CONDITION: how a run went, by the host's counters (CONDITION: shell text, evaluated here)
+    if eval "$2"; then ok "$1"; else bad "$1" "$(grep -o '"frames_sent.*timeouts": [0-9]*' out.txt)"; fi
 }
 # runs that must not time out: a generous --timeout; the stall's is short (what it tests), and a
 # frame to the host damaged on the wire is recovered by the host's timeout (docs/board.md 4.2):
@@ -195,21 +194,23 @@ for f in "a bit flipped on the way to the board:flip=3000" "a byte to the board 
     "a byte to the board duplicated:dup=7000"; do
     fault "${f%%:*}" "${f#*:}" 0 'PASS'
     how "${f%%:*}: NAKed, sent again, no timeout" \
-        [ "$(hstat naks)" -ge 1 ] && [ "$(hstat retransmits)" -ge 1 ] && [ "$(hstat timeouts)" = 0 ]
+        '[ "$(hstat naks)" -ge 1 ] && [ "$(hstat retransmits)" -ge 1 ] && [ "$(hstat timeouts)" = 0 ]'
 done
 # to the host: nothing resent to the board
 for f in "a bit flipped on the way to the host:flip-down=20000" "a byte to the host dropped:drop-down=40000" \
     "a byte to the host duplicated:dup-down=60000"; do
     fault "${f%%:*}" "${f#*:}" 0 'PASS' --timeout "$DOWN"
-    how "${f%%:*}: no NAK" [ "$(hstat naks)" = 0 ]
+    how "${f%%:*}: no NAK (recovered with $(hstat timeouts) timeouts of $DOWN ms)" \
+        '[ "$(hstat naks)" = 0 ]'
 done
 # (the stalled relay reads nothing: the host's writes can time out before its 4 reads do)
 fault "the board stalls" stall=60 5 'stopped answering.*--resume' --timeout "$SHORT"
 fault "the line unplugged" unplug=60 5 'went away.*--resume'
-how "the line unplugged: the host saw the hang-up, no timeout" [ "$(hstat timeouts)" = 0 ]
+how "the line unplugged: the host saw the hang-up, no timeout" \
+    '[ "$(hstat timeouts)" = 0 ]'
 fault "the board reset mid-run" reset=60 6 'reset or lost its state'
 how "the board reset: its NAK asked for an acknowledged frame, no timeout" \
-    [ "$(hstat naks)" -ge 1 ] && [ "$(hstat timeouts)" = 0 ]
+    '[ "$(hstat naks)" -ge 1 ] && [ "$(hstat timeouts)" = 0 ]'
 # the same on a digest run (frames counted as above: a digest run's START is the 4th frame; the
 # resume takes the digest run from the resume state)
 fault "a bit flipped on the way to the board" flip=3000 0 'PASS' --digest 64

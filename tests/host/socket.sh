@@ -18,6 +18,7 @@
 # stall and the mute board, whose timeouts are what they test, get a short one.
 # usage: bash tests/host/socket.sh BUILD_DIR   (`make test-host-socket`)
 # Ends with "N passed, M failed"; exit status 0 only if nothing failed.
+# shellcheck disable=SC2016 # how's conditions are single-quoted on purpose: evaluated when checked
 set -u
 export LC_ALL=C
 build=${1:?usage: tests/host/socket.sh BUILD_DIR}
@@ -73,11 +74,10 @@ board() {
 bstat() { tail -1 stats.txt 2>/dev/null | sed -n 's/.*"'"$1"'": \([0-9]*\).*/\1/p'; }
 # hstat KEY: the host's --json summary's KEY (the last run's)
 hstat() { sed -n 's/.*"'"$1"'": \([0-9]*\).*/\1/p' out.txt | tail -1; }
-# how NAME TEST...: a counter check, failing with both sides' counters
+# how NAME CONDITION: a counter check (CONDITION: shell text, e.g. '[ "$(hstat naks)" -ge 1 ] && ...',
+# evaluated here), failing with both sides' counters
 how() {
-    local name=$1
-    shift
-    if "$@"; then ok "$name"; else bad "$name" "host: $(grep -o '"frames_sent.*timeouts": [0-9]*' out.txt); board: $(tail -1 stats.txt)"; fi
+    if eval "$2"; then ok "$1"; else bad "$1" "host: $(grep -o '"frames_sent.*timeouts": [0-9]*' out.txt); board: $(tail -1 stats.txt)"; fi
 }
 
 # run NAME EXPECTED_EXIT STDERR_REGEX -- COMMAND...
@@ -116,7 +116,7 @@ run "verify the tiger over unix: (40 commands a frame): PASS" 0 'check: PASS: 6 
     "$H" verify tiger/vectors.bin "${LINK[@]}" --connect "$SOCK" --results r0 --json
 same "unix: results identical to the simulated board's" r0/vectors.actual.bin
 how "clean run: the board took every frame once, no NAK, one reset; the host sent nothing again, no timeout" \
-    [ "$(bstat dup)/$(bstat gap)/$(bstat bad)/$(bstat naks)/$(bstat resets)/$(hstat retransmits)/$(hstat timeouts)" = 0/0/0/0/1/0/0 ]
+    '[ "$(bstat dup)/$(bstat gap)/$(bstat bad)/$(bstat naks)/$(bstat resets)/$(hstat retransmits)/$(hstat timeouts)" = 0/0/0/0/1/0/0 ]'
 board --tcp 0 --vectors tiger/vectors.bin
 run "verify the tiger over tcp:127.0.0.1:PORT: PASS" 0 'check: PASS: 6 comparisons' -- \
     "$H" verify tiger/vectors.bin "${LINK[@]}" --connect "tcp:127.0.0.1:$port" --results r1 --json
@@ -170,7 +170,7 @@ fault() {
         run "$name: --resume: PASS" 0 'check: PASS' -- \
             "$H" verify tiger/vectors.bin "${LINK[@]}" --connect "$SOCK" --results rf --resume --json
         how "$name: --resume went on from where the board was (frame > 0), with no timeout" \
-            [ "$(hstat resumed_from_frame)" -gt 0 ] && [ "$(hstat timeouts)" = 0 ]
+            '[ "$(hstat resumed_from_frame)" -gt 0 ] && [ "$(hstat timeouts)" = 0 ]'
     fi
     if [ "$want" = 0 ] || [ "$want" = 5 ]; then
         same "$name: results identical to the simulated board's" rf/vectors.actual.bin
@@ -183,33 +183,36 @@ fault() {
 # it (retransmits), no timeout (docs/board.md 4.1)
 fault "a host frame dropped" --drop 5 0 'PASS'
 how "the dropped frame: the board saw the gap and NAKed it, the host sent again from there, no timeout" \
-    [ "$(bstat gap)" -ge 1 ] && [ "$(bstat naks)" -ge 1 ] && [ "$(bstat bad)" = 0 ] && [ "$(hstat naks)" -ge 1 ] &&
-    [ "$(hstat retransmits)" -ge 1 ] && [ "$(hstat timeouts)" = 0 ]
+    '[ "$(bstat gap)" -ge 1 ] && [ "$(bstat naks)" -ge 1 ] && [ "$(bstat bad)" = 0 ] &&
+     [ "$(hstat naks)" -ge 1 ] && [ "$(hstat retransmits)" -ge 1 ] && [ "$(hstat timeouts)" = 0 ]'
 fault "a host frame corrupted" --corrupt 5 0 'PASS'
 how "the corrupted frame: the board saw damage and NAKed it, the host sent again from there, no timeout" \
-    [ "$(bstat bad)" -ge 1 ] && [ "$(bstat naks)" -ge 1 ] && [ "$(hstat naks)" -ge 1 ] &&
-    [ "$(hstat retransmits)" -ge 1 ] && [ "$(hstat timeouts)" = 0 ]
+    '[ "$(bstat bad)" -ge 1 ] && [ "$(bstat naks)" -ge 1 ] &&
+     [ "$(hstat naks)" -ge 1 ] && [ "$(hstat retransmits)" -ge 1 ] && [ "$(hstat timeouts)" = 0 ]'
 # a frame to the host lost or damaged: the host sees the next one's gap and asks for every result
 # again (ACKR with RESEND): the board sends copies, the board's frames were all taken once
 fault "a reply dropped" --drop-reply 3 0 'PASS'
 how "the dropped reply: asked again, the board sent copies (board frames > results), nothing resent to it, no timeout" \
-    [ "$(bstat board_frames)" -gt "$(bstat results_made)" ] && [ "$(bstat dup)/$(bstat naks)" = 0/0 ] &&
-    [ "$(hstat retransmits)/$(hstat timeouts)" = 0/0 ]
+    '[ "$(bstat board_frames)" -gt "$(bstat results_made)" ] && [ "$(bstat dup)/$(bstat naks)" = 0/0 ] &&
+     [ "$(hstat retransmits)/$(hstat timeouts)" = 0/0 ]'
 fault "a reply corrupted" --corrupt-reply 3 0 'PASS'
 how "the corrupted reply: asked again, the board sent copies, nothing resent to it, no timeout" \
-    [ "$(bstat board_frames)" -gt "$(bstat results_made)" ] && [ "$(bstat dup)/$(bstat naks)" = 0/0 ] &&
-    [ "$(hstat retransmits)/$(hstat timeouts)" = 0/0 ]
+    '[ "$(bstat board_frames)" -gt "$(bstat results_made)" ] && [ "$(bstat dup)/$(bstat naks)" = 0/0 ] &&
+     [ "$(hstat retransmits)/$(hstat timeouts)" = 0/0 ]'
 fault "the connection closed mid-commands" --disconnect 6 5 'went away.*--resume'
-how "closed mid-commands: the host saw the link go, no timeout" [ "$(hstat timeouts)" = 0 ]
+how "closed mid-commands: the host saw the link go, no timeout" \
+    '[ "$(hstat timeouts)" = 0 ]'
 fault "the connection closed mid-results" --disconnect-reply 4 5 'went away.*--resume'
-how "closed mid-results: the host saw the link go, no timeout" [ "$(hstat timeouts)" = 0 ]
+how "closed mid-results: the host saw the link go, no timeout" \
+    '[ "$(hstat timeouts)" = 0 ]'
 # the stall's timeout is what it tests: a short one, four of them in a row end the run
 fault "a stall" --stall 6 5 'stopped answering.*--resume' "$SHORT"
-how "the stall: the run ended after 4 timeouts in a row" [ "$(hstat timeouts)" = 4 ]
+how "the stall: the run ended after 4 timeouts in a row" \
+    '[ "$(hstat timeouts)" = 4 ]'
 # (late enough that frames were acknowledged: a reset before any ACK is a legitimate fresh start)
 fault "a board reset mid-run" --reset 60 6 'reset or lost its state'
 how "the reset: the board's NAK asked for a frame it had acknowledged, no timeout" \
-    [ "$(hstat naks)" -ge 1 ] && [ "$(hstat timeouts)" = 0 ]
+    '[ "$(hstat naks)" -ge 1 ] && [ "$(hstat timeouts)" = 0 ]'
 fault "another protocol version" --protocol 2 6 'protocol version 2'
 board --unix b.sock --vectors tiger/vectors.bin --not-ours
 run "another device: exit 6" 6 'did not answer identify as an edgeflag board' -- \

@@ -14,6 +14,7 @@
 # by clang++ -O3 when it is installed (about 1.3x less CPU time than g++ -O2 on the tiger), else
 # g++; the summary gives simulated cycles per second of wall time and of CPU time (user + sys:
 # on a shared machine the wall time measures the other jobs too).
+# shellcheck disable=SC2086 # the RTL file lists ($RTL, $A_*) are split into words on purpose
 set -u
 export LC_ALL=C
 build=${1:?usage: tests/rtl/rtl-regress.sh BUILD_DIR}
@@ -67,7 +68,7 @@ export -f one; export work EF
             echo "gen_${num}_${ns}_$rule|$work/gen/$file|$ns|$rule|-"
         done; done
     done
-} | parallel -j "$jobs" --colsep '\|' one {1} {2} {3} {4} {5} >"$work/results.txt"
+} | parallel -j "$jobs" --colsep '\|' one '{1}' '{2}' '{3}' '{4}' '{5}' >"$work/results.txt"
 grep '^FAIL' "$work/results.txt"
 grep '^PASS tiger' "$work/results.txt" | awk '{ printf "rtl-regress: tiger 640x480, 8 samples: %d cycles in %.1f s of Verilator (%.0f cycles/s), %.2f s of CPU (%.0f cycles/s)\n", $3, $4, $3 / $4, $6, $3 / ($6 > 0 ? $6 : 1e-9) }'
 grep '^REFUSED' "$work/results.txt"
