@@ -264,7 +264,7 @@ def line(name, b):
     sc2 = "%d.%d %%" % divmod((b[1] + b[2]) * 1000 // ne, 10) if ne else "-"
     print("%-14s %8d %10d %10d %10d %9d %12s %12s" % (name, b[0], b[1], b[2], b[3], b[4], sc1, sc2))
 for f in sorted(blocks):
-    line(f.replace(".v", ""), blocks[f])
+    line(f[:-2] if f.endswith(".v") else f, blocks[f])
     tot = [a + b for a, b in zip(tot, blocks[f])]
 line("all", tot)
 if not regress:
