@@ -18,6 +18,8 @@ WARN     := -std=c11 -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wvla
 # (the model reaching the readers, a library reaching cli/) is a build error, not a review comment.
 # include/edgeflag/ holds the public headers: `#include "edgeflag.h"` resolves everywhere.
 EF_DEFS  := -D_POSIX_C_SOURCE=200809L
+# The one version number: edgeflag.h's EF_VERSION_STRING (the .pc files and ef_version() follow it).
+EF_VERSION := $(shell sed -n 's/^#define EF_VERSION_STRING "\(.*\)"/\1/p' include/edgeflag/edgeflag.h)
 EF_INC   := -Iinclude/edgeflag -Ifixed -Imodel
 CPPFLAGS = $(EF_DEFS) $(EF_INC)
 # Hidden by default: only declarations marked EF_API (include/edgeflag/ef_api.h) are exported.
@@ -65,6 +67,7 @@ $(BUILD)/%.o: %.c
 include fixed/module.mk
 include model/module.mk
 include rtl_vectors/module.mk
+include util/module.mk
 include dv/dpi/module.mk
 include cli/module.mk
 include proto/module.mk
@@ -90,6 +93,8 @@ demo:
 	@bash tools/install-deps.sh
 	@echo "edgeflag demo: building the library, edgeflag and edgeflag-host (make all, about 30 s the first time)"
 	@$(MAKE) --no-print-directory -s all
+	@# install-deps.sh's default mode installs libusb and libgpiod, so the host has its board links
+	@$(EDGEFLAG_HOST) --version | sed -n 's/^  \(usb\|gpio\) */edgeflag demo: edgeflag-host \1: /p'
 	@mkdir -p $(DEMO_OUT)
 	@for n in 8 16 32; do \
 	    $(EDGEFLAG) render tests/data/svg/tiger.svg -o $(DEMO_OUT)/tiger_$$n.png --samples $$n --size 640x480 || exit 1; \

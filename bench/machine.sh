@@ -6,6 +6,7 @@ cpu=$(grep -m1 'model name' /proc/cpuinfo 2>/dev/null | sed 's/.*: //')
 echo "date:       $(date -u +%Y-%m-%dT%H:%MZ)"
 echo "cpu:        ${cpu:-unknown} ($(nproc 2>/dev/null || echo ?) cores online, shared with other jobs)"
 echo "memory:     $(awk '/MemTotal/ {printf "%.1f GiB", $2 / 1048576}' /proc/meminfo 2>/dev/null)"
+# shellcheck source=/dev/null
 echo "os:         $(. /etc/os-release 2>/dev/null && echo "$PRETTY_NAME") ($(uname -sr))"
 echo "compiler:   $(${CC:-cc} --version | head -n1); C++: $(${CXX:-g++} --version | head -n1)"
 echo "flags:      edgeflag and the AGG adapter -O2 (OPT); Cairo, FreeType: Debian's shared libraries"

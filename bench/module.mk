@@ -27,6 +27,9 @@ BENCH_PKGS := cairo freetype2 libagg
 BENCH_PKG_CFLAGS = $(patsubst -I%,-isystem %,$(shell $(PKG_CONFIG) --cflags $(BENCH_PKGS)))
 BENCH_PKG_LIBS = $(shell $(PKG_CONFIG) --libs $(BENCH_PKGS))
 
+# Layer: the public headers and its own, as a user's program sees the library (tests/layers).
+LAYER_INC_bench := -Iinclude/edgeflag -Ibench
+$(BUILD)/bench/%.o: EF_INC := $(LAYER_INC_bench)
 $(BUILD)/bench/%.o: bench/%.c
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) -Ibench $(CFLAGS_ALL) $(BENCH_PKG_CFLAGS) -c $< -o $@

@@ -32,7 +32,7 @@ static void *ef_create_n(int w, int h, int n)
     if (!st)
         return NULL;
     st->samples = n;
-    if (ef_ctx_create(&st->ctx, w, h, n) != EF_OK || ef_image_alloc(&st->img, w, h) != EF_OK) {
+    if (ef_ctx_create(&st->ctx, w, h, n) != EF_OK || ef_image_create(&st->img, w, h) != EF_OK) {
         ef_ctx_destroy(st->ctx);
         free(st);
         return NULL;
@@ -87,7 +87,7 @@ static void ef_destroy(void *p)
     if (!st)
         return;
     ef_ctx_destroy(st->ctx);
-    ef_image_free(&st->img);
+    ef_image_destroy(&st->img);
     free(st->buf);
     free(st);
 }

@@ -84,7 +84,7 @@ int bscene_load(bscene *s, const char *path, int fit_w, int fit_h, char *err, si
     s->pts = calloc(es.npoints ? es.npoints : 1, sizeof *s->pts);
     if (!s->shapes || !s->start || !s->pts) {
         snprintf(err, errlen, "%s: out of memory", path);
-        ef_scene_free(&es);
+        ef_scene_destroy(&es);
         bscene_free(s);
         return -1;
     }
@@ -105,7 +105,7 @@ int bscene_load(bscene *s, const char *path, int fit_w, int fit_h, char *err, si
         s->pts[i].x = es.points[i].x / 256.0; /* exact: |v| < 2^23 */
         s->pts[i].y = es.points[i].y / 256.0;
     }
-    ef_scene_free(&es);
+    ef_scene_destroy(&es);
     finish(s);
     return 0;
 }

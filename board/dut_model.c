@@ -54,8 +54,8 @@ static void end_frame_state(dut_model *d)
     if (d->ctx) {
         ef_ctx_destroy(d->ctx);
         d->ctx = NULL;
-        ef_image_free(&d->img);
-        ef_vec_collect_free(&d->col);
+        ef_image_destroy(&d->img);
+        ef_vec_collect_destroy(&d->col);
     }
     d->nrx = d->npts = d->ncont = 0;
     d->in_shape = d->open = 0;
@@ -216,12 +216,12 @@ static int push(void *self, const uint8_t c[EF_PROTO_CMD_BYTES])
         const int32_t w = (int32_t)fa, h = (int32_t)fb;
         if (ef_ctx_create(&d->ctx, w, h, d->samples) != EF_OK)
             return fail(d, "FRAME: canvas size out of range");
-        if (ef_image_alloc(&d->img, w, h) != EF_OK) {
+        if (ef_image_create(&d->img, w, h) != EF_OK) {
             ef_ctx_destroy(d->ctx);
             d->ctx = NULL;
             return fail(d, "out of memory");
         }
-        ef_vec_collect_init(&d->col, d->mask | 1u << EF_IF_CMD);
+        ef_vec_collect_create(&d->col, d->mask | 1u << EF_IF_CMD);
         if (ef_trace_enable(d->ctx, d->mask | 1u << EF_IF_CMD, ef_vec_collect_sink, &d->col) != EF_OK ||
             ef_trace_frame_begin(d->ctx) != EF_OK)
             return fail(d, "the model refused to trace");

@@ -38,7 +38,10 @@ ef_board_dut ef_board_dut_rtl(void)
 }
 int ef_board_dut_rtl_built(void) { return 0; }
 void ef_board_dut_rtl_limits(uint32_t *w, uint32_t *h, uint32_t *e, uint32_t *s) { *w = *h = *e = *s = 0; }
-const char *ef_board_dut_rtl_describe(void) { return "not built in (`make host-rtl` builds it; it needs Verilator)"; }
+const char *ef_board_dut_rtl_describe(void)
+{
+    return "not built in (`make host-rtl` builds it and later builds keep it; it needs Verilator)";
+}
 
 #else
 

@@ -6,6 +6,12 @@
 # when `verilator` is on the PATH.  Without it, dut_rtl.c is a stub, --version
 # says so and `--sim-dut rtl` is an error naming `make host-rtl`.
 #
+# The setting is a build option that stays: `make host-rtl` or `make
+# WITH_RTL_DUT=1|auto|0` on the command line writes it to $(BUILD)/options.mk,
+# and every later `make` of that BUILD reads it from there (so a plain `make`
+# no longer relinks edgeflag-host without the RTL).  `make WITH_RTL_DUT=0`
+# turns it off again; `make clean` forgets it.
+#
 # RTL_DUT_NS       sample counts to build a model for (one Verilated model each)
 # RTL_DUT_W_MAX .. the RTL's parameters (what identify then says)
 # RTL_DUT_SRC      the RTL's folder (rtl/, or an RTL variant's copy made by
@@ -15,6 +21,16 @@
 ifndef EF_HOST_RTL_DUT_MK
 EF_HOST_RTL_DUT_MK := 1
 
+EF_OPTIONS := $(BUILD)/options.mk
+-include $(EF_OPTIONS)
+ifeq ($(origin WITH_RTL_DUT),command line)
+# given by the user (a sub-make's copy of the line is not a new choice)
+ifeq ($(MAKELEVEL),0)
+$(shell mkdir -p $(BUILD) && echo 'WITH_RTL_DUT_SAVED := $(WITH_RTL_DUT)' >$(EF_OPTIONS))
+endif
+else ifneq ($(WITH_RTL_DUT_SAVED),)
+WITH_RTL_DUT := $(WITH_RTL_DUT_SAVED)
+endif
 WITH_RTL_DUT ?= 0
 RTL_DUT_NS ?= 8 16 32
 RTL_DUT_W_MAX ?= 1024
@@ -45,7 +61,7 @@ RTL_DUT_VLOBJ := $(BUILD)/host/verilated.o $(BUILD)/host/verilated_threads.o
 RTL_DUT_OBJS := $(RTL_DUT_DIR)/dut_rtl.o $(RTL_DUT_DIR)/dut_rtl_vl.o $(RTL_DUT_LIBS) $(RTL_DUT_VLOBJ)
 RTL_DUT_DEFS := -DEF_RTL_W_MAX=$(RTL_DUT_W_MAX) -DEF_RTL_H_MAX=$(RTL_DUT_H_MAX) -DEF_RTL_E_MAX=$(RTL_DUT_E_MAX) \
                 -DEF_RTL_FAULT='"$(RTL_DUT_FAULT)"'
-RTL_DUT_CXXFLAGS := -std=c++17 $(RTL_DUT_OPT) -g -fPIC -Ihost -Iboard -Iproto -isystem $(VERILATOR_ROOT_DIR)/include \
+RTL_DUT_CXXFLAGS := -std=c++17 $(RTL_DUT_OPT) -g -fPIC -Iboard -Iproto -isystem $(VERILATOR_ROOT_DIR)/include \
                     -isystem $(VERILATOR_ROOT_DIR)/include/vltstd $(foreach n,$(RTL_DUT_NS),-isystem $(RTL_DUT_DIR)/vl$(n) -DEF_RTL_NS$(n))
 # the link: the stub dut_rtl.o out, the real one, the models and the C++ runtime in
 HOST_RTL_DUT_OBJS := $(RTL_DUT_OBJS)
@@ -85,9 +101,10 @@ $(BUILD)/host/verilated_threads.o: $(VERILATOR_ROOT_DIR)/include/verilated_threa
 	$(CXX) $(RTL_DUT_VLFLAGS) -c $< -o $@
 $(RTL_DUT_DIR)/dut_rtl_vl.o: board/dut_rtl.cpp board/dut_rtl.h $(RTL_DUT_LIBS)
 	$(CXX) $(RTL_DUT_CXXFLAGS) -Wall -Wextra -Werror -c $< -o $@
+$(RTL_DUT_DIR)/dut_rtl.o: EF_INC := $(LAYER_INC_board)
 $(RTL_DUT_DIR)/dut_rtl.o: board/dut_rtl.c board/dut_rtl.h board/rtl_dut.mk $(RTL_DUT_SRC_FLAG)
 	@mkdir -p $(dir $@)
-	$(CC) $(CPPFLAGS) $(HOST_CPPFLAGS) $(CFLAGS_ALL) -DEF_RTL_DUT $(RTL_DUT_DEFS) -c $< -o $@
+	$(CC) $(CPPFLAGS) $(CFLAGS_ALL) -DEF_RTL_DUT $(RTL_DUT_DEFS) -c $< -o $@
 else
 HOST_RTL_DUT_OBJS :=
 HOST_RTL_DUT_STUB :=
@@ -102,12 +119,15 @@ HOST_RTL_FLAG_TEXT := $(HOST_RTL_HAVE) $(RTL_DUT_NS) $(RTL_DUT_W_MAX) $(RTL_DUT_
 $(shell mkdir -p $(dir $(RTL_DUT_DIR)) && { [ "$$(cat $(HOST_RTL_FLAG) 2>/dev/null)" = "$(HOST_RTL_FLAG_TEXT)" ] || \
     echo "$(HOST_RTL_FLAG_TEXT)" >$(HOST_RTL_FLAG); })
 
-# edgeflag-host with the RTL DUT, or a clear error without Verilator.
+# edgeflag-host with the RTL DUT (remembered, as `make WITH_RTL_DUT=1`), or a clear error without
+# Verilator.
 .PHONY: host-rtl
 host-rtl:
 	@command -v $(VERILATOR) >/dev/null 2>&1 || { echo "make host-rtl: verilator is not installed" \
 	    "(Debian: apt-get install verilator; tools/install-deps.sh test)"; exit 1; }
+	@mkdir -p $(BUILD) && echo 'WITH_RTL_DUT_SAVED := 1' >$(EF_OPTIONS)
 	+@$(MAKE) --no-print-directory WITH_RTL_DUT=1 host
+	@echo "make host-rtl: edgeflag-host has the RTL DUT; later builds of $(BUILD) keep it (make WITH_RTL_DUT=0 drops it)"
 
 # At most 90 s with the Verilator build (tests/host/rtl.sh builds what it
 # needs: edgeflag-host with the RTL DUT, one with a planted RTL fault, one

@@ -1,12 +1,8 @@
 /*
  * args.c - strict argument parsing for `edgeflag` subcommands: one driver
  * (ef_cli_getopt) that reads every command's line with getopt_long and that
- * command's option table, and the value parsers the commands share.
- *
- * Values are parsed by hand rather than with strtol: strtol accepts leading
- * blanks, a sign, "0x" and trailing junk unless every caller checks carefully,
- * and a model used as a golden reference should refuse "--samples 8x" rather
- * than quietly render something else.
+ * command's option table, and the value parsers the commands share (the
+ * numbers themselves are util/parse.c's, shared with edgeflag-host).
  */
 #include "cli.h"
 #include "ef_trace.h"
@@ -15,45 +11,6 @@
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
-
-/* Digits s[0..n) only, value in [min, max]. */
-static int parse_digits(const char *s, size_t n, int32_t min, int32_t max, int32_t *out)
-{
-    int64_t v = 0;
-    if (n == 0)
-        return 0;
-    for (size_t i = 0; i < n; i++) {
-        if (s[i] < '0' || s[i] > '9')
-            return 0;
-        v = v * 10 + (s[i] - '0');
-        if (v > max)
-            return 0; /* also keeps v far from int64 overflow */
-    }
-    if (v < min)
-        return 0;
-    *out = (int32_t)v;
-    return 1;
-}
-
-int ef_cli_parse_int(const char *s, int32_t min, int32_t max, int32_t *out)
-{
-    return s ? parse_digits(s, strlen(s), min, max, out) : 0;
-}
-
-int ef_cli_parse_size(const char *s, int32_t max, int32_t *w, int32_t *h)
-{
-    const char *x;
-    int32_t tw, th;
-
-    if (!s || (x = strchr(s, 'x')) == NULL)
-        return 0;
-    /* Both sides parsed alike (leading zeros included), stored only if both are good. */
-    if (!parse_digits(s, (size_t)(x - s), 1, max, &tw) || !parse_digits(x + 1, strlen(x + 1), 1, max, &th))
-        return 0;
-    *w = tw;
-    *h = th;
-    return 1;
-}
 
 /* getopt_long's own extras are switched off here, so that what the command
  * line means is docs/cli.md and not the C library's version of it:
@@ -228,7 +185,7 @@ void ef_cli_error(const char *fmt, ...)
 
 int ef_cli_parse_samples(const char *cmd, const char *v, int32_t *samples)
 {
-    if (!ef_cli_parse_int(v, 1, EF_SAMPLES_MAX, samples) || !ef_samples_valid(*samples))
+    if (!ef_util_parse_int(v, 1, EF_SAMPLES_MAX, samples) || !ef_samples_valid(*samples))
         return ef_cli_usage_error(cmd, "--samples must be " EF_SAMPLES_TEXT ", not '%s'", v), 0;
     return 1;
 }
@@ -246,7 +203,7 @@ int ef_cli_scene_value(const char *cmd, int val, const char *v, ef_cli_scene *s)
             return ef_cli_usage_error(cmd, "--rule must be nonzero or evenodd, not '%s'", v), -1;
         return 1;
     case EF_OPT_SIZE:
-        if (!ef_cli_parse_size(v, EF_MAX_CANVAS, s->fit_w, s->fit_h))
+        if (!ef_util_parse_size(v, EF_MAX_CANVAS, s->fit_w, s->fit_h))
             return ef_cli_usage_error(cmd, "--size must be WxH with 1 <= W, H <= %d, not '%s'", EF_MAX_CANVAS, v), -1;
         return 1;
     case EF_OPT_FILTER:

@@ -12,12 +12,14 @@
 
 #include "ef_vec.h"
 #include "image_write.h"
+#include "parse.h" /* ef_util_parse_int, ef_util_parse_size */
 
 /* Exit codes, documented in docs/cli.md.  Scripts depend on them: do not
  * renumber.  70 is EX_SOFTWARE from BSD sysexits.h. */
 enum {
     EF_CLI_EXIT_OK = 0,
-    EF_CLI_EXIT_USAGE = 2,    /* bad command line */
+    EF_CLI_EXIT_MISMATCH = 1, /* check: a mismatch, or a dump missing */
+    EF_CLI_EXIT_USAGE = 2,    /* bad command line (check: also an input it cannot read) */
     EF_CLI_EXIT_INPUT = 3,    /* input unreadable, malformed or over a limit */
     EF_CLI_EXIT_OUTPUT = 4,   /* output could not be written */
     EF_CLI_EXIT_INTERNAL = 70 /* a bug, or out of memory */
@@ -47,7 +49,7 @@ typedef struct ef_cli_render_args {
     int32_t samples;      /* 8, 16 or 32 (default EF_CLI_SAMPLES_DEFAULT) */
     int rule;             /* -1: each shape's own; else an ef_rule */
     int32_t fit_w, fit_h; /* 0, 0: the file's own size */
-    ef_cli_format fmt;
+    ef_util_format fmt;
     int filter, subpixel; /* ef_filter, ef_subpixel: box, none (0, 0) by default */
 } ef_cli_render_args;
 int ef_cli_render_parse(int argc, char **argv, ef_cli_render_args *a);
@@ -61,14 +63,14 @@ int ef_cli_patterns_parse(int argc, char **argv, ef_cli_patterns_args *a);
 
 typedef struct ef_cli_check_args {
     const char *expected, *actual;
-    int32_t errors;         /* mismatches reported: 20 (default), 0 = all */
-    int cycles;             /* 1: --cycles (default); 0: --transactions */
-    const char *junit;      /* --junit FILE, or NULL */
-    const char *diff_image; /* --diff-image FILE, or NULL */
-    ef_cli_format diff_fmt; /* its format (.png, or .pam without libpng) */
-    uint32_t only;          /* --interfaces: interfaces to compare (default all) */
-    uint32_t allow_missing; /* --allow-missing: interfaces whose dump may be absent */
-    const char *name;       /* --name: the JUnit suite and class name, or NULL */
+    int32_t errors;          /* mismatches reported: 20 (default), 0 = all */
+    int cycles;              /* 1: --cycles (default); 0: --transactions */
+    const char *junit;       /* --junit FILE, or NULL */
+    const char *diff_image;  /* --diff-image FILE, or NULL */
+    ef_util_format diff_fmt; /* its format (.png, or .pam without libpng) */
+    uint32_t only;           /* --interfaces: interfaces to compare (default all) */
+    uint32_t allow_missing;  /* --allow-missing: interfaces whose dump may be absent */
+    const char *name;        /* --name: the JUnit suite and class name, or NULL */
 } ef_cli_check_args;
 int ef_cli_check_parse(int argc, char **argv, ef_cli_check_args *a);
 
@@ -179,14 +181,6 @@ int ef_cli_filter_value(const char *cmd, int val, const char *v, int *filter, in
 int ef_cli_parse_samples(const char *cmd, const char *v, int32_t *samples);
 struct ef_ctx;
 int ef_cli_apply_filter(struct ef_ctx *ctx, const char *input, int filter, int subpixel);
-
-/* Exact decimal integer: one or more ASCII digits and nothing else (no sign,
- * no spaces, no base prefix), value in [min, max].  Returns 1 and stores it,
- * or 0.  Overflow is impossible: digits stop counting once past max. */
-int ef_cli_parse_int(const char *s, int32_t min, int32_t max, int32_t *out);
-
-/* "WxH" (lower-case x), each in [1, max].  Returns 1 or 0. */
-int ef_cli_parse_size(const char *s, int32_t max, int32_t *w, int32_t *h);
 
 /* A comma-separated list of names[0..n-1], each at most once, as bits
  * (1 << k); 1, or 0 after a usage error naming opt and the valid names. */

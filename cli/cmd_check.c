@@ -6,7 +6,7 @@
  * atomically.  Exit 0 pass, 1 mismatch, 2 usage or an input that cannot be
  * read, 4 a report not written, 70 internal (docs/cli.md).
  */
-#include "atomic_file.h"
+#include "check_files.h"
 #include "cli.h"
 #include "ef_check.h"
 
@@ -92,7 +92,7 @@ static int on_option(void *p, int val, const char *v)
         a->cycles = val == EF_OPT_CYCLES;
         return -1;
     case EF_OPT_ERRORS:
-        if (!ef_cli_parse_int(v, 0, INT32_MAX, &a->errors))
+        if (!ef_util_parse_int(v, 0, INT32_MAX, &a->errors))
             return ef_cli_usage_error(CMD, "--errors must be a number 0..%d (0 = all), not '%s'", INT32_MAX, v);
         return -1;
     case EF_OPT_INTERFACES:
@@ -118,10 +118,10 @@ static int on_option(void *p, int val, const char *v)
         a->junit = v;
         return -1;
     default: /* EF_OPT_DIFF_IMAGE */
-        a->diff_fmt = ef_cli_format_from_path(v);
-        if (a->diff_fmt != EF_CLI_FMT_PNG && a->diff_fmt != EF_CLI_FMT_PAM)
+        a->diff_fmt = ef_util_format_from_path(v);
+        if (a->diff_fmt != EF_UTIL_FMT_PNG && a->diff_fmt != EF_UTIL_FMT_PAM)
             return ef_cli_usage_error(CMD, "--diff-image must name a .png (or .pam) file, not '%s'", v);
-        if (!ef_cli_format_available(a->diff_fmt))
+        if (!ef_util_format_available(a->diff_fmt))
             return ef_cli_usage_error(CMD,
                                       "'%s': this edgeflag was built without PNG support (WITH_PNG=0); "
                                       "use .pam",
@@ -167,43 +167,16 @@ int ef_cli_check_parse(int argc, char **argv, ef_cli_check_args *a)
 
 /* ---------------------------------------------------------------- the command */
 
-/* The JUnit XML, atomically; 0, or -1 with errno. */
-static int write_junit(const ef_check_result *res, const char *path)
+/* The command's exit code for a run's status (docs/cli.md). */
+static int exit_code(ef_check_status st)
 {
-    ef_cli_atomic af;
-    if (ef_cli_atomic_open(&af, path) != 0)
-        return -1;
-    if (ef_check_junit(res, af.fp) != 0) {
-        int saved = errno;
-        ef_cli_atomic_abort(&af);
-        errno = saved;
-        return -1;
+    switch (st) {
+    case EF_CHECK_PASS: return EF_CLI_EXIT_OK;
+    case EF_CHECK_FAIL: return EF_CLI_EXIT_MISMATCH;
+    case EF_CHECK_INPUT: return EF_CLI_EXIT_USAGE; /* unreadable or malformed input: 2, as a usage error */
+    case EF_CHECK_NOMEM: break;
     }
-    return ef_cli_atomic_commit(&af);
-}
-
-/* The diff image, atomically; 0, or -1 with a message in err and errno. */
-static int write_diff_image(const ef_check_result *res, const char *path, ef_cli_format fmt, char *err, size_t errsize)
-{
-    ef_image img;
-    ef_cli_atomic af;
-    int rc = -1;
-    if (ef_check_diff_image(res, &img, err, errsize) != 0)
-        return -1;
-    errno = 0;
-    if (ef_cli_atomic_open(&af, path) != 0) {
-        snprintf(err, errsize, "%s", strerror(errno));
-    } else if (ef_cli_write_image(af.fp, fmt, &img, err, errsize) != 0) {
-        int saved = errno;
-        ef_cli_atomic_abort(&af);
-        errno = saved;
-    } else if (ef_cli_atomic_commit(&af) != 0) {
-        snprintf(err, errsize, "%s", strerror(errno));
-    } else {
-        rc = 0;
-    }
-    ef_image_free(&img);
-    return rc;
+    return EF_CLI_EXIT_INTERNAL;
 }
 
 int ef_cli_check(int argc, char **argv)
@@ -225,7 +198,7 @@ int ef_cli_check(int argc, char **argv)
     mallopt(M_TRIM_THRESHOLD, 512 << 20);
 #endif
 
-    ef_check_opts_init(&o);
+    ef_check_opts_defaults(&o);
     o.expected = a.expected;
     o.actual = a.actual;
     o.errors = a.errors;
@@ -236,16 +209,16 @@ int ef_cli_check(int argc, char **argv)
     o.keep_marks = a.diff_image != NULL;
     o.report = stdout;
     o.status = stderr;
-    rc = ef_check_run(&o, &res); /* the exit codes are the command's (docs/cli.md) */
+    const ef_check_status st = ef_check_run(&o, &res);
 
     int out_rc = 0;
-    if (a.junit && rc != EF_CHECK_INTERNAL && write_junit(&res, a.junit) != 0) {
+    if (a.junit && st != EF_CHECK_NOMEM && ef_util_check_junit(&res, a.junit) != 0) {
         ef_cli_error("cannot write '%s': %s", a.junit, strerror(errno));
         out_rc = EF_CLI_EXIT_OUTPUT;
     }
-    if (a.diff_image && (rc == EF_CHECK_PASS || rc == EF_CHECK_FAIL)) {
+    if (a.diff_image && (st == EF_CHECK_PASS || st == EF_CHECK_FAIL)) {
         char err[256];
-        if (write_diff_image(&res, a.diff_image, a.diff_fmt, err, sizeof err) != 0) {
+        if (ef_util_check_diff_image(&res, a.diff_image, a.diff_fmt, err, sizeof err) != 0) {
             ef_cli_error("cannot write '%s': %s", a.diff_image, err);
             out_rc = errno == ENOMEM ? EF_CLI_EXIT_INTERNAL : EF_CLI_EXIT_OUTPUT;
         } else {
@@ -253,10 +226,10 @@ int ef_cli_check(int argc, char **argv)
                     res.marks);
         }
     }
-    ef_check_result_free(&res);
-    if (rc != EF_CHECK_PASS && rc != EF_CHECK_FAIL)
-        return rc;
+    ef_check_result_destroy(&res);
+    if (st != EF_CHECK_PASS && st != EF_CHECK_FAIL)
+        return exit_code(st);
     if (out_rc != 0)
         return out_rc;
-    return rc;
+    return exit_code(st);
 }

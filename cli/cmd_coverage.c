@@ -246,7 +246,7 @@ typedef struct vset {
 static void vset_free(vset *v)
 {
     for (int i = 0; i < EF_IF_COUNT; i++)
-        ef_vec_dump_free(&v->d[i]);
+        ef_vec_dump_destroy(&v->d[i]);
 }
 
 static int is_file(const char *p)

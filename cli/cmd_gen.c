@@ -99,8 +99,8 @@ static int parse_shard(const char *s, uint32_t *i, uint32_t *n)
         return 0;
     memcpy(buf, s, len);
     buf[len] = '\0';
-    if (!ef_cli_parse_int(buf, 1, (int32_t)EF_GEN_MAX_CASES, &a) ||
-        !ef_cli_parse_int(slash + 1, 1, (int32_t)EF_GEN_MAX_CASES, &b) || a > b)
+    if (!ef_util_parse_int(buf, 1, (int32_t)EF_GEN_MAX_CASES, &a) ||
+        !ef_util_parse_int(slash + 1, 1, (int32_t)EF_GEN_MAX_CASES, &b) || a > b)
         return 0;
     *i = (uint32_t)a;
     *n = (uint32_t)b;
@@ -146,12 +146,12 @@ static int on_option(void *p, int val, const char *v)
                                       v);
         break;
     case EF_OPT_LEVEL:
-        if (!ef_cli_parse_int(v, 1, 2, &l->level))
+        if (!ef_util_parse_int(v, 1, 2, &l->level))
             return ef_cli_usage_error(CMD, "--level must be 1 or 2, not '%s'", v);
         break;
     case EF_OPT_N:
         l->seen_n = 1;
-        if (!ef_cli_parse_int(v, 0, (int32_t)EF_GEN_MAX_CASES, &l->k))
+        if (!ef_util_parse_int(v, 0, (int32_t)EF_GEN_MAX_CASES, &l->k))
             return ef_cli_usage_error(CMD, "-n must be a number of random cases up to %u, not '%s'", EF_GEN_MAX_CASES,
                                       v);
         break;
@@ -178,7 +178,7 @@ static int finish(void *p)
     if (a->list && a->force)
         return ef_cli_usage_error(CMD, "--list writes no files: --force makes no sense with it");
 
-    ef_gen_config_init(&a->cfg, l->level);
+    ef_gen_config_defaults(&a->cfg, l->level);
     a->cfg.seed = l->seed;
     a->cfg.grid = l->samples;
     if (l->seen_n) {
@@ -226,18 +226,18 @@ static void index_name(const gen_args *a, char *buf, size_t size)
 
 static int write_file(const char *path, const ef_gen_text *t)
 {
-    ef_cli_atomic af;
-    if (ef_cli_atomic_open(&af, path) != 0) {
+    ef_util_atomic af;
+    if (ef_util_atomic_open(&af, path) != 0) {
         ef_cli_error("cannot write '%s': %s", path, strerror(errno));
         return EF_CLI_EXIT_OUTPUT;
     }
     if (t->len && fwrite(t->data, 1, t->len, af.fp) != t->len) {
         int e = errno;
-        ef_cli_atomic_abort(&af);
+        ef_util_atomic_abort(&af);
         ef_cli_error("cannot write '%s': %s", path, strerror(e ? e : EIO));
         return EF_CLI_EXIT_OUTPUT;
     }
-    if (ef_cli_atomic_commit(&af) != 0) {
+    if (ef_util_atomic_commit(&af) != 0) {
         ef_cli_error("cannot write '%s': %s", path, strerror(errno));
         return EF_CLI_EXIT_OUTPUT;
     }
@@ -275,7 +275,7 @@ int ef_cli_gen(int argc, char **argv)
     total = ef_gen_total(&a.cfg);
 
     if (!a.list) {
-        if (ef_cli_make_dirs(a.dir) != 0) {
+        if (ef_util_make_dirs(a.dir) != 0) {
             ef_cli_error("cannot create directory '%s': %s", a.dir, strerror(errno));
             return EF_CLI_EXIT_OUTPUT;
         }
@@ -303,7 +303,7 @@ int ef_cli_gen(int argc, char **argv)
             st = ef_gen_index_row(&gc, &index);
         if (st == EF_OK && !a.list)
             st = ef_gen_format(&a.cfg, &gc, &text);
-        ef_gen_case_free(&gc);
+        ef_gen_case_destroy(&gc);
         if (st != EF_OK) {
             ef_cli_error("case %" PRIu32 ": %s", k, ef_strerror(st));
             rc = EF_CLI_EXIT_INTERNAL; /* out of memory, or a bug in a builder */
@@ -343,7 +343,7 @@ int ef_cli_gen(int argc, char **argv)
            a.dir, path);
     rc = fflush(stdout) == 0 ? EF_CLI_EXIT_OK : EF_CLI_EXIT_OUTPUT;
 out:
-    ef_gen_text_free(&text);
-    ef_gen_text_free(&index);
+    ef_gen_text_destroy(&text);
+    ef_gen_text_destroy(&index);
     return rc;
 }

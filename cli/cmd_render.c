@@ -91,10 +91,10 @@ static int finish(void *p)
         ef_cli_error("cannot write '%s': %s", a->output, strerror(EISDIR));
         return EF_CLI_EXIT_OUTPUT;
     }
-    a->fmt = ef_cli_format_from_path(a->output);
-    if (a->fmt == EF_CLI_FMT_UNKNOWN)
+    a->fmt = ef_util_format_from_path(a->output);
+    if (a->fmt == EF_UTIL_FMT_UNKNOWN)
         return ef_cli_usage_error(CMD, "cannot tell the format of '%s': use .png, .pam or .pgm", a->output);
-    if (!ef_cli_format_available(a->fmt))
+    if (!ef_util_format_available(a->fmt))
         return ef_cli_usage_error(CMD,
                                   "'%s': this edgeflag was built without PNG support "
                                   "(WITH_PNG=0); use .pam or .pgm",
@@ -127,20 +127,20 @@ static void on_note(void *user, const char *file, uint32_t line, uint32_t col, c
 
 static int write_output(const render_args *a, const ef_image *img)
 {
-    ef_cli_atomic af;
+    ef_util_atomic af;
     char err[256];
 
-    if (ef_cli_atomic_open(&af, a->output) != 0) {
+    if (ef_util_atomic_open(&af, a->output) != 0) {
         ef_cli_error("cannot write '%s': %s", a->output, strerror(errno));
         return EF_CLI_EXIT_OUTPUT;
     }
-    if (ef_cli_write_image(af.fp, a->fmt, img, err, sizeof err) != 0) {
+    if (ef_util_write_image(af.fp, a->fmt, img, err, sizeof err) != 0) {
         int nomem = errno == ENOMEM;
-        ef_cli_atomic_abort(&af);
+        ef_util_atomic_abort(&af);
         ef_cli_error("cannot write '%s': %s", a->output, err);
         return nomem ? EF_CLI_EXIT_INTERNAL : EF_CLI_EXIT_OUTPUT;
     }
-    if (ef_cli_atomic_commit(&af) != 0) {
+    if (ef_util_atomic_commit(&af) != 0) {
         ef_cli_error("cannot write '%s': %s", a->output, strerror(errno));
         return EF_CLI_EXIT_OUTPUT;
     }
@@ -209,7 +209,7 @@ int ef_cli_render(int argc, char **argv)
             ef_error_format(&err, buf, sizeof buf);
         }
         ef_cli_error("%s", buf);
-        ef_scene_free(&scene);
+        ef_scene_destroy(&scene);
         return exit_for(st);
     }
 
@@ -223,7 +223,7 @@ int ef_cli_render(int argc, char **argv)
     if ((rc = ef_cli_apply_filter(ctx, a.input, a.filter, a.subpixel)) >= 0)
         goto out;
     rc = 0;
-    st = ef_image_alloc(&img, scene.width, scene.height);
+    st = ef_image_create(&img, scene.width, scene.height);
     if (st != EF_OK) {
         ef_cli_error("%s: image %" PRId32 "x%" PRId32 ": %s", a.input, scene.width, scene.height, ef_strerror(st));
         rc = exit_for(st);
@@ -253,9 +253,9 @@ int ef_cli_render(int argc, char **argv)
                 a.input, diag.winding_overflows);
     rc = write_output(&a, &img);
 out:
-    ef_image_free(&img);
+    ef_image_destroy(&img);
     if (ctx)
         ef_ctx_destroy(ctx);
-    ef_scene_free(&scene);
+    ef_scene_destroy(&scene);
     return rc;
 }

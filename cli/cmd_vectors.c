@@ -119,12 +119,12 @@ static int on_option(void *p, int val, const char *v)
         l->scene_options = 1;
         return -1;
     case EF_OPT_DUT_LIMITS:
-        if (!ef_cli_parse_size(v, EF_MAX_CANVAS, &a->dut_w, &a->dut_h))
+        if (!ef_util_parse_size(v, EF_MAX_CANVAS, &a->dut_w, &a->dut_h))
             return ef_cli_usage_error(CMD, "--dut-limits takes WxH (each 1..%d), not '%s'", EF_MAX_CANVAS, v);
         l->scene_options = 1;
         return -1;
     case EF_OPT_DUT_EDGES:
-        if (!ef_cli_parse_int(v, 1, INT32_MAX, &a->dut_e))
+        if (!ef_util_parse_int(v, 1, INT32_MAX, &a->dut_e))
             return ef_cli_usage_error(CMD, "--dut-edges takes a positive number, not '%s'", v);
         l->scene_options = 1;
         return -1;
@@ -213,23 +213,23 @@ static int write_rtl_headers(const ef_cli_vectors_args *a)
             return EF_CLI_EXIT_OUTPUT;
         }
     }
-    if (ef_cli_make_dirs(a->dir) != 0) {
+    if (ef_util_make_dirs(a->dir) != 0) {
         ef_cli_error("cannot create '%s': %s", a->dir, strerror(errno));
         return EF_CLI_EXIT_OUTPUT;
     }
     for (int k = 0; k < 2; k++) {
-        ef_cli_atomic af;
-        if (ef_cli_atomic_open(&af, path[k]) != 0) {
+        ef_util_atomic af;
+        if (ef_util_atomic_open(&af, path[k]) != 0) {
             ef_cli_error("cannot write '%s': %s", path[k], strerror(errno));
             return EF_CLI_EXIT_OUTPUT;
         }
         ef_vec_rtl_header_write(af.fp, k);
         if (ferror(af.fp)) {
-            ef_cli_atomic_abort(&af);
+            ef_util_atomic_abort(&af);
             ef_cli_error("cannot write '%s'", path[k]);
             return EF_CLI_EXIT_OUTPUT;
         }
-        if (ef_cli_atomic_commit(&af) != 0) {
+        if (ef_util_atomic_commit(&af) != 0) {
             ef_cli_error("cannot write '%s': %s", path[k], strerror(errno));
             return EF_CLI_EXIT_OUTPUT;
         }
@@ -376,7 +376,7 @@ int ef_cli_vectors(int argc, char **argv)
 
     st = ef_ctx_create(&ctx, scene.width, scene.height, (int)a.samples);
     if (st == EF_OK)
-        st = ef_image_alloc(&img, scene.width, scene.height);
+        st = ef_image_create(&img, scene.width, scene.height);
     if (st == EF_OK && (c = malloc(sizeof *c)) == NULL)
         st = EF_ERR_NOMEM;
     if (st != EF_OK) {
@@ -387,7 +387,7 @@ int ef_cli_vectors(int argc, char **argv)
     }
     if ((rc = ef_cli_apply_filter(ctx, a.input, a.filter, a.subpixel)) >= 0)
         goto out;
-    ef_vec_collect_init(c, a.ifaces);
+    ef_vec_collect_create(c, a.ifaces);
     memset(&info, 0, sizeof info);
     info.input = ef_vec_base_name(a.input);
     info.width = scene.width;
@@ -415,12 +415,12 @@ int ef_cli_vectors(int argc, char **argv)
     rc = fflush(stdout) == 0 ? EF_CLI_EXIT_OK : EF_CLI_EXIT_OUTPUT;
 out:
     if (c) {
-        ef_vec_collect_free(c);
+        ef_vec_collect_destroy(c);
         free(c);
     }
-    ef_image_free(&img);
+    ef_image_destroy(&img);
     if (ctx)
         ef_ctx_destroy(ctx);
-    ef_scene_free(&scene);
+    ef_scene_destroy(&scene);
     return rc;
 }

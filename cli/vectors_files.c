@@ -30,12 +30,12 @@
 
 #define MANIFEST "manifest.json"
 #define MAX_FILES (EF_IF_COUNT + 4)
-_Static_assert(MAX_FILES <= EF_CLI_ATOMIC_MAX, "every file's temporary is open at once");
+_Static_assert(MAX_FILES <= EF_UTIL_ATOMIC_MAX, "every file's temporary is open at once");
 
 /* The frame in the best format this build can write. */
-static ef_cli_format frame_format(void)
+static ef_util_format frame_format(void)
 {
-    return ef_cli_format_available(EF_CLI_FMT_PNG) ? EF_CLI_FMT_PNG : EF_CLI_FMT_PAM;
+    return ef_util_format_available(EF_UTIL_FMT_PNG) ? EF_UTIL_FMT_PNG : EF_UTIL_FMT_PAM;
 }
 
 /* The files of this run in writing order, without the manifest.  With
@@ -69,8 +69,8 @@ static size_t plan(const ef_cli_vec_job *job, ef_vec_file *f)
             n++;
         }
     }
-    snprintf(f[n].name, sizeof f[n].name, "frame%s.%s", tag, frame_format() == EF_CLI_FMT_PNG ? "png" : "pam");
-    f[n].format = frame_format() == EF_CLI_FMT_PNG ? "png" : "pam";
+    snprintf(f[n].name, sizeof f[n].name, "frame%s.%s", tag, frame_format() == EF_UTIL_FMT_PNG ? "png" : "pam");
+    f[n].format = frame_format() == EF_UTIL_FMT_PNG ? "png" : "pam";
     f[n].iface = -1;
     f[n].role = "expected";
     n++;
@@ -127,11 +127,11 @@ typedef struct body {
 static int write_manifest(ef_vec_out *o, ef_vec_file *m, const body *b)
 {
     char path[4096];
-    ef_cli_atomic af;
+    ef_util_atomic af;
 
     if (join(path, sizeof path, b->job->dir, m->name) != 0)
         return EF_CLI_EXIT_OUTPUT;
-    if (ef_cli_atomic_open(&af, path) != 0) {
+    if (ef_util_atomic_open(&af, path) != 0) {
         ef_cli_error("cannot write '%s': %s", path, strerror(errno));
         return EF_CLI_EXIT_OUTPUT;
     }
@@ -139,18 +139,18 @@ static int write_manifest(ef_vec_out *o, ef_vec_file *m, const body *b)
 #ifndef EF_NO_MANIFEST
     if (ef_vec_manifest_write(o, b->job->info, b->job->collect, b->files, b->nfiles) != 0) {
         (void)ef_vec_out_finish(o, NULL);
-        ef_cli_atomic_abort(&af);
+        ef_util_atomic_abort(&af);
         ef_cli_error("out of memory writing '%s'", path);
         return EF_CLI_EXIT_INTERNAL;
     }
 #endif
     if (ef_vec_out_finish(o, NULL) != 0) {
         int e = errno;
-        ef_cli_atomic_abort(&af);
+        ef_util_atomic_abort(&af);
         ef_cli_error("cannot write '%s': %s", path, strerror(e));
         return EF_CLI_EXIT_OUTPUT;
     }
-    if (ef_cli_atomic_commit(&af) != 0) {
+    if (ef_util_atomic_commit(&af) != 0) {
         ef_cli_error("cannot write '%s': %s", path, strerror(errno));
         return EF_CLI_EXIT_OUTPUT;
     }
@@ -162,7 +162,7 @@ static int write_manifest(ef_vec_out *o, ef_vec_file *m, const body *b)
 typedef struct file_job {
     ef_vec_file *f;
     char path[4096];
-    ef_cli_atomic af;
+    ef_util_atomic af;
     int rc;        /* EF_CLI_EXIT_OK, or the exit code of its failure */
     int err;       /* errno of a failed write */
     char why[256]; /* the frame's encoder's message */
@@ -195,7 +195,7 @@ static int encode_frame(const ef_image *img, unsigned char **buf, size_t *len, f
         snprintf(j->why, sizeof j->why, "out of memory");
         return -1;
     }
-    rc = ef_cli_write_image(ms, frame_format(), img, j->why, sizeof j->why);
+    rc = ef_util_write_image(ms, frame_format(), img, j->why, sizeof j->why);
     if (fclose(ms) != 0 || rc != 0) {
         free(p);
         if (!rc)
@@ -230,7 +230,7 @@ static void write_one(ef_vec_out *o, const ef_cli_vec_job *job, file_job *j)
         ef_vec_out_write(o, frame, len);
         free(frame);
     }
-    if (ef_vec_out_finish(o, digest) != 0 || ef_cli_atomic_sync(&j->af) != 0) {
+    if (ef_vec_out_finish(o, digest) != 0 || ef_util_atomic_sync(&j->af) != 0) {
         j->err = errno;
         j->rc = EF_CLI_EXIT_OUTPUT;
     } else if (nomem) {
@@ -334,7 +334,7 @@ int ef_cli_vec_write(const ef_cli_vec_job *job, size_t *nfiles)
         rc = EF_CLI_EXIT_INTERNAL;
         goto out;
     }
-    if (ef_cli_make_dirs(job->dir) != 0) {
+    if (ef_util_make_dirs(job->dir) != 0) {
         ef_cli_error("cannot create directory '%s': %s", job->dir, strerror(errno));
         rc = EF_CLI_EXIT_OUTPUT;
         goto out;
@@ -364,7 +364,7 @@ int ef_cli_vec_write(const ef_cli_vec_job *job, size_t *nfiles)
             rc = EF_CLI_EXIT_OUTPUT;
             goto out;
         }
-        if (ef_cli_atomic_open(&j->af, j->path) != 0) {
+        if (ef_util_atomic_open(&j->af, j->path) != 0) {
             ef_cli_error("cannot write '%s': %s", j->path, strerror(errno));
             rc = EF_CLI_EXIT_OUTPUT;
             goto out;
@@ -387,7 +387,7 @@ int ef_cli_vec_write(const ef_cli_vec_job *job, size_t *nfiles)
             ef_cli_error("out of memory writing '%s'", j->path);
     }
     for (size_t k = 0; k < n && rc == EF_CLI_EXIT_OK; k++) {
-        if (ef_cli_atomic_commit(&files[k].af) != 0) {
+        if (ef_util_atomic_commit(&files[k].af) != 0) {
             ef_cli_error("cannot write '%s': %s", files[k].path, strerror(errno));
             rc = EF_CLI_EXIT_OUTPUT;
         } else {
@@ -415,7 +415,7 @@ int ef_cli_vec_write(const ef_cli_vec_job *job, size_t *nfiles)
     }
 out:
     for (size_t k = 0; k < opened; k++)
-        ef_cli_atomic_abort(&files[k].af); /* those not committed: removed */
+        ef_util_atomic_abort(&files[k].af); /* those not committed: removed */
     free(files);
     free(l);
     free(o);

@@ -21,4 +21,4 @@ HOST_LIBS += $(HOST_GPIO_LIBS)
 # The backend alone sees libgpiod's headers.
 $(BUILD)/host/gpio_$(HOST_GPIO_BACKEND).o: host/gpio_$(HOST_GPIO_BACKEND).c
 	@mkdir -p $(dir $@)
-	$(CC) $(CPPFLAGS) $(HOST_CPPFLAGS) $(CFLAGS_ALL) $(HOST_GPIO_CFLAGS) -DEF_GPIOD_VERSION='"$(GPIOD_VERSION)"' -c $< -o $@
+	$(CC) $(CPPFLAGS) $(CFLAGS_ALL) $(HOST_GPIO_CFLAGS) -DEF_GPIOD_VERSION='"$(GPIOD_VERSION)"' -c $< -o $@

@@ -454,11 +454,11 @@ static void draw_progress(hl *h, double t0, int final)
 }
 
 /* vectors.actual.bin made whole (or, after a failed write, left out). */
-static int commit_results(hl *h, ef_cli_atomic *af, int bad)
+static int commit_results(hl *h, ef_util_atomic *af, int bad)
 {
     if (bad)
-        ef_cli_atomic_abort(af);
-    if (bad || ef_cli_atomic_commit(af) != 0)
+        ef_util_atomic_abort(af);
+    if (bad || ef_util_atomic_commit(af) != 0)
         return fail(h, EF_HX_OUTPUT, "cannot write vectors.actual.bin: %s", strerror(errno));
     return 0;
 }
@@ -468,8 +468,8 @@ static int write_results(hl *h)
 {
     char path[4200];
     snprintf(path, sizeof path, "%s/vectors.actual.bin", h->dir);
-    ef_cli_atomic af;
-    if (ef_cli_atomic_open(&af, path) != 0)
+    ef_util_atomic af;
+    if (ef_util_atomic_open(&af, path) != 0)
         return fail(h, EF_HX_OUTPUT, "cannot write vectors.actual.bin: %s", strerror(errno));
     uint8_t hd[EF_VEC_BIN_HEADER];
     ef_vec_info info = h->info;
@@ -767,8 +767,8 @@ static int write_rebuilt(hl *h)
     }
     char path[4200];
     snprintf(path, sizeof path, "%s/vectors.actual.bin", h->dir);
-    ef_cli_atomic af;
-    if (!code && ef_cli_atomic_open(&af, path) != 0)
+    ef_util_atomic af;
+    if (!code && ef_util_atomic_open(&af, path) != 0)
         code = fail(h, EF_HX_OUTPUT, "cannot write vectors.actual.bin: %s", strerror(errno));
     if (code) {
         digests_free(&g);
@@ -835,7 +835,7 @@ static int load_vectors(hl *h)
         char buf[900];
         ef_vec_read_error_format(&err, buf, sizeof buf);
         fprintf(stderr, "edgeflag-host: %s\n", buf);
-        ef_vec_dump_free(&d);
+        ef_vec_dump_destroy(&d);
         return err.status == EF_ERR_NOMEM ? EF_HX_INTERNAL : EF_HX_INPUT;
     }
     if (!(d.mask & 1u << EF_IF_CMD) || d.seq[EF_IF_CMD].n == 0) {
@@ -843,14 +843,14 @@ static int load_vectors(hl *h)
                 "edgeflag-host: %s: records no cmd transactions: nothing to send (write it with "
                 "edgeflag vectors, whose default records every interface)\n",
                 path);
-        ef_vec_dump_free(&d);
+        ef_vec_dump_destroy(&d);
         return EF_HX_INPUT;
     }
     const ef_vec_seq *s = &d.seq[EF_IF_CMD];
     h->ncmds = s->n;
     h->cmds = malloc(s->n * EF_PROTO_CMD_BYTES);
     if (!h->cmds) {
-        ef_vec_dump_free(&d);
+        ef_vec_dump_destroy(&d);
         return fail(h, EF_HX_INTERNAL, "out of memory");
     }
     for (size_t k = 0; k < s->n; k++) {
@@ -877,14 +877,14 @@ static int load_vectors(hl *h)
     if (h->o->digest || h->o->resume) /* the expected transactions, for their digests */
         h->exp = d, h->have_exp = 1;
     else
-        ef_vec_dump_free(&d);
+        ef_vec_dump_destroy(&d);
     return 0;
 }
 
 static int prepare_dir(hl *h)
 {
     snprintf(h->dir, sizeof h->dir, "%s", h->o->results);
-    if (ef_cli_make_dirs(h->dir) != 0) {
+    if (ef_util_make_dirs(h->dir) != 0) {
         fprintf(stderr, "edgeflag-host: %s: cannot create the results folder: %s\n", h->dir, strerror(errno));
         return EF_HX_OUTPUT;
     }
@@ -1125,7 +1125,7 @@ int ef_host_stream(const ef_transport_ops *ops, ef_link *link, const ef_host_str
     if (h->part)
         fclose(h->part);
     if (h->have_exp)
-        ef_vec_dump_free(&h->exp);
+        ef_vec_dump_destroy(&h->exp);
     free(h->sel);
     free(h->cmds);
     free(h->fbuf);

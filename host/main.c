@@ -5,7 +5,6 @@
  * link-shaped in the transports.
  */
 #include <errno.h>
-#include <fcntl.h>
 #include <getopt.h>
 #include <inttypes.h>
 #include <libgen.h>
@@ -16,14 +15,15 @@
 
 #include "atomic_file.h"
 #include "bench_link.h"
-#include "cli.h"
-#include "ef_check.h"
+#include "check_files.h"
 #include "ef_vec_read.h"
 #include "image_write.h"
 #include "dut_rtl.h"
 #include "edgeflag.h"
+#include "ef_check.h"
 #include "ef_trace.h"
 #include "host_link.h"
+#include "parse.h"
 #include "transport.h"
 
 static const ef_transport_ops *const TRANSPORTS[] = { &ef_transport_usb,  &ef_transport_gpio,   &ef_transport_sim,
@@ -34,8 +34,10 @@ static const ef_transport_ops *const PROBED[] = { &ef_transport_usb, &ef_transpo
 #define NTRANSPORTS (sizeof TRANSPORTS / sizeof TRANSPORTS[0])
 
 typedef struct args {
-    const char *cmd, *vectors, *transport, *results, *junit, *diff_image, *interfaces, *errors, *save_frame;
-    long digest; /* -1: not given (digest mode on a serial line, full records elsewhere) */
+    const char *cmd, *vectors, *transport, *results, *junit, *diff_image, *interfaces, *save_frame;
+    ef_util_format diff_fmt;
+    int32_t errors; /* -1: check's default */
+    long digest;    /* -1: not given (digest mode on a serial line, full records elsewhere) */
     unsigned digest_fetch;
     ef_host_opts link;
     int resume, quiet, json, transactions;
@@ -171,7 +173,7 @@ static int parse(int argc, char **argv, args *a)
                                           { "json", no_argument, 0, O_JSON },
                                           { "help", no_argument, 0, O_HELP },
                                           { 0, 0, 0, 0 } };
-    int32_t v; /* ef_cli_parse_int: digits only, within the bounds (cli/args.c) */
+    int32_t v; /* ef_util_parse_int: digits only, within the bounds (util/parse.c) */
     opterr = 0;
     optind = 1;
     int c;
@@ -193,19 +195,19 @@ static int parse(int argc, char **argv, args *a)
             break;
         }
         case O_TSIZE:
-            if (!ef_cli_parse_int(optarg, 512, 1 << 24, &v) || v % 512)
+            if (!ef_util_parse_int(optarg, 512, 1 << 24, &v) || v % 512)
                 return usage_error("--transfer-size must be a multiple of 512 up to 16 MiB, not '%s'", optarg);
             a->link.transfer_size = (unsigned)v;
             break;
         case O_INFLIGHT:
-            if (!ef_cli_parse_int(optarg, 1, 256, &v))
+            if (!ef_util_parse_int(optarg, 1, 256, &v))
                 return usage_error("--in-flight must be 1..256, not '%s'", optarg);
             a->link.in_flight = (unsigned)v;
             break;
         case O_CHIP: a->link.chip = optarg; break;
         case O_LINES: a->link.lines = optarg; break;
         case O_TIMEOUT:
-            if (!ef_cli_parse_int(optarg, 1, 3600000, &v))
+            if (!ef_util_parse_int(optarg, 1, 3600000, &v))
                 return usage_error("--timeout must be 1..3600000 ms, not '%s'", optarg);
             a->link.timeout_ms = (int)v;
             break;
@@ -222,41 +224,57 @@ static int parse(int argc, char **argv, args *a)
         case O_CONNECT: a->link.connect = optarg; break;
         case O_PORT: a->link.port = optarg; break;
         case O_BAUD: /* any rate the driver takes (docs/board-serial.md section 2) */
-            a->link.baud = ef_cli_parse_int(optarg, 50, 100000000, &v) ? (unsigned)v : 0;
+            a->link.baud = ef_util_parse_int(optarg, 50, 100000000, &v) ? (unsigned)v : 0;
             if (!a->link.baud)
                 return usage_error("--baud must be 50..100000000, not '%s'", optarg);
             break;
         case O_DIGEST:
             if (strcmp(optarg, "off") == 0)
                 v = 0;
-            else if (!ef_cli_parse_int(optarg, 1, 1 << 24, &v))
+            else if (!ef_util_parse_int(optarg, 1, 1 << 24, &v))
                 return usage_error("--digest must be 1..16777216 transactions a window or off, not '%s'", optarg);
             a->digest = v;
             break;
         case O_DIGESTFETCH:
-            if (!ef_cli_parse_int(optarg, 1, EF_PROTO_SELECT_MAX, &v))
+            if (!ef_util_parse_int(optarg, 1, EF_PROTO_SELECT_MAX, &v))
                 return usage_error("--digest-fetch must be 1..1024 windows, not '%s'", optarg);
             a->digest_fetch = (unsigned)v;
             break;
         case O_SAVEFRAME:
-            if (ef_cli_format_from_path(optarg) != EF_CLI_FMT_PNG || !ef_cli_format_available(EF_CLI_FMT_PNG))
+            if (ef_util_format_from_path(optarg) != EF_UTIL_FMT_PNG || !ef_util_format_available(EF_UTIL_FMT_PNG))
                 return usage_error("--save-frame needs a FILE.png (and a build with libpng), not '%s'", optarg);
             a->save_frame = optarg;
             break;
         case O_RESULTS: a->results = optarg; break;
         case O_RESUME: a->resume = 1; break;
         case O_FRAMECMDS:
-            if (!ef_cli_parse_int(optarg, 1, EF_PROTO_PAYLOAD_MAX / EF_PROTO_CMD_BYTES, &v))
+            if (!ef_util_parse_int(optarg, 1, EF_PROTO_PAYLOAD_MAX / EF_PROTO_CMD_BYTES, &v))
                 return usage_error("--frame-cmds must be 1..5041, not '%s'", optarg);
             a->frame_cmds = (unsigned)v;
             break;
         case O_IFACES: a->interfaces = optarg; break;
-        case O_JUNIT: a->junit = optarg; break;
-        case O_DIFF: a->diff_image = optarg; break;
-        case O_ERRORS: a->errors = optarg; break;
+        case O_JUNIT:
+            if (!*optarg)
+                return usage_error("--junit needs a file name, not '%s'", optarg);
+            a->junit = optarg;
+            break;
+        case O_DIFF:
+            a->diff_fmt = ef_util_format_from_path(optarg);
+            if (a->diff_fmt != EF_UTIL_FMT_PNG && a->diff_fmt != EF_UTIL_FMT_PAM)
+                return usage_error("--diff-image must name a .png (or .pam) file, not '%s'", optarg);
+            if (!ef_util_format_available(a->diff_fmt))
+                return usage_error("'%s': this edgeflag-host was built without PNG support (WITH_PNG=0); use .pam",
+                                   optarg);
+            a->diff_image = optarg;
+            break;
+        case O_ERRORS:
+            if (!ef_util_parse_int(optarg, 0, INT32_MAX, &v))
+                return usage_error("--errors must be a number 0..2147483647 (0 = all), not '%s'", optarg);
+            a->errors = v;
+            break;
         case O_TRANS: a->transactions = 1; break;
         case O_MIB:
-            if (!ef_cli_parse_int(optarg, 1, 65536, &v))
+            if (!ef_util_parse_int(optarg, 1, 65536, &v))
                 return usage_error("--mib must be 1..65536, not '%s'", optarg);
             a->bench_bytes = (uint64_t)v << 20;
             break;
@@ -268,6 +286,8 @@ static int parse(int argc, char **argv, args *a)
         default: return usage_error("unknown option '%s'", argv[optind - 1]);
         }
     }
+    if (a->junit && a->diff_image && strcmp(a->junit, a->diff_image) == 0)
+        return usage_error("--junit and --diff-image name the same file ('%s')", a->junit);
     for (int i = optind; i < argc; i++) {
         if (a->vectors)
             return usage_error("one vectors file only ('%s' is one too many)", argv[i]);
@@ -399,13 +419,67 @@ static uint32_t file_mask(const char *path)
     return m;
 }
 
+/* edgeflag-host's exit code for a check's status (docs/board.md section 7). */
+static int check_exit(ef_check_status st)
+{
+    switch (st) {
+    case EF_CHECK_PASS: return EF_HX_OK;
+    case EF_CHECK_FAIL: return EF_HX_MISMATCH;
+    case EF_CHECK_INPUT: return EF_HX_INPUT;
+    case EF_CHECK_NOMEM: break;
+    }
+    return EF_HX_INTERNAL;
+}
+
+/* verify's check: the results the board sent (actual) against the vectors,
+ * by the verifier library as `edgeflag check VECTORS.bin ACTUAL --interfaces
+ * MASK` runs it: mismatch lines on stdout, status on stderr (none with
+ * --quiet), then --junit and --diff-image written atomically.  An EF_HX_*. */
+static int verify_results(const args *a, const char *actual, uint32_t mask)
+{
+    ef_check_opts o;
+    ef_check_result res;
+    ef_check_opts_defaults(&o);
+    o.expected = a->vectors;
+    o.actual = actual;
+    o.only = mask;
+    if (a->errors >= 0)
+        o.errors = a->errors;
+    o.cycles = !a->transactions;
+    o.keep_marks = a->diff_image != NULL;
+    o.report = stdout;
+    o.status = a->quiet ? NULL : stderr;
+    const ef_check_status st = ef_check_run(&o, &res);
+    int out = EF_HX_OK;
+    if (a->junit && st != EF_CHECK_NOMEM && ef_util_check_junit(&res, a->junit) != 0) {
+        fprintf(stderr, "edgeflag-host: verify: cannot write '%s': %s\n", a->junit, strerror(errno));
+        out = EF_HX_OUTPUT;
+    }
+    if (a->diff_image && (st == EF_CHECK_PASS || st == EF_CHECK_FAIL)) {
+        char err[256];
+        if (ef_util_check_diff_image(&res, a->diff_image, a->diff_fmt, err, sizeof err) != 0) {
+            fprintf(stderr, "edgeflag-host: verify: cannot write '%s': %s\n", a->diff_image, err);
+            out = errno == ENOMEM ? EF_HX_INTERNAL : EF_HX_OUTPUT;
+        } else if (!a->quiet) {
+            fprintf(stderr, "edgeflag-host: verify: wrote %s (%" PRIu64 " mismatching pixel runs marked)\n",
+                    a->diff_image, res.marks);
+        }
+    }
+    ef_check_result_destroy(&res);
+    if (st != EF_CHECK_PASS && a->quiet)
+        fprintf(stderr, "edgeflag-host: verify: FAIL (the check's status: %s)\n", ef_check_status_name(st));
+    if (st != EF_CHECK_PASS && st != EF_CHECK_FAIL)
+        return check_exit(st);
+    return out != EF_HX_OK ? out : check_exit(st);
+}
+
 /* verify --save-frame: the board's pix results (RESULTS/vectors.actual.bin) as a PNG, atomically. */
 static int save_frame(const char *actual, const char *path)
 {
     ef_vec_dump d;
     ef_vec_read_error re;
     ef_image img;
-    ef_cli_atomic af;
+    ef_util_atomic af;
     char err[900] = "";
     memset(&d, 0, sizeof d);
     int bad = ef_vec_read_path(actual, NULL, -1, -1, &d, &re) != EF_OK;
@@ -413,19 +487,19 @@ static int save_frame(const char *actual, const char *path)
         ef_vec_read_error_format(&re, err, sizeof err);
     else if (ef_check_frame_image(&d, &img, err, sizeof err) != 0)
         bad = 1;
-    ef_vec_dump_free(&d);
+    ef_vec_dump_destroy(&d);
     if (!bad) {
-        if (ef_cli_atomic_open(&af, path) != 0) {
+        if (ef_util_atomic_open(&af, path) != 0) {
             snprintf(err, sizeof err, "%s", strerror(errno));
             bad = 1;
-        } else if (ef_cli_write_image(af.fp, EF_CLI_FMT_PNG, &img, err, sizeof err) != 0) {
-            ef_cli_atomic_abort(&af);
+        } else if (ef_util_write_image(af.fp, EF_UTIL_FMT_PNG, &img, err, sizeof err) != 0) {
+            ef_util_atomic_abort(&af);
             bad = 1;
-        } else if (ef_cli_atomic_commit(&af) != 0) {
+        } else if (ef_util_atomic_commit(&af) != 0) {
             snprintf(err, sizeof err, "%s", strerror(errno));
             bad = 1;
         }
-        ef_image_free(&img);
+        ef_image_destroy(&img);
     }
     if (bad)
         fprintf(stderr, "edgeflag-host: --save-frame %s: %s\n", path, err);
@@ -494,40 +568,9 @@ static int cmd_stream(args *a, int verify)
     if (code == EF_HX_OK && verify) {
         char actual[4200];
         snprintf(actual, sizeof actual, "%s/vectors.actual.bin", results);
-        char *cv[16];
-        int n = 0;
-        cv[n++] = "check";
-        cv[n++] = (char *)a->vectors;
-        cv[n++] = actual;
-        cv[n++] = "--interfaces";
-        cv[n++] = names;
-        if (a->junit)
-            cv[n++] = "--junit", cv[n++] = (char *)a->junit;
-        if (a->diff_image)
-            cv[n++] = "--diff-image", cv[n++] = (char *)a->diff_image;
-        if (a->errors)
-            cv[n++] = "--errors", cv[n++] = (char *)a->errors;
-        if (a->transactions)
-            cv[n++] = "--transactions";
-        cv[n] = NULL;
         fflush(stdout);
-        /* --quiet: check's status lines go nowhere, its mismatch lines (stdout) and exit code stay */
-        int saved = -1;
-        if (a->quiet) {
-            fflush(stderr);
-            saved = dup(2);
-            const int devnull = open("/dev/null", O_WRONLY);
-            if (devnull >= 0)
-                dup2(devnull, 2), close(devnull);
-        }
-        check = ef_cli_check(n, cv);
-        if (saved >= 0) {
-            fflush(stderr);
-            dup2(saved, 2), close(saved);
-            if (check != 0)
-                fprintf(stderr, "edgeflag-host: verify: FAIL (edgeflag check exit %d)\n", check);
-        }
-        code = check == 0 ? EF_HX_OK : check == 1 ? EF_HX_MISMATCH : check == 4 ? EF_HX_OUTPUT : EF_HX_INTERNAL;
+        check = verify_results(a, actual, mask);
+        code = check;
         if (a->save_frame && (code == EF_HX_OK || code == EF_HX_MISMATCH)) {
             const int s = save_frame(actual, a->save_frame);
             code = s ? s : code;
@@ -544,9 +587,9 @@ static int cmd_stream(args *a, int verify)
                a->cmd, ops->name, code, a->vectors, results, names, rep.cmds, rep.frames_sent, rep.retransmits,
                rep.naks, rep.timeouts, rep.resumed_from, rep.digest, rep.digest_windows, rep.digest_differ,
                rep.digest_fetched, rep.records, rep.result_bytes, rep.seconds,
-               check < 0    ? "null"
-               : check == 0 ? "\"pass\""
-                            : "\"fail\"");
+               check < 0           ? "null"
+               : check == EF_HX_OK ? "\"pass\""
+                                   : "\"fail\"");
     return code;
 }
 
@@ -607,6 +650,7 @@ int main(int argc, char **argv)
     memset(&a, 0, sizeof a);
     a.digest = -1;
     a.cmd = argv[1];
+    a.errors = -1;
     const int r = parse(argc - 1, argv + 1, &a);
     if (r)
         return r;

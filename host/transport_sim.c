@@ -231,7 +231,7 @@ static int sim_open(ef_link **out, const ef_host_opts *o, char *err, size_t errl
     if (o->sim_state) {
         char path[4200];
         snprintf(path, sizeof path, "%s/board.log", o->sim_state);
-        if (ef_cli_make_dirs(o->sim_state) != 0 || (r = replay(s, path)) != 0 || !(s->log = fopen(path, "ab"))) {
+        if (ef_util_make_dirs(o->sim_state) != 0 || (r = replay(s, path)) != 0 || !(s->log = fopen(path, "ab"))) {
             snprintf(err, errlen, "--sim-state: cannot use %s: %s", path, r ? ef_host_strerror(r) : strerror(errno));
             ef_board_free(s->b);
             free(s);

@@ -59,7 +59,8 @@ static int connect_one(sock_link *s, int family, const struct sockaddr *sa, sock
     return e;
 }
 
-/* "unix:PATH" or "tcp:HOST:PORT" ("tcp:[v6]:PORT"): a connected, non-blocking socket. */
+/* "unix:PATH" or "tcp:HOST:PORT" ("tcp:[v6]:PORT"): a connected, non-blocking socket.  addr is
+ * never NULL (sock_open refuses a missing --connect before it dials). */
 static int dial(sock_link *s, const char *addr, int timeout_ms, char *err, size_t errlen)
 {
     struct addrinfo *ai = NULL, hints = { 0 };
@@ -91,7 +92,7 @@ static int dial(sock_link *s, const char *addr, int timeout_ms, char *err, size_
         }
         sa = ai->ai_addr, salen = ai->ai_addrlen, family = ai->ai_family;
     } else {
-        snprintf(err, errlen, "--connect '%s': expected unix:PATH or tcp:HOST:PORT", addr ? addr : "");
+        snprintf(err, errlen, "--connect '%s': expected unix:PATH or tcp:HOST:PORT", addr);
         return EF_HOST_EINVAL;
     }
     /* every address the name has (a name may give ::1 and 127.0.0.1), the first that answers */

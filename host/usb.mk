@@ -33,7 +33,7 @@ UMOCKDEV_LIBS   = $(shell $(PKG_CONFIG) --libs umockdev-1.0 2>/dev/null || echo 
 # GLib's headers are not -Wstrict-prototypes clean.
 $(USB_EMU_OBJ): CPPFLAGS += -Ihost -Iboard -Iproto $(UMOCKDEV_CFLAGS)
 $(USB_EMU_OBJ): WARN += -Wno-strict-prototypes
-$(USB_EMU): $(USB_EMU_OBJ) $(USB_EMU_BOARD_OBJ) $(RTLV_OBJ) $(LIB_A)
+$(USB_EMU): $(USB_EMU_OBJ) $(USB_EMU_BOARD_OBJ) $(VEC_A) $(LIB_A)
 	$(CC) $(LDFLAGS_ALL) -o $@ $^ $(UMOCKDEV_LIBS) -lpthread $(PNG_LIBS) $(EXPAT_LIBS) $(VEC_LIBS) -lz
 
 # make install: the udev rule beside the program; udev itself reads

@@ -12,7 +12,7 @@
 #include "internal.h"
 #include "trace.h"
 
-ef_status ef_image_alloc(ef_image *img, int32_t width, int32_t height)
+ef_status ef_image_create(ef_image *img, int32_t width, int32_t height)
 {
     memset(img, 0, sizeof *img);
     if (width < 1 || height < 1 || width > EF_MAX_CANVAS || height > EF_MAX_CANVAS)
@@ -26,7 +26,7 @@ ef_status ef_image_alloc(ef_image *img, int32_t width, int32_t height)
     return EF_OK;
 }
 
-void ef_image_free(ef_image *img)
+void ef_image_destroy(ef_image *img)
 {
     free(img->px);
     memset(img, 0, sizeof *img);

@@ -8,6 +8,8 @@
 
 #include "internal.h"
 
+const char *ef_version(void) { return EF_VERSION_STRING; }
+
 const char *ef_strerror(ef_status s)
 {
     switch (s) {

@@ -35,7 +35,7 @@ $(LIB_SO): $(LIB_OBJ)
 
 $(LIB_PC): model/edgeflag.pc.in
 	@mkdir -p $(dir $@)
-	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|0.1.0|' $< > $@
+	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(EF_VERSION)|' $< > $@
 
 # make install [PREFIX=/usr/local] [DESTDIR=]: the edgeflag command, the regression scripts,
 # headers, both libraries, pkg-config file.
@@ -48,4 +48,4 @@ install: lib cli
 	install -m 644 $(LIB_A) $(DESTDIR)$(PREFIX)/lib/
 	install -m 755 $(LIB_SO) $(DESTDIR)$(PREFIX)/lib/libedgeflag.so.0
 	ln -sf libedgeflag.so.0 $(DESTDIR)$(PREFIX)/lib/libedgeflag.so
-	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|0.1.0|' model/edgeflag.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/edgeflag.pc
+	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(EF_VERSION)|' model/edgeflag.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/edgeflag.pc

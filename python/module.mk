@@ -10,9 +10,12 @@
 EFPY_SO   := $(BUILD)/libefpy.so
 EFPY_SRC  := $(wildcard rtl_vectors/*.c) dv/dpi/model_stream.c python/csrc/efpy.c
 EFPY_OBJ  := $(EFPY_SRC:%.c=$(BUILD)/efpy/%.o)
+# Layer: the public headers, the vectors library (and the fixed/ it compiles with), the DPI model
+# stream; never model/'s internals, cli/, util/ or host/ (tests/layers checks it).
+LAYER_INC_python := -Iinclude/edgeflag -Ifixed -Irtl_vectors -Idv/dpi
 $(BUILD)/efpy/%.o: %.c
 	@mkdir -p $(dir $@)
-	$(CC) $(EF_DEFS) -Iinclude/edgeflag -Ifixed -Irtl_vectors -Idv/dpi \
+	$(CC) $(EF_DEFS) $(LAYER_INC_python) \
 	    $(filter-out -fvisibility=hidden,$(CFLAGS_ALL)) -c $< -o $@
 $(BUILD)/efpy/python/csrc/efpy.o: CFLAGS_ALL += -Wno-missing-prototypes
 # The model's internals that the vectors code calls come from the static library (not exported

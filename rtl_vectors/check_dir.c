@@ -116,7 +116,7 @@ static int dir_entry(chk_run *r, const char *name, const ef_vec_manifest_file *m
     int rc = 0;
     if (!ep) {
         free(ap);
-        return EF_CHECK_INTERNAL;
+        return EF_CHECK_NOMEM;
     }
     if (mf && !chk_is_file(ep)) {
         char buf[1024];
@@ -146,7 +146,7 @@ int chk_dirs(chk_run *r)
 
     memset(&m, 0, sizeof m);
     if (!mpath)
-        return EF_CHECK_INTERNAL;
+        return EF_CHECK_NOMEM;
     if (chk_is_file(mpath)) {
         ef_status st = ef_vec_read_manifest_path(mpath, NULL, &m, &err);
         if (st != EF_OK) {
@@ -200,7 +200,7 @@ int chk_dirs(chk_run *r)
         free(pix);
         rc = chk_input_error(r, EF_ERR_SYNTAX, buf, E, r->a->actual);
     }
-    ef_vec_manifest_free(&m);
+    ef_vec_manifest_destroy(&m);
     free(mpath);
     return rc;
 }

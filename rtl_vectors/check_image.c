@@ -100,7 +100,7 @@ int ef_check_frame_image(const ef_vec_dump *d, ef_image *out, char *err, size_t 
         errno = 0;
         return -1;
     }
-    if (ef_image_alloc(out, d->width, d->height) != EF_OK) {
+    if (ef_image_create(out, d->width, d->height) != EF_OK) {
         snprintf(err, errsize, "out of memory for a %dx%d image", (int)d->width, (int)d->height);
         errno = ENOMEM;
         return -1;
@@ -131,7 +131,7 @@ int ef_check_diff_image(const ef_check_result *res, ef_image *out, char *err, si
         errno = 0;
         return -1;
     }
-    if (ef_image_alloc(&img, w, h) != EF_OK) {
+    if (ef_image_create(&img, w, h) != EF_OK) {
         snprintf(err, errsize, "out of memory for a %dx%d image", (int)w, (int)h);
         errno = ENOMEM;
         return -1;

@@ -41,7 +41,7 @@ typedef struct ef_check_run_state {
     const ef_check_opts *a; /* &opts */
     uint64_t mismatches;    /* in all, exact */
     uint64_t reported;      /* lines printed (at most --errors unless 0) */
-    int oom;                /* an allocation failed: exit 70 */
+    int oom;                /* an allocation failed: EF_CHECK_NOMEM */
     chk_case *cases;
     size_t ncases, capcases;
     uint32_t held;     /* interfaces the EXPECTED side holds */
@@ -71,7 +71,7 @@ void chk_status(const chk_run *r, const char *fmt, ...)
 
 /* check_run.c: reads EXPECTED file ep (mf: its manifest entry in mname, or
  * NULL) and, when ap is not NULL, ACTUAL file ap, and compares every
- * interface both hold.  0, or the exit code of an input error (reported). */
+ * interface both hold.  0, or the ef_check_status of an input error (reported). */
 int chk_pair(chk_run *r, const char *ep, const char *ap, const ef_vec_manifest_file *mf, const char *mname);
 /* check_read.c: a dump read in a second thread while the caller reads the
  * expected file (or at once, when no thread can be started). */
@@ -90,8 +90,8 @@ void chk_read_wait(chk_async_read *ar);
 void chk_read_drop(chk_async_read *ar);
 /* check_dir.c: two directories (r->a->expected, r->a->actual); as chk_pair. */
 int chk_dirs(chk_run *r);
-/* Reports an input error on stderr and as a JUnit <error>; the exit code
- * (EF_CHECK_INPUT, or EF_CHECK_INTERNAL for EF_ERR_NOMEM).  chk_read_error formats a reader's error. */
+/* Reports an input error on stderr and as a JUnit <error>; the status
+ * (EF_CHECK_INPUT, or EF_CHECK_NOMEM for EF_ERR_NOMEM).  chk_read_error formats a reader's error. */
 int chk_input_error(chk_run *r, ef_status st, const char *msg, const char *ename, const char *aname);
 int chk_read_error(chk_run *r, ef_status st, const ef_vec_read_error *err, const char *ename, const char *aname);
 /* "dir/name" (malloc'ed, NULL when out of memory); whether path is a file. */

@@ -44,5 +44,5 @@ void chk_read_drop(chk_async_read *ar)
 {
     chk_read_wait(ar);
     if (ar->st == EF_OK)
-        ef_vec_dump_free(&ar->dump);
+        ef_vec_dump_destroy(&ar->dump);
 }

@@ -2,9 +2,9 @@
  * check_run.c - the verifier's entry point (ef_check.h): one comparison of
  * EXPECTED with ACTUAL, in the manner of TestFloat's testfloat_ver:
  * mismatches with decoded fields on the report stream (at most `errors` of
- * them, the count exact), status on the status stream, and a documented
- * exit status: 0 pass, 1 mismatch, 2 an input that cannot be read (a reader
- * error names its file:line:col or record), 70 out of memory.
+ * them, the count exact), status on the status stream, and an
+ * ef_check_status: pass, fail (a mismatch), input (an input that cannot be
+ * read: a reader error names its file:line:col or record), out of memory.
  *
  * EXPECTED and ACTUAL are two files (hex or binary, in any combination: the
  * interfaces both hold are compared) or two directories (the manifest's
@@ -21,7 +21,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
-void ef_check_opts_init(ef_check_opts *o)
+void ef_check_opts_defaults(ef_check_opts *o)
 {
     memset(o, 0, sizeof *o);
     o->errors = 20;
@@ -71,7 +71,7 @@ int chk_is_file(const char *path)
     return stat(path, &st) == 0 && !S_ISDIR(st.st_mode);
 }
 
-/* Reports an input error (status stream, and as a JUnit <error>); the exit code. */
+/* Reports an input error (status stream, and as a JUnit <error>); the status. */
 int chk_input_error(chk_run *r, ef_status st, const char *msg, const char *ename, const char *aname)
 {
     chk_error(r, "%s", msg);
@@ -81,7 +81,7 @@ int chk_input_error(chk_run *r, ef_status st, const char *msg, const char *ename
         if (tc->error)
             strcpy(tc->error, msg);
     }
-    return st == EF_ERR_NOMEM ? EF_CHECK_INTERNAL : EF_CHECK_INPUT;
+    return st == EF_ERR_NOMEM ? EF_CHECK_NOMEM : EF_CHECK_INPUT;
 }
 
 int chk_read_error(chk_run *r, ef_status st, const ef_vec_read_error *err, const char *ename, const char *aname)
@@ -121,7 +121,7 @@ static int ends_with(const char *s, const char *suffix);
 
 /* Reads EXPECTED file ep (mf: its manifest entry, or NULL) and, when ap is
  * not NULL, ACTUAL file ap, and compares every interface both hold.  0, or
- * the exit code of an input error (reported). */
+ * the status of an input error (reported). */
 int chk_pair(chk_run *r, const char *ep, const char *ap, const ef_vec_manifest_file *mf, const char *mname)
 {
     ef_vec_dump e, a;
@@ -217,9 +217,9 @@ out:
         chk_read_drop(&ar);
     if (r->a->keep_marks && rc == 0)
         keep_background(r, &e);
-    ef_vec_dump_free(&e);
-    ef_vec_dump_free(&a);
-    return r->oom ? EF_CHECK_INTERNAL : rc;
+    ef_vec_dump_destroy(&e);
+    ef_vec_dump_destroy(&a);
+    return r->oom ? EF_CHECK_NOMEM : rc;
 }
 
 /* ---------------------------------------------------------------- the run */
@@ -274,10 +274,10 @@ static void run_free(chk_run *r)
     }
     free(r->cases);
     free(r->marks);
-    ef_vec_dump_free(&r->bg);
+    ef_vec_dump_destroy(&r->bg);
 }
 
-void ef_check_result_free(ef_check_result *res)
+void ef_check_result_destroy(ef_check_result *res)
 {
     if (res->run) {
         run_free(res->run);
@@ -286,7 +286,18 @@ void ef_check_result_free(ef_check_result *res)
     memset(res, 0, sizeof *res);
 }
 
-int ef_check_run(const ef_check_opts *o, ef_check_result *res)
+const char *ef_check_status_name(ef_check_status st)
+{
+    switch (st) {
+    case EF_CHECK_PASS: return "pass";
+    case EF_CHECK_FAIL: return "fail";
+    case EF_CHECK_INPUT: return "input";
+    case EF_CHECK_NOMEM: return "nomem";
+    }
+    return "?";
+}
+
+ef_check_status ef_check_run(const ef_check_opts *o, ef_check_result *res)
 {
     struct stat se, sa;
     int rc;
@@ -294,7 +305,7 @@ int ef_check_run(const ef_check_opts *o, ef_check_result *res)
 
     memset(res, 0, sizeof *res);
     if (!r)
-        return EF_CHECK_INTERNAL;
+        return EF_CHECK_NOMEM;
     res->run = r;
     r->opts = *o;
     r->a = &r->opts;
@@ -330,7 +341,7 @@ int ef_check_run(const ef_check_opts *o, ef_check_result *res)
     if (rc == 0)
         close_unchecked(r);
     if (r->oom)
-        rc = EF_CHECK_INTERNAL;
+        rc = EF_CHECK_NOMEM;
     if (a->report)
         fflush(a->report);
 
@@ -359,6 +370,6 @@ int ef_check_run(const ef_check_opts *o, ef_check_result *res)
     res->missing = r->missing;
     res->marks = r->nmarks;
     if (rc != 0)
-        return rc;
+        return (ef_check_status)rc;
     return r->mismatches || r->missing ? EF_CHECK_FAIL : EF_CHECK_PASS;
 }

@@ -60,7 +60,7 @@ typedef enum ef_gen_category {
     EF_GEN_NCATEGORIES
 } ef_gen_category;
 /* Short lower-case name ("sample-grid", ..., "random"); NULL if out of range. */
-const char *ef_gen_category_name(ef_gen_category c);
+EF_API const char *ef_gen_category_name(ef_gen_category c);
 
 /* What a directed case is known to produce, at every sample count; written
  * in its header ("# expect: ...") and checked by tests/unit/test_gen.c. */
@@ -84,36 +84,36 @@ typedef struct ef_gen_config {
     int grid;          /* grid-dependent directed cases: 8, 16 or 32, or 0 for the
                              * level's default (16 at level 1, all three at level 2) */
     int rules_swapped; /* level 2: each directed case again with evenodd <-> nonzero
-                             * (set by ef_gen_config_init; level 1 never) */
+                             * (set by ef_gen_config_defaults; level 1 never) */
     uint32_t nrandom;  /* random cases: at least the level's count */
 } ef_gen_config;
 
 /* Defaults for a level: seed EF_GEN_DEFAULT_SEED, grid 0, the level's
  * random count.  EF_ERR_ARG for a level other than 1 or 2. */
-ef_status ef_gen_config_init(ef_gen_config *c, int level);
+EF_API ef_status ef_gen_config_defaults(ef_gen_config *c, int level);
 /* The level's random count (EF_GEN_LEVEL1_RANDOM, EF_GEN_LEVEL2_RANDOM), 0 if invalid. */
-uint32_t ef_gen_level_random(int level);
+EF_API uint32_t ef_gen_level_random(int level);
 /* EF_OK, or EF_ERR_ARG (bad level or grid, nrandom below the level's count:
  * "can raise, never lower"), or EF_ERR_LIMIT (more than EF_GEN_MAX_CASES). */
-ef_status ef_gen_config_check(const ef_gen_config *c);
+EF_API ef_status ef_gen_config_check(const ef_gen_config *c);
 /* Directed cases of this configuration (case numbers 0 .. D-1). */
-uint32_t ef_gen_directed_count(const ef_gen_config *c);
+EF_API uint32_t ef_gen_directed_count(const ef_gen_config *c);
 /* D + nrandom. */
-uint32_t ef_gen_total(const ef_gen_config *c);
+EF_API uint32_t ef_gen_total(const ef_gen_config *c);
 
 /* ------------------------------------------------------------- sharding */
 /* Shard `index` of `count` (1-based: 1 <= index <= count) holds the cases k
  * with k mod count == index - 1.  Returns 1 if case k is in it. */
-int ef_gen_in_shard(uint32_t k, uint32_t index, uint32_t count);
+EF_API int ef_gen_in_shard(uint32_t k, uint32_t index, uint32_t count);
 
 /* ------------------------------------------------------------ the PRNG */
 /* splitmix64 (Steele, Lea, Flood 2014), written out: state += 0x9E3779B97F4A7C15,
  * then the output mix of the new state.  Seeded with 0 the first outputs are
  * 0xE220A8397B1DCDAF, 0x6E789E6AA1B965F4, 0x06C45D188009454F. */
-uint64_t ef_gen_splitmix64(uint64_t *state);
+EF_API uint64_t ef_gen_splitmix64(uint64_t *state);
 /* Seed of random case j (0-based among the random cases): output number j
  * of the splitmix64 stream seeded with `seed`, i.e. mix(seed + (j+1) * gamma). */
-uint64_t ef_gen_case_seed(uint64_t seed, uint32_t j);
+EF_API uint64_t ef_gen_case_seed(uint64_t seed, uint32_t j);
 
 /* -------------------------------------------------------------- a case */
 typedef struct ef_gen_case {
@@ -132,31 +132,32 @@ typedef struct ef_gen_case {
 } ef_gen_case;
 
 /* Builds case k (0 <= k < ef_gen_total(c)) into *out (initialised here; free
- * it with ef_gen_case_free even on failure).  EF_ERR_ARG for a bad k or
+ * it with ef_gen_case_destroy even on failure).  EF_ERR_ARG for a bad k or
  * configuration, EF_ERR_NOMEM. */
-ef_status ef_gen_build(const ef_gen_config *c, uint32_t k, ef_gen_case *out);
-void ef_gen_case_free(ef_gen_case *gc);
+EF_API ef_status ef_gen_build(const ef_gen_config *c, uint32_t k, ef_gen_case *out);
+EF_API void ef_gen_case_destroy(ef_gen_case *gc);
 
 /* ------------------------------------------------------------- text out */
 typedef struct ef_gen_text {
     char *data; /* NUL-terminated */
     size_t len, cap;
 } ef_gen_text;
-void ef_gen_text_free(ef_gen_text *t);
+EF_API void ef_gen_text_destroy(ef_gen_text *t);
 
 /* The case's file: header comments, then `scene W H`, shapes and contours
  * with exact Q16.8 decimals.  Replaces t's content.  EF_ERR_ARG if a contour
  * has fewer than 3 points (the format needs 3), EF_ERR_NOMEM. */
-ef_status ef_gen_format(const ef_gen_config *c, const ef_gen_case *gc, ef_gen_text *t);
+EF_API ef_status ef_gen_format(const ef_gen_config *c, const ef_gen_case *gc, ef_gen_text *t);
 /* "case_NNNNNN.scene" (buf of at least 32 bytes). */
-void ef_gen_file_name(uint32_t k, char *buf, size_t size);
+EF_API void ef_gen_file_name(uint32_t k, char *buf, size_t size);
 /* index.tsv: its two header lines (a comment naming the run and shard, then
  * the column names), and one row per case, appended to t. */
-ef_status ef_gen_index_header(const ef_gen_config *c, uint32_t shard_index, uint32_t shard_count, ef_gen_text *t);
-ef_status ef_gen_index_row(const ef_gen_case *gc, ef_gen_text *t);
+EF_API ef_status ef_gen_index_header(const ef_gen_config *c, uint32_t shard_index, uint32_t shard_count,
+                                     ef_gen_text *t);
+EF_API ef_status ef_gen_index_row(const ef_gen_case *gc, ef_gen_text *t);
 /* Exact decimal of v / 256 (at most 8 fraction digits, no trailing zeros),
  * appended to t. */
-ef_status ef_gen_append_q8(ef_gen_text *t, int32_t v);
+EF_API ef_status ef_gen_append_q8(ef_gen_text *t, int32_t v);
 
 #ifdef __cplusplus
 }

@@ -16,7 +16,12 @@
 #include <stdint.h>
 #include <stdio.h>
 
+#include "ef_api.h"
 #include "ef_trace.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 #define EF_VEC_FORMAT 1       /* "format 1" of every file (docs/vectors.md) */
 #define EF_VEC_BIN_HEADER 104 /* header bytes of vectors.bin */
@@ -26,33 +31,32 @@
 
 /* CRC-32 of IEEE 802.3 / zlib / PNG.  Chains like zlib's crc32(): start with
  * crc = 0 and pass each result back in; the CRC of "123456789" is 0xCBF43926. */
-uint32_t ef_vec_crc32(uint32_t crc, const void *data, size_t n);
+EF_API uint32_t ef_vec_crc32(uint32_t crc, const void *data, size_t n);
 
-/* SHA-256 (FIPS 180-4), by GNU Nettle.  Builds without the manifest
- * (WITH_MANIFEST=0: no Nettle, no json-c) have no hashing. */
-#ifndef EF_NO_MANIFEST
-#include <nettle/sha2.h>
+/* SHA-256 (FIPS 180-4), by GNU Nettle, whose state is kept in opaque
+ * storage here (so this header needs no Nettle header).  Builds without the
+ * manifest (WITH_MANIFEST=0: no Nettle, no json-c) have no hashing: these
+ * three and ef_vec_manifest_write are then absent (a link error names them). */
 typedef struct ef_vec_sha256 {
-    struct sha256_ctx ctx;
+    union {
+        uint64_t align;
+        unsigned char bytes[128];
+    } state; /* Nettle's struct sha256_ctx (vec_sha256.c checks that it fits) */
 } ef_vec_sha256;
-void ef_vec_sha256_init(ef_vec_sha256 *s);
-void ef_vec_sha256_update(ef_vec_sha256 *s, const void *data, size_t n);
-void ef_vec_sha256_final(ef_vec_sha256 *s, uint8_t digest[32]);
-#else
-typedef struct ef_vec_sha256 {
-    int unused;
-} ef_vec_sha256;
-#endif
+EF_API void ef_vec_sha256_init(ef_vec_sha256 *s);
+EF_API void ef_vec_sha256_update(ef_vec_sha256 *s, const void *data, size_t n);
+EF_API void ef_vec_sha256_final(ef_vec_sha256 *s, uint8_t digest[32]);
 /* 64 lower-case hex digits and a NUL. */
-void ef_vec_sha256_hex(const uint8_t digest[32], char out[65]);
+EF_API void ef_vec_sha256_hex(const uint8_t digest[32], char out[65]);
 
 /* --------------------------------------------------------------- output */
 
 /* A buffered byte sink that counts, hashes (SHA-256) and optionally CRCs
  * what passes through, so the manifest's sizes and hashes describe exactly
  * the bytes written.  With fp NULL nothing is written (a counting pass).
- * Every ef_vec_out_init must be followed by ef_vec_out_finish.  One sink is
- * used by one thread at a time. */
+ * Every ef_vec_out_init must be followed by ef_vec_out_finish (a stream's
+ * verbs, like the hash's: it allocates nothing and never closes fp).  One
+ * sink is used by one thread at a time. */
 enum { EF_VEC_OUT_SHA = 1, EF_VEC_OUT_CRC = 2 };
 #define EF_VEC_OUT_BUF (1u << 16)
 typedef struct ef_vec_out {
@@ -65,12 +69,12 @@ typedef struct ef_vec_out {
     size_t used;
     unsigned char buf[EF_VEC_OUT_BUF];
 } ef_vec_out;
-void ef_vec_out_init(ef_vec_out *o, FILE *fp, unsigned flags);
+EF_API void ef_vec_out_init(ef_vec_out *o, FILE *fp, unsigned flags);
 /* Writes n bytes; a large block (a whole buffer or more) goes to the hash
  * and the file without being copied. */
-void ef_vec_out_write(ef_vec_out *o, const void *data, size_t n);
+EF_API void ef_vec_out_write(ef_vec_out *o, const void *data, size_t n);
 /* Hands what is buffered to the hash and the file (the buffer is then empty). */
-void ef_vec_out_drain(ef_vec_out *o);
+EF_API void ef_vec_out_drain(ef_vec_out *o);
 /* The writers' fast path: room for n bytes (n <= EF_VEC_OUT_ROOM) at the
  * end of the buffer, filled in place and then counted with
  * ef_vec_out_advance(o, m), m <= n.  Saves a copy and a call per line. */
@@ -86,14 +90,14 @@ static inline void ef_vec_out_advance(ef_vec_out *o, size_t n)
     o->used += n;
     o->bytes += n;
 }
-void ef_vec_out_puts(ef_vec_out *o, const char *s);
-void ef_vec_out_u64(ef_vec_out *o, uint64_t v); /* decimal */
+EF_API void ef_vec_out_puts(ef_vec_out *o, const char *s);
+EF_API void ef_vec_out_u64(ef_vec_out *o, uint64_t v); /* decimal */
 /* Pushes the buffer out and finishes the hash (digest may be NULL).
  * Returns 0, or -1 with errno set to the first write error. */
-int ef_vec_out_finish(ef_vec_out *o, uint8_t digest[32]);
+EF_API int ef_vec_out_finish(ef_vec_out *o, uint8_t digest[32]);
 
 /* Decimal of v into buf (at least 21 bytes); returns the length. */
-size_t ef_vec_u64_dec(uint64_t v, char *buf);
+EF_API size_t ef_vec_u64_dec(uint64_t v, char *buf);
 
 /* ------------------------------------------------------------ run facts */
 
@@ -109,18 +113,18 @@ typedef struct ef_vec_info {
 } ef_vec_info;
 
 /* "nonzero", "evenodd" or "scene". */
-const char *ef_vec_rule_name(int rule);
+EF_API const char *ef_vec_rule_name(int rule);
 /* "stim" for the command stream (what the DUT receives), else "expected". */
-const char *ef_vec_role(int iface);
+EF_API const char *ef_vec_role(int iface);
 /* "IFACE.ROLE.hex" into buf; returns buf. */
-char *ef_vec_hex_name(int iface, char *buf, size_t size);
+EF_API char *ef_vec_hex_name(int iface, char *buf, size_t size);
 /* The base name of a path: what follows the last '/'. */
-const char *ef_vec_base_name(const char *path);
+EF_API const char *ef_vec_base_name(const char *path);
 /* Text of s safe inside a one-line comment of a hex file or VCD: bytes
  * outside ' '..'~', '\' and '$' become \xNN.  Writes to o. */
-void ef_vec_out_escaped(ef_vec_out *o, const char *s);
+EF_API void ef_vec_out_escaped(ef_vec_out *o, const char *s);
 /* "generator edgeflag V; input NAME; size WxH; samples N; rule R; seed S". */
-void ef_vec_out_run_line(ef_vec_out *o, const ef_vec_info *info);
+EF_API void ef_vec_out_run_line(ef_vec_out *o, const ef_vec_info *info);
 
 /* ------------------------------------------------------------ collector */
 
@@ -140,22 +144,24 @@ typedef struct ef_vec_collect {
     char why[160];                               /* what was broken, for EF_ERR_ARG */
 } ef_vec_collect;
 
-void ef_vec_collect_init(ef_vec_collect *c, uint32_t mask);
-void ef_vec_collect_free(ef_vec_collect *c);
+/* An empty collector of the interfaces in mask (the lists allocate as
+ * transactions arrive); ef_vec_collect_destroy frees them. */
+EF_API void ef_vec_collect_create(ef_vec_collect *c, uint32_t mask);
+EF_API void ef_vec_collect_destroy(ef_vec_collect *c);
 /* Appends t.  Refuses (and remembers in c->error) an interface outside the
  * mask, a cycle >= 2^48 or not after the interface's previous one (one
  * transfer per interface per cycle), payload bits above the width, and
  * running out of memory. */
-ef_status ef_vec_collect_add(ef_vec_collect *c, const ef_txn *t);
+EF_API ef_status ef_vec_collect_add(ef_vec_collect *c, const ef_txn *t);
 /* An ef_txn_fn: user is the ef_vec_collect. */
-void ef_vec_collect_sink(void *user, const ef_txn *t);
-size_t ef_vec_collect_count(const ef_vec_collect *c, int iface);
+EF_API void ef_vec_collect_sink(void *user, const ef_txn *t);
+EF_API size_t ef_vec_collect_count(const ef_vec_collect *c, int iface);
 /* Transaction k of iface. */
-void ef_vec_collect_get(const ef_vec_collect *c, int iface, size_t k, ef_txn *out);
+EF_API void ef_vec_collect_get(const ef_vec_collect *c, int iface, size_t k, ef_txn *out);
 /* Sum of the counts of the interfaces in mask. */
-uint64_t ef_vec_collect_total(const ef_vec_collect *c, uint32_t mask);
+EF_API uint64_t ef_vec_collect_total(const ef_vec_collect *c, uint32_t mask);
 /* Cycle of the last transaction over the interfaces in mask, +1; 0 if none. */
-uint64_t ef_vec_collect_end(const ef_vec_collect *c, uint32_t mask);
+EF_API uint64_t ef_vec_collect_end(const ef_vec_collect *c, uint32_t mask);
 
 /* Global cycle order over the interfaces in mask: by cycle, then interface
  * number, then production order. */
@@ -164,39 +170,39 @@ typedef struct ef_vec_merge {
     uint32_t mask;
     size_t pos[EF_IF_COUNT];
 } ef_vec_merge;
-void ef_vec_merge_init(ef_vec_merge *m, const ef_vec_collect *c, uint32_t mask);
+EF_API void ef_vec_merge_init(ef_vec_merge *m, const ef_vec_collect *c, uint32_t mask);
 /* The next transaction into *out: 1, or 0 at the end. */
-int ef_vec_merge_next(ef_vec_merge *m, ef_txn *out);
+EF_API int ef_vec_merge_next(ef_vec_merge *m, ef_txn *out);
 
 /* -------------------------------------------------------------- writers */
 
 /* Digits of one word of iface in a hex file: ceil((48 + P) / 4); 0 if none. */
-unsigned ef_vec_hex_digits(int iface);
+EF_API unsigned ef_vec_hex_digits(int iface);
 /* The word { cycle[47:0], payload } of t as exactly ef_vec_hex_digits
  * lower-case digits and a NUL (out holds EF_VEC_HEX_MAX_DIGITS + 1). */
-unsigned ef_vec_hex_word(const ef_txn *t, char *out);
+EF_API unsigned ef_vec_hex_word(const ef_txn *t, char *out);
 /* IFACE.ROLE.hex: header comments, then one word per line. */
-void ef_vec_hex_write(ef_vec_out *o, const ef_vec_info *info, const ef_vec_collect *c, int iface);
+EF_API void ef_vec_hex_write(ef_vec_out *o, const ef_vec_info *info, const ef_vec_collect *c, int iface);
 
 /* vectors.vcd: every signal of the interfaces in info->mask. */
-void ef_vec_vcd_write(ef_vec_out *o, const ef_vec_info *info, const ef_vec_collect *c);
+EF_API void ef_vec_vcd_write(ef_vec_out *o, const ef_vec_info *info, const ef_vec_collect *c);
 
 /* vectors.bin: the 104-byte header (two CRCs), then the merged records
  * (built in memory first: the header's CRC covers them).  0, or -1 when out
  * of memory (nothing written then). */
-int ef_vec_bin_write(ef_vec_out *o, const ef_vec_info *info, const ef_vec_collect *c);
+EF_API int ef_vec_bin_write(ef_vec_out *o, const ef_vec_info *info, const ef_vec_collect *c);
 /* The header alone (records_crc = the CRC-32 of the records). */
 /* Record of t into r (docs/vectors.md section 4): interface, payload length
  * L = ceil(P/8), 48-bit cycle in 8 bytes, L payload bytes least significant
  * first.  Returns its size.  The board protocol's RESULT frames carry these. */
 #define EF_VEC_BIN_RECORD_MAX (10 + 8 * EF_TXN_WORDS)
-size_t ef_vec_bin_record(const ef_txn *t, uint8_t r[EF_VEC_BIN_RECORD_MAX]);
+EF_API size_t ef_vec_bin_record(const ef_txn *t, uint8_t r[EF_VEC_BIN_RECORD_MAX]);
 /* The header from per-interface counts (a receiver that counted the records
  * itself, as edgeflag-host does, has no ef_vec_collect). */
-void ef_vec_bin_header_counts(uint8_t h[EF_VEC_BIN_HEADER], const ef_vec_info *info, const uint64_t counts[EF_IF_COUNT],
+EF_API void ef_vec_bin_header_counts(uint8_t h[EF_VEC_BIN_HEADER], const ef_vec_info *info,
+                                     const uint64_t counts[EF_IF_COUNT], uint32_t records_crc);
+EF_API void ef_vec_bin_header(uint8_t h[EF_VEC_BIN_HEADER], const ef_vec_info *info, const ef_vec_collect *c,
                               uint32_t records_crc);
-void ef_vec_bin_header(uint8_t h[EF_VEC_BIN_HEADER], const ef_vec_info *info, const ef_vec_collect *c,
-                       uint32_t records_crc);
 
 /* ------------------------------------------------------------ the formats */
 
@@ -216,11 +222,11 @@ typedef struct ef_vec_format {
     int (*write)(ef_vec_out *o, const ef_vec_info *info, const ef_vec_collect *c, int iface);
     int reader; /* EF_VEC_FMT_* of ef_vec_read.h that reads it back; 0: none (VCD: GTKWave's) */
 } ef_vec_format;
-extern const ef_vec_format ef_vec_formats[EF_VEC_NFORMATS];
+EF_API extern const ef_vec_format ef_vec_formats[EF_VEC_NFORMATS];
 /* The format called name, or NULL. */
-const ef_vec_format *ef_vec_format_named(const char *name);
+EF_API const ef_vec_format *ef_vec_format_named(const char *name);
 /* The format of a file name by its extension, or NULL. */
-const ef_vec_format *ef_vec_format_of_path(const char *path);
+EF_API const ef_vec_format *ef_vec_format_of_path(const char *path);
 
 /* One file written, as the manifest lists it. */
 typedef struct ef_vec_file {
@@ -231,12 +237,10 @@ typedef struct ef_vec_file {
     uint64_t count, bytes;
     char sha256[65];
 } ef_vec_file;
-#ifndef EF_NO_MANIFEST
 /* manifest.json, by json-c (docs/vectors.md section 6).  0, or -1 when out
  * of memory (nothing written then). */
-int ef_vec_manifest_write(ef_vec_out *o, const ef_vec_info *info, const ef_vec_collect *c, const ef_vec_file *files,
-                          size_t nfiles);
-#endif
+EF_API int ef_vec_manifest_write(ef_vec_out *o, const ef_vec_info *info, const ef_vec_collect *c,
+                                 const ef_vec_file *files, size_t nfiles);
 
 /* ----------------------------------------------------------------- seed */
 
@@ -244,17 +248,21 @@ int ef_vec_manifest_write(ef_vec_out *o, const ef_vec_info *info, const ef_vec_c
  * that are blank or start with '#') of an edgeflag gen scene: 1 and *seed,
  * or 0 when there is none.  N must be decimal <= 2^64-1, followed by the end
  * of the line, ',', a space or a tab. */
-int ef_vec_scene_seed(const char *text, size_t len, uint64_t *seed);
+EF_API int ef_vec_scene_seed(const char *text, size_t len, uint64_t *seed);
 /* The same, reading at most the first 64 KiB of the file at path.  0 when
  * the file has no such line or cannot be read (it was just loaded: an
  * error here is not this reader's to report). */
-int ef_vec_file_seed(const char *path, uint64_t *seed);
+EF_API int ef_vec_file_seed(const char *path, uint64_t *seed);
 
 /* ------------------------------------------------------- RTL headers */
 
 /* The Verilog header ef_ifaces.vh (sv 0) or the SystemVerilog package
  * ef_ifaces_pkg.sv (sv 1) of docs/vectors.md section 8, from the interface
  * table; the caller checks f for write errors. */
-void ef_vec_rtl_header_write(FILE *f, int sv);
+EF_API void ef_vec_rtl_header_write(FILE *f, int sv);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif /* EF_VEC_H */

@@ -36,7 +36,7 @@ extern "C" {
 #define EF_VEC_BIN_HEADER_SIZE 104u
 #define EF_VEC_BIN_VERSION 1u
 #define EF_VEC_HEX_VERSION 1u
-extern const uint8_t ef_vec_bin_magic[8];
+EF_API extern const uint8_t ef_vec_bin_magic[8];
 
 /* Where a reader error is.  Records are numbered from 1, like lines. */
 typedef enum ef_vec_at {
@@ -58,7 +58,7 @@ typedef struct ef_vec_read_error {
 } ef_vec_read_error;
 
 /* Formats the error as above into buf (always NUL-terminated). */
-void ef_vec_read_error_format(const ef_vec_read_error *e, char *buf, size_t size);
+EF_API void ef_vec_read_error_format(const ef_vec_read_error *e, char *buf, size_t size);
 
 /* One interface's transactions in file order. */
 typedef struct ef_vec_seq {
@@ -85,45 +85,46 @@ typedef struct ef_vec_dump {
 } ef_vec_dump;
 
 /* Releases everything and leaves an empty dump. */
-void ef_vec_dump_free(ef_vec_dump *d);
+EF_API void ef_vec_dump_destroy(ef_vec_dump *d);
 
 /* Transaction k of interface iface as an ef_txn (for ef_txn_field). */
-void ef_vec_dump_txn(const ef_vec_dump *d, int iface, size_t k, ef_txn *t);
+EF_API void ef_vec_dump_txn(const ef_vec_dump *d, int iface, size_t k, ef_txn *t);
 
 /* The interface a file name starts with ("pix.actual.hex" -> EF_IF_PIX:
  * the name up to its first '.', after any directory), or -1. */
-int ef_vec_iface_from_name(const char *path);
+EF_API int ef_vec_iface_from_name(const char *path);
 
 /* Hex file (docs/vectors.md section 3).  `want` >= 0: the file must hold that
  * interface (a header naming another is an error).  Otherwise the header
  * says which, or, when there is none, `hint` (-1: then the file is refused).
  * An empty file (0 bytes) is an error: even a dump of no transactions should
  * say so with a comment. */
-ef_status ef_vec_read_hex(const char *name, const uint8_t *data, size_t len, int want, int hint, ef_vec_dump *out,
-                          ef_vec_read_error *err);
+EF_API ef_status ef_vec_read_hex(const char *name, const uint8_t *data, size_t len, int want, int hint,
+                                 ef_vec_dump *out, ef_vec_read_error *err);
 
 /* Binary stream (docs/vectors.md section 4): magic, version, header size,
  * header fields, header CRC, records (interface in the mask, payload length
  * of the interface, 48-bit cycle, no bits above the payload), counts, CRC of
  * the records. */
-ef_status ef_vec_read_bin(const char *name, const uint8_t *data, size_t len, ef_vec_dump *out, ef_vec_read_error *err);
+EF_API ef_status ef_vec_read_bin(const char *name, const uint8_t *data, size_t len, ef_vec_dump *out,
+                                 ef_vec_read_error *err);
 
 /* Reads the file at path, streaming (a chunk at a time, so a large dump
  * costs its transactions, not its text): a name ending in ".bin" is a binary
  * stream, anything else a hex file.  `name` is what messages call it (the
  * path when NULL). */
-ef_status ef_vec_read_path(const char *path, const char *name, int want, int hint, ef_vec_dump *out,
-                           ef_vec_read_error *err);
+EF_API ef_status ef_vec_read_path(const char *path, const char *name, int want, int hint, ef_vec_dump *out,
+                                  ef_vec_read_error *err);
 
 /* The same from an open stream (binary: nonzero for the binary format),
  * read EF_VR_CHUNK bytes at a time; fp stays open. */
-ef_status ef_vec_read_fp(FILE *fp, const char *name, int binary, int want, int hint, ef_vec_dump *out,
-                         ef_vec_read_error *err);
+EF_API ef_status ef_vec_read_fp(FILE *fp, const char *name, int binary, int want, int hint, ef_vec_dump *out,
+                                ef_vec_read_error *err);
 
 /* CRC-32 of IEEE 802.3 / zlib / PNG (reflected 0xEDB88320, initial and final
  * XOR 0xFFFFFFFF): crc = ef_vec_read_crc32(0, p, n) for a whole buffer, or
  * chained over pieces by passing the previous result. */
-uint32_t ef_vec_read_crc32(uint32_t crc, const void *data, size_t len);
+EF_API uint32_t ef_vec_read_crc32(uint32_t crc, const void *data, size_t len);
 
 /* ------------------------------------------------------------- manifest */
 typedef struct ef_vec_manifest_file {
@@ -147,10 +148,11 @@ typedef struct ef_vec_manifest {
  * an array of objects whose "name" is a plain file name in the manifest's
  * own directory, and a value refused is named by its key ("FILE: files[4].
  * name: ...").  EF_ERR_UNSUPPORTED in a build without json-c (WITH_MANIFEST=0). */
-ef_status ef_vec_read_manifest(const char *name, const uint8_t *data, size_t len, ef_vec_manifest *out,
-                               ef_vec_read_error *err);
-ef_status ef_vec_read_manifest_path(const char *path, const char *name, ef_vec_manifest *out, ef_vec_read_error *err);
-void ef_vec_manifest_free(ef_vec_manifest *m);
+EF_API ef_status ef_vec_read_manifest(const char *name, const uint8_t *data, size_t len, ef_vec_manifest *out,
+                                      ef_vec_read_error *err);
+EF_API ef_status ef_vec_read_manifest_path(const char *path, const char *name, ef_vec_manifest *out,
+                                           ef_vec_read_error *err);
+EF_API void ef_vec_manifest_destroy(ef_vec_manifest *m);
 
 #ifdef __cplusplus
 }

@@ -55,7 +55,7 @@ uint32_t ef_gen_level_random(int level)
     return level == 1 ? EF_GEN_LEVEL1_RANDOM : level == 2 ? EF_GEN_LEVEL2_RANDOM : 0;
 }
 
-ef_status ef_gen_config_init(ef_gen_config *c, int level)
+ef_status ef_gen_config_defaults(ef_gen_config *c, int level)
 {
     memset(c, 0, sizeof *c);
     c->seed = EF_GEN_DEFAULT_SEED;
@@ -241,7 +241,7 @@ void ef_genb_poly(ef_genb *b, const int32_t *xy, uint32_t n)
 
 /* ------------------------------------------------------------- one case */
 
-void ef_gen_case_free(ef_gen_case *gc) { ef_scene_free(&gc->scene); }
+void ef_gen_case_destroy(ef_gen_case *gc) { ef_scene_destroy(&gc->scene); }
 
 ef_status ef_gen_build(const ef_gen_config *c, uint32_t k, ef_gen_case *out)
 {
@@ -249,7 +249,7 @@ ef_status ef_gen_build(const ef_gen_config *c, uint32_t k, ef_gen_case *out)
     ef_status st;
 
     memset(out, 0, sizeof *out);
-    ef_scene_init(&out->scene, 1, 1);
+    ef_scene_create(&out->scene, 1, 1);
     if (ef_gen_config_check(c) != EF_OK)
         return EF_ERR_ARG;
     nd = ef_gen_directed_count(c);
@@ -291,7 +291,7 @@ ef_status ef_gen_build(const ef_gen_config *c, uint32_t k, ef_gen_case *out)
 
 /* ------------------------------------------------------------------ text */
 
-void ef_gen_text_free(ef_gen_text *t)
+void ef_gen_text_destroy(ef_gen_text *t)
 {
     free(t->data);
     t->data = NULL;

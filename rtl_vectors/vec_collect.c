@@ -16,7 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-void ef_vec_collect_init(ef_vec_collect *c, uint32_t mask)
+void ef_vec_collect_create(ef_vec_collect *c, uint32_t mask)
 {
     memset(c, 0, sizeof *c);
     c->mask = mask;
@@ -31,7 +31,7 @@ void ef_vec_collect_init(ef_vec_collect *c, uint32_t mask)
     }
 }
 
-void ef_vec_collect_free(ef_vec_collect *c)
+void ef_vec_collect_destroy(ef_vec_collect *c)
 {
     for (int i = 0; i < EF_IF_COUNT; i++) {
         free(c->list[i].rec);

@@ -232,6 +232,6 @@ ef_status ef_vr_bin(ef_vr_src *s, const char *name, ef_vec_dump *out, ef_vec_rea
     }
     return EF_OK;
 fail:
-    ef_vec_dump_free(out);
+    ef_vec_dump_destroy(out);
     return st;
 }

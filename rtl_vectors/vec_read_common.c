@@ -150,7 +150,7 @@ int ef_vr_grow(ef_vec_seq *q, int with_off)
     return 0;
 }
 
-void ef_vec_dump_free(ef_vec_dump *d)
+void ef_vec_dump_destroy(ef_vec_dump *d)
 {
     for (int i = 0; i < EF_IF_COUNT; i++) {
         free(d->seq[i].cycle);
@@ -298,7 +298,7 @@ ef_status ef_vec_read_fp(FILE *fp, const char *name, int binary, int want, int h
     /* A read error (EISDIR for a directory, EIO) outranks whatever the parser
      * made of the bytes before it: they were not the whole file. */
     if (s.ioerr) {
-        ef_vec_dump_free(out);
+        ef_vec_dump_destroy(out);
         st = ef_vr_err_file(err, EF_ERR_IO, name, "read error: %s", strerror(s.ioerr));
     }
     free(s.buf);

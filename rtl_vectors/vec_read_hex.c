@@ -567,6 +567,6 @@ ef_status ef_vr_hex(ef_vr_src *s, const char *name, int want, int hint, ef_vec_d
     if (st == EF_OK && !s->ioerr)
         st = at_end(&h, ef_vr_tell(s));
     if (st != EF_OK)
-        ef_vec_dump_free(out);
+        ef_vec_dump_destroy(out);
     return st;
 }

@@ -249,7 +249,7 @@ ef_status ef_vec_read_manifest(const char *name, const uint8_t *data, size_t len
         st = walk(&c, top);
     json_object_put(top);
     if (st != EF_OK)
-        ef_vec_manifest_free(out);
+        ef_vec_manifest_destroy(out);
     return st;
 }
 
@@ -267,7 +267,7 @@ ef_status ef_vec_read_manifest(const char *name, const uint8_t *data, size_t len
 
 #endif /* EF_NO_MANIFEST */
 
-void ef_vec_manifest_free(ef_vec_manifest *m)
+void ef_vec_manifest_destroy(ef_vec_manifest *m)
 {
     for (size_t k = 0; k < m->nfiles; k++) {
         free(m->files[k].name);

@@ -9,12 +9,20 @@
 #include "ef_vec.h"
 
 #ifndef EF_NO_MANIFEST
+#include <nettle/sha2.h>
 
-void ef_vec_sha256_init(ef_vec_sha256 *s) { sha256_init(&s->ctx); }
+/* ef_vec.h keeps Nettle's state in opaque storage: it must fit, aligned. */
+_Static_assert(sizeof(struct sha256_ctx) <= sizeof(((ef_vec_sha256 *)0)->state),
+               "Nettle's sha256_ctx fits ef_vec_sha256's storage");
+_Static_assert(_Alignof(struct sha256_ctx) <= _Alignof(uint64_t), "and its alignment");
 
-void ef_vec_sha256_update(ef_vec_sha256 *s, const void *data, size_t n) { sha256_update(&s->ctx, n, data); }
+static struct sha256_ctx *ctx_of(ef_vec_sha256 *s) { return (struct sha256_ctx *)(void *)s->state.bytes; }
 
-void ef_vec_sha256_final(ef_vec_sha256 *s, uint8_t digest[32]) { sha256_digest(&s->ctx, SHA256_DIGEST_SIZE, digest); }
+void ef_vec_sha256_init(ef_vec_sha256 *s) { sha256_init(ctx_of(s)); }
+
+void ef_vec_sha256_update(ef_vec_sha256 *s, const void *data, size_t n) { sha256_update(ctx_of(s), n, data); }
+
+void ef_vec_sha256_final(ef_vec_sha256 *s, uint8_t digest[32]) { sha256_digest(ctx_of(s), SHA256_DIGEST_SIZE, digest); }
 
 #endif
 

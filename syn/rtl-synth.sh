@@ -35,6 +35,7 @@
 # place and time SETUP's own logic), EF_SYNTH_OUT (build/synth).
 # Each configuration's Yosys script, log, stat and nextpnr log stay in
 # EF_SYNTH_OUT; the last line of each result is the exact command.
+# shellcheck disable=SC2086 # the RTL file lists ($RTL, $A_*) are split into words on purpose
 set -u
 export LC_ALL=C
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -88,7 +89,7 @@ ecp5() {
     local c s=""
     for c in LUT4 TRELLIS_FF DP16KD TRELLIS_DPR16X4 CCU2C MULT18X18D; do s="$s, $(count "$out/$tag.stat" $c) $c"; done
     echo "rtl-synth: $tag ($top $params): synth_ecp5${s#,} ($((SECONDS - t0)) s)"
-    echo "    yosys -p 'read_verilog -Irtl -defer $(echo "$files" | sed "s|$root/||g"); chparam$chp $top; hierarchy -top $top; synth_ecp5 -top $top; stat'"
+    echo "    yosys -p 'read_verilog -Irtl -defer ${files//$root\//}; chparam$chp $top; hierarchy -top $top; synth_ecp5 -top $top; stat'"
     t0=$SECONDS
     wrap "$tag" "$top" "$params" "$chp" "$files" &&
         yosys -q -l "$out/${tag}_pins.log" -p "read_verilog -I$R -defer $out/${tag}_pins.v $files; hierarchy -top ${top}_pins; synth_ecp5 -top ${top}_pins -json $out/${tag}_pins.json" \
@@ -135,7 +136,7 @@ YS
     lut=$(count "$out/$tag.stat" SB_LUT4) ff=$(count "$out/$tag.stat" SB_DFF)
     ram=$(count "$out/$tag.stat" SB_RAM40_4K) cy=$(count "$out/$tag.stat" SB_CARRY)
     echo "rtl-synth: $tag ($top $params): $lut LUT4, $ff flip-flops, $ram SB_RAM40_4K, $cy SB_CARRY ($((SECONDS - t0)) s)"
-    echo "    yosys -p 'read_verilog -Irtl -defer $(echo "$files" | sed "s|$root/||g"); chparam$chp $top; hierarchy -top $top; synth_ice40 -top $top; stat'"
+    echo "    yosys -p 'read_verilog -Irtl -defer ${files//$root\//}; chparam$chp $top; hierarchy -top $top; synth_ice40 -top $top; stat'"
     # a logic cell holds one LUT4 and one flip-flop: either count over the
     # device's cells cannot fit
     if [ "$lut" -gt "$lcs" ] || [ "$ff" -gt "$lcs" ] || [ "$ram" -gt "$brams" ]; then

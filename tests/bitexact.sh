@@ -13,7 +13,7 @@
 #
 #   usage: tests/bitexact.sh SVG_DIR
 set -u
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/.." || exit 1
 svgdir=${1:?usage: tests/bitexact.sh SVG_DIR}
 out=build/bitexact
 rm -rf "$out"; mkdir -p "$out"

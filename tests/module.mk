@@ -41,9 +41,12 @@ test-build: lib cli $(UNIT_BIN) $(ORACLE_CHECK) $(ORACLE_SELFTEST) $(TOOL_BIN) $
 	@bash tests/layers/run.sh $(BUILD)
 
 # The house style (.clang-format, docs/source.md "Formatting"): `make format` applies it.
-.PHONY: test-format format
+.PHONY: test-format format test-shellcheck
 test-format:
 	@bash tools/format.sh --check
+# shellcheck over every shell script (.shellcheckrc): no finding allowed.
+test-shellcheck:
+	@bash tools/shellcheck.sh
 format:
 	@bash tools/format.sh
 

@@ -5,7 +5,7 @@
 # demands that tests/oracle_check reports mismatches.  Mutant 3 must also fail
 # tests/area_check, the exact-area comparison that guards the spec itself.
 set -u
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/.." || exit 1
 svgdir=${EF_SVG:-$(pwd)/tests/data/svg}
 pass=0 fail=0
 for m in 1 2 3; do

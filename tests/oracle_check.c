@@ -165,7 +165,7 @@ static int check_shared(tally *t, const char *dir)
                sc.height, t->failed == before ? "agree" : "DIFFER");
         fflush(stdout);
         files++;
-        ef_scene_free(&sc);
+        ef_scene_destroy(&sc);
         free(names[i]);
     }
     return files;

@@ -29,7 +29,7 @@
 # silently; everything that did run must agree.
 #   usage: tests/portability.sh SVG_DIR
 set -u
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/.." || exit 1
 svgdir=${1:?usage: tests/portability.sh SVG_DIR}
 out=build/portability
 rm -rf "$out"; mkdir -p "$out"
@@ -115,22 +115,24 @@ jobs=()   # "label|file|options" ; svg jobs only for native full builds
 "$ref/tests/tools/regress_scene" >"$out/regress.scene" || die "regress_scene failed"
 cfgs=()
 for n in 8 16 32; do for rule in file evenodd nonzero; do cfgs+=("$n $rule"); done; done
-opts_of() { local n=$1 rule=$2; printf -- '--samples %s' "$n"; [ "$rule" != file ] && printf -- ' --rule %s' "$rule"; }
+# the scenes written from the shared SVGs, in name order (not the generated regression)
+scenes() { local f; for f in "$out"/*.scene; do [ "$f" = "$out/regress.scene" ] || echo "$f"; done; }
+opts_of() { local n=${1% *} rule=${1#* }; printf -- '--samples %s' "$n"; [ "$rule" != file ] && printf -- ' --rule %s' "$rule"; }
 nsvg=0
 for svg in "$svgdir"/*.svg; do
     base=$(basename "$svg" .svg)
     "$ref/tests/tools/scene_dump" "$svg" >"$out/$base.scene" 2>>"$out/dump.log" || die "cannot dump $svg"
     nsvg=$((nsvg + 1))
     for c in "${cfgs[@]}"; do
-        o=$(opts_of $c); jobs+=("$base ($c)|$out/$base.scene|$o|$svg")
+        o=$(opts_of "$c"); jobs+=("$base ($c)|$out/$base.scene|$o|$svg")
     done
 done
-for c in "${cfgs[@]}"; do o=$(opts_of $c); jobs+=("regress ($c)|$out/regress.scene|$o|"); done
+for c in "${cfgs[@]}"; do o=$(opts_of "$c"); jobs+=("regress ($c)|$out/regress.scene|$o|"); done
 # the section 3.5 options (docs/spec.md 10): tent, channel offsets, both, on SVG dumps (regress_scene
 # has vertices at the coordinate limit, which a channel's shift cannot move: refused by design)
 if "$ref/edgeflag" render --help 2>/dev/null | grep -q -- --filter; then
     k=0
-    for f in $(ls "$out"/*.scene | grep -v '/regress.scene$' | head -n 6); do
+    for f in $(scenes | head -n 6); do
         case $((k % 3)) in
         0) o="--samples 8 --filter tent" ;;
         1) o="--samples 16 --subpixel bgr" ;;
@@ -143,7 +145,7 @@ ngen=0
 if "$ref/edgeflag" gen --help >/dev/null 2>&1 && "$ref/edgeflag" gen -o "$out/gen" --level 1 >"$out/gen.log" 2>&1; then
     k=0
     for f in "$out"/gen/*.scene; do
-        o=$(opts_of ${cfgs[$((k % 9))]}); jobs+=("gen $(basename "$f" .scene) (${cfgs[$((k % 9))]})|$f|$o|")
+        o=$(opts_of "${cfgs[$((k % 9))]}"); jobs+=("gen $(basename "$f" .scene) (${cfgs[$((k % 9))]})|$f|$o|")
         k=$((k + 1)); ngen=$((ngen + 1))
     done
 else
@@ -154,13 +156,13 @@ vjobs=()   # "label|file|options": vectors, every build
 if "$ref/edgeflag" vectors --help >/dev/null 2>&1; then
     # three configurations cover both rules and every N; qemu makes each set cost
     for c in "8 file" "16 evenodd" "32 nonzero"; do
-        o=$(opts_of $c); vjobs+=("vectors regress ($c)|$out/regress.scene|$o")
+        o=$(opts_of "$c"); vjobs+=("vectors regress ($c)|$out/regress.scene|$o")
     done
-    for f in $(ls "$out"/*.scene | grep -v '/regress.scene$' | head -n 2); do
+    for f in $(scenes | head -n 2); do
         vjobs+=("vectors $(basename "$f" .scene) (8 file)|$f|--samples 8")
     done
     if "$ref/edgeflag" vectors --help 2>/dev/null | grep -q -- --filter; then
-        f=$(ls "$out"/*.scene | grep -v '/regress.scene$' | head -n 1)
+        f=$(scenes | head -n 1)
         vjobs+=("vectors $(basename "$f" .scene) (16 tent rgb)|$f|--samples 16 --filter tent --subpixel rgb")
     fi
 fi

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs what edgeflag needs from Debian 12's packages, only when missing.
-#   tools/install-deps.sh          build + demo: compiler, expat, libpng
+#   tools/install-deps.sh          build + demo: compiler, expat, libpng, libusb and libgpiod (the USB and
+#                                  GPIO transports of the edgeflag-host that `make demo` builds)
 #   tools/install-deps.sh test     + cmocka, clang, 32-bit multilib, Icarus, Verilator, GTKWave (the
 #                                  test suite), and the
 #                                  aarch64/s390x cross C libraries and qemu-user (best effort)
@@ -17,11 +18,15 @@
 set -euo pipefail
 
 pkgs=(gcc make pkg-config libexpat1-dev libpng-dev nettle-dev libjson-c-dev zlib1g-dev)
+# edgeflag-host's USB and GPIO transports: without them it builds, but says "built without ..."
+pkgs+=(libusb-1.0-0-dev libgpiod-dev)
 optional=()
 if [ "${1:-}" = test ] || [ "${1:-}" = portability ]; then
     pkgs+=(libcmocka-dev clang gcc-multilib libclang-rt-14-dev)
     # make test-format: the house style is stated for Debian 12's clang-format (14)
     pkgs+=(clang-format)
+    # make test-shellcheck: every shell script of the tree (docs/source.md "Formatting")
+    pkgs+=(shellcheck)
     # the vectors' real readers: Icarus and Verilator ($readmemh testbenches), GTKWave's
     # vcd2fst/fst2vcd (VCD round trip), xmllint (JUnit XML well-formedness)
     pkgs+=(iverilog verilator gtkwave libxml2-utils)

@@ -7,7 +7,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 venv=${EF_VENV:-build/venv}
-[ $# -gt 0 ] || { echo "usage: tools/install-venv.sh GROUP... (groups: $(cd tools/requirements && ls -- *.txt | sed 's/\.txt$//' | tr '\n' ' '))" >&2; exit 2; }
+[ $# -gt 0 ] || { echo "usage: tools/install-venv.sh GROUP... (groups: $(cd tools/requirements && for f in *.txt; do printf '%s ' "${f%.txt}"; done))" >&2; exit 2; }
 for g in "$@"; do
     [ -f "tools/requirements/$g.txt" ] || { echo "install-venv: no group '$g' (tools/requirements/$g.txt)" >&2; exit 2; }
 done

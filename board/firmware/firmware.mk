@@ -13,9 +13,12 @@ FW_SIZE ?= riscv64-unknown-elf-size
 EF_BOARD_SERIAL ?= EFULX3S-0001
 FW_LITEX_INC = $(shell $(EF_VENV_PY) -c 'import litex, os; print(os.path.join(os.path.dirname(litex.__file__), "soc/software/include"))' 2>/dev/null)
 FW_MARCH ?= rv32im
+# Layer: its own folder, the board engine, the protocol and the public headers; never host/, cli/,
+# util/ or the model's internals (tests/layers checks it).
+LAYER_INC_firmware := -Iboard/firmware -Iboard -Iproto -Iinclude/edgeflag
 FW_CFLAGS = -march=$(FW_MARCH) -mabi=ilp32 --specs=picolibc.specs -Os -std=gnu11 -Wall -Wextra -Werror \
             -ffunction-sections -fdata-sections -DEF_BOARD_SERIAL='"$(EF_BOARD_SERIAL)"' \
-            -Iboard/firmware -Iboard -Iproto -Iinclude/edgeflag -I$(FW_SOC)/software/include -isystem $(FW_LITEX_INC) -isystem $(FW_LITEX_INC)/../../cores/cpu/vexriscv
+            $(LAYER_INC_firmware) -I$(FW_SOC)/software/include -isystem $(FW_LITEX_INC) -isystem $(FW_LITEX_INC)/../../cores/cpu/vexriscv
 FW_OUT ?= $(FW_SOC)/firmware
 FW_EXTRA ?=
 FW_SRC = board/firmware/crt0.S board/firmware/main.c board/firmware/dut_soc.c board/firmware/crc32.c \

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The edgeflag board's system-on-chip (docs/board-ulx3s.md).
 
-A VexRiscv (minimal) runs the firmware (board/firmware: the board engine
+A VexRiscv (lite: rv32im with small caches) runs the firmware (board/firmware: the board engine
 board/ef_board.c) from the integrated ROM; ef_raster is the peripheral of
 ef_periph.py on its own clock `ef`; the UART is LiteX's, at 3 Mbaud.
 

@@ -12,14 +12,17 @@ instances of its module (hit when any instance hit it), and sorts them:
   branch   the v_line points that are an if, else or case arm (a subset);
   toggle   every v_toggle point (one per bit of a signal): >= 95 % per module.
 
-A hole may be waived in WAIVERS (tab-separated: kind, module, pattern, reason;
-kind line also waives the branch of that point).  The pattern is a glob over the
-point's id: for a toggle the signal's bit as Verilator names it ("occ[17]"), for
-a line or branch "ARM: SOURCE" (ARM is Verilator's comment: block, if, else,
-case, ...; SOURCE the point's first source line, trimmed).  A waiver that
+A hole may be waived in WAIVERS (tab-separated: kind, module (a glob), pattern,
+reason; kind line also waives the branch of that point).  The pattern is a glob
+over the point's id, '[' and ']' plain: for a toggle the signal's bit as
+Verilator names it ("occ[17]"; "SIG[LO:HI]" waives bits LO..HI of the signals
+the glob SIG names), for a line or branch "ARM: SOURCE" (ARM is Verilator's
+comment: block, if, else, case, ...; SOURCE the point's first source line,
+trimmed).  A waiver that
 matches no hole is reported as stale (the design changed: review it).
 
 usage: cov_summary.py COVERAGE.dat RTL_DIR WAIVERS [--require] [--holes FILE]
+The last column gives toggle bits and lines hit or waived (percent).
 Exit 1 with --require when an unwaived line or branch hole is left, a
 module's toggle coverage is under 95 %, or a waiver is stale.
 """
@@ -73,11 +76,14 @@ def main():
 
     # (module, kind, id) -> count
     merged = {}
+    fname = {}
     for kv, n in parse(dat):
         f = kv.get("f", "")
         if os.path.dirname(os.path.realpath(f)) != rtl_dir:
             continue
+        # a module is its file (one per file in rtl/); an include file (ef_rooks.vh) stands alone
         mod = os.path.basename(f)[:-2] if f.endswith(".v") else os.path.basename(f)
+        fname[mod] = os.path.basename(f)
         page = kv.get("page", "")
         o = kv.get("o", "")
         ln = int(kv.get("l", "0") or 0)
@@ -100,19 +106,37 @@ def main():
                                  "and a reason: %r" % (waivers_path, ln))
             waivers.append([parts[0], parts[1], parts[2], parts[3], 0])
 
+    def matches(pat, pid):
+        # "SIG[LO:HI]": bits LO..HI of the signals SIG (a glob) names; else a glob over the id
+        # in which '[' and ']' are plain characters
+        m = re.fullmatch(r"(.*)\[(\d+):(\d+)\]", pat)
+        if m:
+            b = re.fullmatch(r"(.*)\[(\d+)\]", pid)
+            return bool(b) and fnmatch.fnmatchcase(b.group(1), m.group(1)) and \
+                int(m.group(2)) <= int(b.group(2)) <= int(m.group(3))
+        esc = pat.replace("[", "\x00").replace("]", "[]]").replace("\x00", "[[]")
+        return fnmatch.fnmatchcase(pid, esc)
+
     def waived(mod, kind, pid):
         for w in waivers:
-            if w[1] == mod and (w[0] == kind or (kind == "line" and w[0] == "branch")) \
-                    and fnmatch.fnmatchcase(pid, w[2]):
+            if fnmatch.fnmatchcase(mod, w[1]) and (w[0] == kind or (kind == "line" and w[0] == "branch")) \
+                    and matches(w[2], pid):
                 w[4] += 1
                 return True
         return False
 
     mods = sorted({k[0] for k in merged})
+
+    def cw(c):
+        """toggle bits hit or waived, and lines hit or waived, as 'T % / L %'"""
+        t = (c["toggle"][1] + c["toggle"][2]) * 1000 // c["toggle"][0] if c["toggle"][0] else 1000
+        ln = (c["line"][1] + c["line"][2]) * 1000 // c["line"][0] if c["line"][0] else 1000
+        return "%d.%d/%d.%d" % (*divmod(t, 10), *divmod(ln, 10))
     bad = 0
     holes = []
     tot = {"line": [0, 0, 0], "branch": [0, 0, 0], "toggle": [0, 0, 0]}
-    print("%-12s %22s %22s %24s %8s" % ("module", "lines", "branches", "toggle bits", "waived"))
+    print("%-12s %22s %22s %24s %8s %10s" % ("module", "lines", "branches", "toggle bits", "waived",
+                                            "+waived"))
     for mod in mods:
         c = {"line": [0, 0, 0], "branch": [0, 0, 0], "toggle": [0, 0, 0]}   # points, hit, waived
         for key, n in merged.items():
@@ -127,7 +151,7 @@ def main():
                 c[k][1] += n > 0
                 c[k][2] += w
             if n == 0:
-                where = ("rtl/%s.v:%d" % (mod, key[3])) if kind == "line" else ("rtl/%s.v" % mod)
+                where = ("rtl/%s:%d" % (fname[mod], key[3])) if kind == "line" else ("rtl/%s" % fname[mod])
                 holes.append("%s %s %s %s%s" % ("waived" if w else "HOLE", kind, where, pid,
                                                  "" if not w else ""))
         for k in c:
@@ -136,7 +160,8 @@ def main():
         def pct(v):
             return "%d/%d (%d.%d %%)" % (v[1], v[0], *divmod(v[1] * 1000 // v[0], 10)) if v[0] else "-"
         nw = c["line"][2] + c["toggle"][2]
-        print("%-12s %22s %22s %24s %8d" % (mod, pct(c["line"]), pct(c["branch"]), pct(c["toggle"]), nw))
+        print("%-12s %22s %22s %24s %8d %10s" % (mod, pct(c["line"]), pct(c["branch"]), pct(c["toggle"]), nw,
+                                                 cw(c)))
         if c["line"][0] - c["line"][1] - c["line"][2] > 0:
             bad += 1
         tcov = (c["toggle"][1] + c["toggle"][2]) * 1000 // c["toggle"][0] if c["toggle"][0] else 1000
@@ -144,8 +169,8 @@ def main():
             bad += 1
     def pct(v):
         return "%d/%d (%d.%d %%)" % (v[1], v[0], *divmod(v[1] * 1000 // v[0], 10)) if v[0] else "-"
-    print("%-12s %22s %22s %24s %8d" % ("all", pct(tot["line"]), pct(tot["branch"]), pct(tot["toggle"]),
-                                        tot["line"][2] + tot["toggle"][2]))
+    print("%-12s %22s %22s %24s %8d %10s" % ("all", pct(tot["line"]), pct(tot["branch"]), pct(tot["toggle"]),
+                                             tot["line"][2] + tot["toggle"][2], cw(tot)))
     unw = [h for h in holes if h.startswith("HOLE")]
     print("holes: %d line/branch and %d toggle bits unhit; %d of them waived (dv/coverage/waivers.tsv), %d not"
           % (sum(1 for h in holes if " line " in h), sum(1 for h in holes if " toggle " in h),

@@ -156,7 +156,7 @@ void ef_mstream_destroy(ef_mstream *m)
     if (!m)
         return;
     ef_ctx_destroy(m->ctx);
-    ef_image_free(&m->img);
+    ef_image_destroy(&m->img);
     for (int i = 0; i < EF_IF_COUNT; i++)
         free(m->q[i].v);
     free(m->pts);
@@ -299,10 +299,10 @@ static int cmd_frame(ef_mstream *m, const uint64_t w[2])
                     m->p.width_max, m->p.height_max);
     if (!m->ctx || ef_ctx_width(m->ctx) != (int32_t)width || ef_ctx_height(m->ctx) != (int32_t)height) {
         ef_ctx_destroy(m->ctx);
-        ef_image_free(&m->img);
+        ef_image_destroy(&m->img);
         m->ctx = NULL;
         if (ef_ctx_create(&m->ctx, (int32_t)width, (int32_t)height, m->p.samples) != EF_OK ||
-            ef_image_alloc(&m->img, (int32_t)width, (int32_t)height) != EF_OK)
+            ef_image_create(&m->img, (int32_t)width, (int32_t)height) != EF_OK)
             return fail(m, EF_MS_ERR_NOMEM, EF_OP_FRAME, "out of memory for a %" PRIu32 "x%" PRIu32 " canvas", width,
                         height);
     } else {

@@ -13,16 +13,19 @@ DPI_TEST  := $(BUILD)/tests/test_model_stream
 # svdpi.h comes with the simulator (Verilator's copy here); only ef_dpi.o needs it.
 SVDPI_INC = $(shell verilator --getenv VERILATOR_ROOT 2>/dev/null)/include/vltstd
 
-$(DPI_OBJ) $(DPI_SV_OBJ) $(DPI_TEST): CPPFLAGS += -I$(DPI_DIR)
+# Layer: the public headers and its own; never model/'s internals, host/, board/ or cli/.
+LAYER_INC_dpi := -Iinclude/edgeflag -I$(DPI_DIR)
+$(DPI_OBJ) $(DPI_SV_OBJ): EF_INC := $(LAYER_INC_dpi)
+$(DPI_TEST): CPPFLAGS += -I$(DPI_DIR)
 $(DPI_SV_OBJ): CPPFLAGS += -I$(SVDPI_INC)
 
 $(DPI_LIB): $(DPI_OBJ) $(DPI_SV_OBJ) $(LIB_OBJ)
 	@rm -f $@
 	ar rcs $@ $^
 
-$(DPI_TEST): tests/dpi/test_model_stream.c $(DPI_OBJ) $(RTLV_OBJ) $(LIB_A)
+$(DPI_TEST): tests/dpi/test_model_stream.c $(DPI_OBJ) $(VEC_A) $(LIB_A)
 	@mkdir -p $(dir $@)
-	$(CC) $(CPPFLAGS) $(CFLAGS_ALL) $< $(DPI_OBJ) $(RTLV_OBJ) -o $@ $(LDFLAGS_ALL) $(TEST_LIBS) -lpthread
+	$(CC) $(CPPFLAGS) $(CFLAGS_ALL) $< $(DPI_OBJ) $(VEC_A) -o $@ $(LDFLAGS_ALL) $(TEST_LIBS) -lpthread
 
 .PHONY: test-dpi
 # Without Verilator there is no svdpi.h: the archive is not built, and

@@ -24,7 +24,8 @@ Code inside `ifdef EF_FAULT_*` (the fault variants) is left alone, as are
 initial blocks, for headers, parameters, and functions that a parameter
 calls (they must stay constant expressions).
 
-usage: rtl_mutate.py OUT_DIR FILE.v...    (prints the number of mutants)
+usage: rtl_mutate.py OUT_DIR FILE.v|FILE.vh...    (prints the number of mutants; a .vh file is
+       a fragment included in a module's body, whose ef_mut it uses)
 """
 import os
 import re
@@ -143,18 +144,19 @@ class Region:
         self.a, self.b, self.kind, self.lhs, self.nba = a, b, kind, lhs, nba
 
 
-def find_regions(toks, const_funcs):
+def find_regions(toks, const_funcs, in_module=False):
+    """in_module: the file is a fragment included in a module's body (ef_rooks.vh)"""
     regions = []
     n = len(toks)
     i = 0
     stmt = False          # inside an always or function body
     depth = 0             # begin/case nesting in it
-    in_module = False
     while i < n:
         t = toks[i]
         x = t.text
         if t.dead or t.kind == "dir":
-            i += 1
+            # `include "FILE" (ef_ifaces.vh, ef_ns.vh): the name goes with it
+            i += 2 if t.text == "`include" and i + 1 < n and toks[i + 1].kind == "str" else 1
             continue
         if x == "module":
             # skip the header: name, #( ... ), ( ... ) ;
@@ -360,6 +362,20 @@ def const_bump(text, d):
     return None
 
 
+def in_replication_count(toks, k, b):
+    """token k lies in a parenthesised replication count: {(N*64){...}}"""
+    depth = 0
+    for j in range(k + 1, b):
+        y = toks[j].text
+        if y in OPEN:
+            depth += 1
+        elif y in (")", "]", "}"):
+            if depth == 0:
+                return y == ")" and j + 1 < b and toks[j + 1].text == "{"
+            depth -= 1
+    return False
+
+
 def mutants_of(toks, r, src):
     """[(op, token span a..b, replacement text)] of region r"""
     out = []
@@ -374,7 +390,8 @@ def mutants_of(toks, r, src):
             depth_br -= 1
         if t.text in CMP_FLIP and depth_br == 0:
             out.append(("cmp", k, k + 1, CMP_FLIP[t.text]))
-        if t.kind == "num" and depth_br == 0 and not (k + 1 < r.b and toks[k + 1].text == "{"):
+        if t.kind == "num" and depth_br == 0 and not (k + 1 < r.b and toks[k + 1].text == "{") \
+                and not in_replication_count(toks, k, r.b):
             for d in (1, -1):
                 nt = const_bump(t.text, d)
                 if nt is not None:
@@ -390,9 +407,10 @@ def mutants_of(toks, r, src):
         if r.kind == "cond" and t.text == "rst":
             out.append(("reset", k, k + 1, "(!rst)"))
     if r.kind == "rhs" and r.lhs and re.search(r"(valid|ready)$", r.lhs.split("[")[0].strip()):
-        whole = (r.a, r.b)
-        out.append(("stuck", whole[0], whole[1], "1'b0"))
-        out.append(("stuck", whole[0], whole[1], "1'b1"))
+        text = " ".join(toks[k].text for k in range(r.a, r.b))
+        for v in ("1'b0", "1'b1"):
+            if text != v:         # stuck at what it already is: no mutant
+                out.append(("stuck", r.a, r.b, v))
     if r.kind == "rhs" and r.nba and r.lhs:
         out.append(("hold", r.a, r.b, r.lhs))
     return out
@@ -420,7 +438,7 @@ def main():
             if t.text in ("localparam", "parameter"):
                 e = region_end(toks, k, False)
                 const_funcs |= {toks[j].text for j in range(k, e) if toks[j].text in funcs}
-        regions = find_regions(toks, const_funcs)
+        regions = find_regions(toks, const_funcs, in_module=path.endswith(".vh"))
         base = os.path.basename(path)
         edits = []      # (start char, end char, new text)
         seen = {}

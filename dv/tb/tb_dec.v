@@ -82,11 +82,26 @@ module tb_dec #(
         end
     endtask
 
+    // An input that cannot be opened is a FAIL (a non-zero exit), never an
+    // empty memory that $readmemh only warns about.
+    task need;
+        input [8*240-1:0] fname;
+        integer fdn;
+        begin
+            fdn = $fopen(fname, "r");
+            if (fdn == 0) begin
+                $display("%s: FAIL cannot open %0s", "tb_dec", fname);
+                $fatal(1, "%s: FAIL", "tb_dec");
+            end
+            $fclose(fdn);
+        end
+    endtask
+
     initial begin
         if (!$value$plusargs("cmd=%s", cmd_name)) cmd_name = "cmd.stim.hex";
         if (!$value$plusargs("seg=%s", seg_name)) seg_name = "seg.actual.hex";
         if (NCMD > 0)
-            $readmemh(cmd_name, cmd_mem, 0, NCMD - 1);
+            begin need(cmd_name); $readmemh(cmd_name, cmd_mem, 0, NCMD - 1); end
         errors = 0;
         // Refuse what the hardware cannot take, naming the word (the line is
         // word + 5 in a file written by edgeflag: 4 header lines).

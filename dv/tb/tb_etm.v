@@ -163,11 +163,27 @@ module tb_etm #(
         end
     endtask
 
+    // An input that cannot be opened is a FAIL (a non-zero exit), never an
+    // empty memory that $readmemh only warns about.
+    task need;
+        input [8*240-1:0] fname;
+        integer fdn;
+        begin
+            fdn = $fopen(fname, "r");
+            if (fdn == 0) begin
+                $display("%s: FAIL cannot open %0s", "tb_etm", fname);
+                $fatal(1, "%s: FAIL", "tb_etm");
+            end
+            $fclose(fdn);
+        end
+    endtask
+
     initial begin
         if (!$value$plusargs("et_wr_in=%s", wr_name))  wr_name = "et_wr.expected.hex";
         if (!$value$plusargs("et_rd_exp=%s", rd_name)) rd_name = "et_rd.expected.hex";
         if (!$value$plusargs("plot=%s", pl_name))      pl_name = "plot.expected.hex";
         if (!$value$plusargs("et_rd=%s", out_name))    out_name = "et_rd.actual.hex";
+        need(wr_name); need(rd_name); need(pl_name);
         if (NWR > 0)   $readmemh(wr_name, wr_mem, 0, NWR - 1);
         if (NRD > 0)   $readmemh(rd_name, rd_mem, 0, NRD - 1);
         if (NPLOT > 0) $readmemh(pl_name, pl_mem, 0, NPLOT - 1);

@@ -73,10 +73,26 @@ module tb_setup #(
         end
     endtask
 
+    // An input that cannot be opened is a FAIL (a non-zero exit), never an
+    // empty memory that $readmemh only warns about.
+    task need;
+        input [8*240-1:0] fname;
+        integer fdn;
+        begin
+            fdn = $fopen(fname, "r");
+            if (fdn == 0) begin
+                $display("%s: FAIL cannot open %0s", "tb_setup", fname);
+                $fatal(1, "%s: FAIL", "tb_setup");
+            end
+            $fclose(fdn);
+        end
+    endtask
+
     initial begin
         if (!$value$plusargs("seg_in=%s", seg_name)) seg_name = "seg.expected.hex";
         if (!$value$plusargs("cmd=%s", cmd_name))   cmd_name = "cmd.stim.hex";
         if (!$value$plusargs("et_wr=%s", out_name)) out_name = "et_wr.actual.hex";
+        need(seg_name); need(cmd_name);
         if (NSEG > 0) $readmemh(seg_name, seg_mem, 0, NSEG - 1);
         if (NCMD > 0) $readmemh(cmd_name, cmd_mem, 0, NCMD - 1);
         errors = 0; nframe = 0;

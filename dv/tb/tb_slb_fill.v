@@ -147,6 +147,21 @@ module tb_slb_fill #(
         end
     endtask
 
+    // An input that cannot be opened is a FAIL (a non-zero exit), never an
+    // empty memory that $readmemh only warns about.
+    task need;
+        input [8*240-1:0] fname;
+        integer fdn;
+        begin
+            fdn = $fopen(fname, "r");
+            if (fdn == 0) begin
+                $display("%s: FAIL cannot open %0s", "tb_slb_fill", fname);
+                $fatal(1, "%s: FAIL", "tb_slb_fill");
+            end
+            $fclose(fdn);
+        end
+    endtask
+
     initial begin
         // (string parameters into the name registers: zero-extended, as meant)
         /* verilator lint_off WIDTH */
@@ -157,9 +172,9 @@ module tb_slb_fill #(
         if (!$value$plusargs("exp=%s", exp_name))   exp_name = EXP_FILE;
         /* verilator lint_on WIDTH */
         if (NPLOT > 0)
-            $readmemh(plot_name, plot_mem, 0, NPLOT - 1);
+            begin need(plot_name); $readmemh(plot_name, plot_mem, 0, NPLOT - 1); end
         if (NCMD > 0)
-            $readmemh(cmd_name, cmd_mem, 0, NCMD - 1);
+            begin need(cmd_name); $readmemh(cmd_name, cmd_mem, 0, NCMD - 1); end
         if (NEXP > 0) begin
             if (exp_name == 0) begin
                 $display("tb_slb_fill: FAIL NEXP > 0 needs EXP_FILE or +exp=");

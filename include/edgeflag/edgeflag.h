@@ -12,6 +12,13 @@
  * docs/spec.md is the contract; every format named here is defined there.
  * All state lives in an ef_ctx, so one process (a DPI-C testbench, say) can
  * hold several independent models.  The library never prints or exits.
+ *
+ * Lifetimes: what the library allocates is made by a `_create` and released
+ * by the matching `_destroy` (ef_ctx_create / ef_ctx_destroy, ef_image_create
+ * / ef_image_destroy, ef_scene_create / ef_scene_destroy, ...); a `_defaults`
+ * only fills an options struct and holds nothing.
+ *
+ *     #include <edgeflag/edgeflag.h>   // cc ... $(pkg-config --cflags --libs edgeflag)
  */
 #ifndef EDGEFLAG_H
 #define EDGEFLAG_H
@@ -25,7 +32,11 @@
 extern "C" {
 #endif
 
+/* The version these headers are of; ef_version() is the one of the library a
+ * program runs with (the two differ when the program was built against other
+ * headers than the libedgeflag.so it finds). */
 #define EF_VERSION_STRING "0.1.0"
+EF_API const char *ef_version(void);
 
 /* ---------------------------------------------------------------- status */
 typedef enum ef_status {
@@ -130,14 +141,16 @@ static inline uint8_t ef_mul255(uint32_t a, uint32_t b)
     return (uint8_t)(((t >> 8) + t) >> 8);
 }
 
-/* A premultiplied RGBA8 image, bytes R,G,B,A, rows of `stride` bytes. */
+/* A premultiplied RGBA8 image, bytes R,G,B,A, rows of `stride` bytes.
+ * ef_image_create allocates the pixels (cleared to 0); ef_image_destroy frees
+ * them and leaves an empty image. */
 typedef struct ef_image {
     uint8_t *px;
     int32_t width, height;
     size_t stride;
 } ef_image;
-EF_API ef_status ef_image_alloc(ef_image *img, int32_t width, int32_t height);
-EF_API void ef_image_free(ef_image *img);
+EF_API ef_status ef_image_create(ef_image *img, int32_t width, int32_t height);
+EF_API void ef_image_destroy(ef_image *img);
 
 /* Composites `color` source-over onto img with the coverage of polygon under
  * rule (docs/spec.md section 8). */

@@ -21,20 +21,25 @@ typedef struct ef_shape {
     uint32_t ncontours;
 } ef_shape;
 
+/* A scene, read-only to its users: the arrays belong to the library (they grow
+ * only through ef_scene_begin_shape and ef_scene_add_contour, and how much
+ * room they have is the library's business, not a field). */
 typedef struct ef_scene {
     int32_t width, height; /* canvas in pixels */
     ef_shape *shapes;
-    uint32_t nshapes, shapes_cap;
+    uint32_t nshapes;
     uint32_t *start; /* contour c = points[start[c] .. start[c+1]-1] */
-    uint32_t ncontours, start_cap;
+    uint32_t ncontours;
     ef_point *points;
-    uint32_t npoints, points_cap;
+    uint32_t npoints;
     uint32_t notes; /* count of ignored features reported to the note callback */
 } ef_scene;
 
 /* ----- building (used by the readers and by generated scenes) ----- */
-EF_API void ef_scene_init(ef_scene *s, int32_t width, int32_t height);
-EF_API void ef_scene_free(ef_scene *s);
+/* An empty scene of a width x height canvas in *s (nothing allocated yet). */
+EF_API void ef_scene_create(ef_scene *s, int32_t width, int32_t height);
+/* Frees the arrays and leaves an empty 0 x 0 scene. */
+EF_API void ef_scene_destroy(ef_scene *s);
 EF_API ef_status ef_scene_begin_shape(ef_scene *s, ef_rule rule, ef_rgba8 color);
 /* Appends a contour to the current shape; fewer than 3 points is allowed
  * (it contributes nothing: docs/spec.md 5.1). */

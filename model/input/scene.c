@@ -95,38 +95,50 @@ void ef_error_format(const ef_error *e, char *buf, size_t size)
 
 /* ----------------------------------------------------------------- scene */
 
-void ef_scene_init(ef_scene *s, int32_t width, int32_t height)
+void ef_scene_create(ef_scene *s, int32_t width, int32_t height)
 {
     memset(s, 0, sizeof *s);
     s->width = width;
     s->height = height;
 }
 
-void ef_scene_free(ef_scene *s)
+void ef_scene_destroy(ef_scene *s)
 {
     free(s->shapes);
     free(s->start);
     free(s->points);
-    ef_scene_init(s, 0, 0);
+    ef_scene_create(s, 0, 0);
 }
 
-/* Grows *arr (elements of size elt) to hold need elements; caps at limit. */
-static ef_status grow(void **arr, uint32_t *cap, uint32_t need, size_t elt, uint32_t limit)
+/* The room of an array of `used` elements: what grow() allocated for it, 16
+ * elements and doubling, at most limit.  The scene keeps no capacity field:
+ * grow() allocates exactly this for the count it is asked for, the count only
+ * ever grows to that request (or stays, when a later step fails: then the
+ * array has more room than this says, never less), so the room follows from
+ * the count. */
+static uint64_t room(uint32_t used, uint32_t limit)
 {
-    if (need <= *cap)
+    if (used == 0)
+        return 0;
+    uint64_t n = 16;
+    while (n < used)
+        n *= 2;
+    return n < limit ? n : limit;
+}
+
+/* Grows *arr (elements of size elt, `used` of them in use) to hold need
+ * elements; caps at limit. */
+static ef_status grow(void **arr, uint32_t used, uint32_t need, size_t elt, uint32_t limit)
+{
+    if (need == 0 || (*arr && need <= room(used, limit)))
         return EF_OK;
     if (need > limit)
         return EF_ERR_LIMIT;
-    uint64_t nc = *cap ? (uint64_t)*cap * 2 : 16;
-    while (nc < need)
-        nc *= 2;
-    if (nc > limit)
-        nc = limit;
+    const uint64_t nc = room(need, limit);
     void *p = realloc(*arr, (size_t)nc * elt);
     if (!p)
         return EF_ERR_NOMEM;
     *arr = p;
-    *cap = (uint32_t)nc;
     return EF_OK;
 }
 
@@ -135,9 +147,10 @@ ef_status ef_scene_begin_shape(ef_scene *s, ef_rule rule, ef_rgba8 color)
     ef_status st;
     if (rule != EF_RULE_NONZERO && rule != EF_RULE_EVENODD)
         return EF_ERR_ARG;
-    if ((st = grow((void **)&s->shapes, &s->shapes_cap, s->nshapes + 1, sizeof *s->shapes, EF_IN_MAX_SHAPES)))
+    if ((st = grow((void **)&s->shapes, s->nshapes, s->nshapes + 1, sizeof *s->shapes, EF_IN_MAX_SHAPES)))
         return st;
-    if ((st = grow((void **)&s->start, &s->start_cap, s->ncontours + 1, sizeof *s->start, EF_MAX_POINTS_PER_SCENE + 1)))
+    if ((st = grow((void **)&s->start, s->start ? s->ncontours + 1 : 0, s->ncontours + 1, sizeof *s->start,
+                   EF_MAX_POINTS_PER_SCENE + 1)))
         return st;
     s->start[s->ncontours] = s->npoints;
     ef_shape *sh = &s->shapes[s->nshapes++];
@@ -163,9 +176,10 @@ ef_status ef_scene_add_contour(ef_scene *s, const ef_point *pts, uint32_t n)
      * (ef_rasterize), so a scene never holds a shape it cannot draw. */
     if (n > EF_MAX_EDGES_PER_SHAPE - ef_in_shape_points(s))
         return EF_ERR_LIMIT;
-    if ((st = grow((void **)&s->points, &s->points_cap, s->npoints + n, sizeof *s->points, EF_MAX_POINTS_PER_SCENE)))
+    if ((st = grow((void **)&s->points, s->npoints, s->npoints + n, sizeof *s->points, EF_MAX_POINTS_PER_SCENE)))
         return st;
-    if ((st = grow((void **)&s->start, &s->start_cap, s->ncontours + 2, sizeof *s->start, EF_MAX_POINTS_PER_SCENE + 1)))
+    if ((st = grow((void **)&s->start, s->ncontours + 1, s->ncontours + 2, sizeof *s->start,
+                   EF_MAX_POINTS_PER_SCENE + 1)))
         return st;
     if (n > 0)
         memcpy(s->points + s->npoints, pts, (size_t)n * sizeof *pts);
@@ -239,7 +253,7 @@ ef_status ef_scene_load_file(const char *path, const ef_load_opts *opts, ef_scen
     ef_error local;
     if (!err)
         err = &local;
-    ef_scene_init(out, 0, 0);
+    ef_scene_create(out, 0, 0);
     if (!path)
         return ef_error_set(err, EF_ERR_ARG, NULL, 0, 0, "no file name");
     int kind = ends_with_ci(path, ".svg") ? 1 : (ends_with_ci(path, ".scene") || ends_with_ci(path, ".txt")) ? 2 : 0;

@@ -136,7 +136,7 @@ ef_status ef_scene_load_text(const char *name, const char *data, size_t len, con
         err = &local;
     if (!name)
         name = "<scene>";
-    ef_scene_init(out, 0, 0);
+    ef_scene_create(out, 0, 0);
     if (!data && len > 0)
         return ef_error_set(err, EF_ERR_ARG, name, 0, 0, "no data");
     if (len > EF_IN_MAX_FILE_BYTES)
@@ -313,6 +313,6 @@ ef_status ef_scene_load_text(const char *name, const char *data, size_t len, con
     return EF_OK;
 fail:
     free(r.pts);
-    ef_scene_free(out);
+    ef_scene_destroy(out);
     return st;
 }

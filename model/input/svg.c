@@ -1295,7 +1295,7 @@ ef_status ef_scene_load_svg(const char *name, const char *data, size_t len, cons
         err = &local;
     if (!name)
         name = "<svg>";
-    ef_scene_init(out, 0, 0);
+    ef_scene_create(out, 0, 0);
     if (opts && ((opts->fit_width != 0) != (opts->fit_height != 0) || opts->fit_width < 0 || opts->fit_height < 0))
         return ef_error_set(err, EF_ERR_ARG, name, 0, 0, "fit size must be two positive values or none");
     if (opts && (opts->fit_width > EF_MAX_CANVAS || opts->fit_height > EF_MAX_CANVAS))
@@ -1319,7 +1319,7 @@ ef_status ef_scene_load_svg(const char *name, const char *data, size_t len, cons
     free(c.matched);
     if (s != EF_OK) {
         uint32_t notes = out->notes;
-        ef_scene_free(out);
+        ef_scene_destroy(out);
         out->notes = notes;
     }
     return s;

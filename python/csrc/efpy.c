@@ -27,14 +27,14 @@ EFPY_API ef_vec_collect *efpy_collect_new(uint32_t mask)
 {
     ef_vec_collect *c = malloc(sizeof *c);
     if (c)
-        ef_vec_collect_init(c, mask);
+        ef_vec_collect_create(c, mask);
     return c;
 }
 
 EFPY_API void efpy_collect_free(ef_vec_collect *c)
 {
     if (c) {
-        ef_vec_collect_free(c);
+        ef_vec_collect_destroy(c);
         free(c);
     }
 }

@@ -304,14 +304,14 @@ class Scene:
         if not (1 <= width <= 16384 and 1 <= height <= 16384):
             raise ValueError(f"canvas {width}x{height}: width and height must be 1..16384")
         self._s = ffi.new("ef_scene *")
-        lib.ef_scene_init(self._s, int(width), int(height))
+        lib.ef_scene_create(self._s, int(width), int(height))
         self.name = "scene"
         self.notes = []
 
     def __del__(self):
         s = getattr(self, "_s", None)
         if s is not None and lib is not None:  # (lib is None at interpreter shutdown)
-            lib.ef_scene_free(s)
+            lib.ef_scene_destroy(s)
             self._s = None
 
     @classmethod
@@ -331,7 +331,7 @@ class Scene:
     def _loaded_from(cls, name, loader, holder):
         self = cls.__new__(cls)
         self._s = ffi.new("ef_scene *")
-        lib.ef_scene_init(self._s, 1, 1)
+        lib.ef_scene_create(self._s, 1, 1)
         holder.append(self._s)
         self.name = os.path.basename(name)
         self.notes = []
@@ -481,8 +481,8 @@ class Model:
 
     def _image(self):
         img = ffi.new("ef_image *")
-        _check(lib.ef_image_alloc(img, self.width, self.height), "image")
-        return ffi.gc(img, lib.ef_image_free)
+        _check(lib.ef_image_create(img, self.width, self.height), "image")
+        return ffi.gc(img, lib.ef_image_destroy)
 
     @staticmethod
     def _array(img):
@@ -702,7 +702,7 @@ def read_vectors(path, interface=None):
                                text=ffi.string(buf).decode(errors="replace"))
         return Vectors(d, path)
     finally:
-        vec.ef_vec_dump_free(d)
+        vec.ef_vec_dump_destroy(d)
 
 
 # ------------------------------------------------------------------ checker
@@ -710,7 +710,7 @@ Mismatch = collections.namedtuple("Mismatch", "place iface cycle kind text")
 
 
 class CheckReport:
-    """edgeflag check's verdict as objects: status (0 pass, 1 fail, 2 input, 70 internal), counts,
+    """edgeflag check's verdict as objects: status (ef_check_status: 0 pass, 1 fail, 2 input, 3 out of memory), counts,
     mismatches (parsed report lines) and the status lines."""
 
     def __init__(self, status, res, report, status_text):
@@ -754,7 +754,7 @@ class CheckReport:
 def check(expected, actual, cycles=True, errors=20, interfaces=None, allow_missing=None, name=None):
     """Runs the verifier (rtl_vectors/ef_check.h) on two files or directories."""
     o = ffi.new("ef_check_opts *")
-    vec.ef_check_opts_init(o)
+    vec.ef_check_opts_defaults(o)
     keep = [ffi.new("char[]", os.fspath(expected).encode()), ffi.new("char[]", os.fspath(actual).encode())]
     o.expected, o.actual = keep[0], keep[1]
     o.errors = errors
@@ -777,7 +777,7 @@ def check(expected, actual, cycles=True, errors=20, interfaces=None, allow_missi
     finally:
         vec.efpy_free(rep[0])
         vec.efpy_free(sta[0])
-        vec.ef_check_result_free(res)
+        vec.ef_check_result_destroy(res)
 
 
 # ------------------------------------------------------------- model stream
@@ -909,7 +909,7 @@ def gen_cases(level=1, seed=20070101, select=None):
     """The `edgeflag gen` regression cases (docs/gen.md) as Scenes: yields GenCase for every case
     number in `select` (default: all) of the level."""
     cfg = ffi.new("ef_gen_config *")
-    _check(vec.ef_gen_config_init(cfg, level), "gen")
+    _check(vec.ef_gen_config_defaults(cfg, level), "gen")
     cfg.seed = seed
     total = vec.ef_gen_total(cfg)
     for k in (range(total) if select is None else select):
@@ -919,7 +919,7 @@ def gen_cases(level=1, seed=20070101, select=None):
             txt = ffi.new("ef_gen_text *")
             st = vec.ef_gen_format(cfg, gc, txt)
             text = ffi.string(txt.data).decode() if st == 0 and txt.data != ffi.NULL else None
-            vec.ef_gen_text_free(txt)
+            vec.ef_gen_text_destroy(txt)
             name = ffi.string(gc.name).decode()
             cat = ffi.string(vec.ef_gen_category_name(gc.category)).decode()
             # a private copy of the case's scene, owned by a Scene
@@ -935,4 +935,4 @@ def gen_cases(level=1, seed=20070101, select=None):
                     _check(lib.ef_scene_add_contour(sc._s, s.points + s.start[c], n))
             yield GenCase(k, name, cat, bool(gc.directed), int(gc.case_seed), sc, text)
         finally:
-            vec.ef_gen_case_free(gc)
+            vec.ef_gen_case_destroy(gc)

@@ -27,18 +27,18 @@ void ef_ctx_diag(const ef_ctx *ctx, ef_diag *out);
 const uint8_t *ef_pattern(int samples);
 uint8_t ef_coverage_alpha(ef_mask mask, int samples);
 typedef struct ef_image { uint8_t *px; int32_t width, height; size_t stride; } ef_image;
-ef_status ef_image_alloc(ef_image *img, int32_t width, int32_t height);
-void ef_image_free(ef_image *img);
+ef_status ef_image_create(ef_image *img, int32_t width, int32_t height);
+void ef_image_destroy(ef_image *img);
 ef_status ef_fill(ef_ctx *ctx, ef_image *img, const ef_polygon *poly, ef_rule rule, ef_rgba8 color);
 
 typedef struct ef_shape { ef_rule rule; ef_rgba8 color; uint32_t first_contour; uint32_t ncontours; } ef_shape;
 typedef struct ef_scene {
-    int32_t width, height; ef_shape *shapes; uint32_t nshapes, shapes_cap;
-    uint32_t *start; uint32_t ncontours, start_cap; ef_point *points; uint32_t npoints, points_cap;
+    int32_t width, height; ef_shape *shapes; uint32_t nshapes;
+    uint32_t *start; uint32_t ncontours; ef_point *points; uint32_t npoints;
     uint32_t notes;
 } ef_scene;
-void ef_scene_init(ef_scene *s, int32_t width, int32_t height);
-void ef_scene_free(ef_scene *s);
+void ef_scene_create(ef_scene *s, int32_t width, int32_t height);
+void ef_scene_destroy(ef_scene *s);
 ef_status ef_scene_begin_shape(ef_scene *s, ef_rule rule, ef_rgba8 color);
 ef_status ef_scene_add_contour(ef_scene *s, const ef_point *pts, uint32_t n);
 ef_polygon ef_scene_polygon(const ef_scene *s, uint32_t i);
@@ -99,7 +99,7 @@ typedef struct ef_vec_dump {
     int format; uint32_t mask; ef_vec_seq seq[7]; int has_header; int32_t width, height; int samples; int rule;
     uint64_t seed;
 } ef_vec_dump;
-void ef_vec_dump_free(ef_vec_dump *d);
+void ef_vec_dump_destroy(ef_vec_dump *d);
 ef_status ef_vec_read_path(const char *path, const char *name, int want, int hint, ef_vec_dump *out,
                            ef_vec_read_error *err);
 uint32_t ef_vec_read_crc32(uint32_t crc, const void *data, size_t len);
@@ -109,13 +109,13 @@ typedef struct ef_check_opts {
     const char *expected, *actual; int32_t errors; int cycles; uint32_t only; uint32_t allow_missing;
     const char *name; int keep_marks; FILE *report; FILE *status;
 } ef_check_opts;
-void ef_check_opts_init(ef_check_opts *o);
+void ef_check_opts_defaults(ef_check_opts *o);
 typedef struct ef_check_run_state ef_check_run_state;
 typedef struct ef_check_result {
     uint64_t mismatches; uint64_t reported; uint64_t compared; uint64_t transactions; uint64_t missing;
     uint64_t marks; ef_check_run_state *run;
 } ef_check_result;
-void ef_check_result_free(ef_check_result *res);
+void ef_check_result_destroy(ef_check_result *res);
 int efpy_check(const ef_check_opts *o, ef_check_result *res, char **report, char **status);
 
 typedef struct ef_mstream_params {
@@ -145,16 +145,16 @@ typedef enum ef_gen_expect_kind { EF_GEN_EXPECT_ANY = 0, EF_GEN_EXPECT_EMPTY, EF
     EF_GEN_EXPECT_PROBE } ef_gen_expect_kind;
 typedef struct ef_gen_expect { ef_gen_expect_kind kind; int32_t x, y; uint8_t alpha; int8_t overflow; } ef_gen_expect;
 typedef struct ef_gen_config { uint64_t seed; int level; int grid; int rules_swapped; uint32_t nrandom; } ef_gen_config;
-ef_status ef_gen_config_init(ef_gen_config *c, int level);
+ef_status ef_gen_config_defaults(ef_gen_config *c, int level);
 uint32_t ef_gen_total(const ef_gen_config *c);
 typedef struct ef_gen_case {
     uint32_t number; uint32_t total; int directed; uint32_t index; ef_gen_category category; const char *name;
     int grid; int rules_swapped; uint64_t case_seed; ef_gen_expect expect; char desc[768]; ef_scene scene;
 } ef_gen_case;
 ef_status ef_gen_build(const ef_gen_config *c, uint32_t k, ef_gen_case *out);
-void ef_gen_case_free(ef_gen_case *gc);
+void ef_gen_case_destroy(ef_gen_case *gc);
 typedef struct ef_gen_text { char *data; size_t len, cap; } ef_gen_text;
-void ef_gen_text_free(ef_gen_text *t);
+void ef_gen_text_destroy(ef_gen_text *t);
 ef_status ef_gen_format(const ef_gen_config *c, const ef_gen_case *gc, ef_gen_text *t);
 """
 

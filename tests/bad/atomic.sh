@@ -113,7 +113,7 @@ rm -f "out.$png"
 
 # File size limit: 16 KiB; every format's 2000 x 2000 image is larger.
 for fmt in png pam pgm; do
-    [ $fmt = png ] && [ $png != png ] && continue
+    [ $fmt = png ] && [ "$png" != png ] && continue
     rm -f "out.$fmt"
     ( ulimit -f 16; exec "$EF" render big.scene -o "out.$fmt" --size 2000x2000 ) 2>err; st=$?
     if [ $st = 4 ] && grep -q "^edgeflag: cannot write 'out.$fmt': File too large" err && [ ! -e "out.$fmt" ] &&

@@ -169,7 +169,7 @@ while IFS=$'\t' read -r file want class regex where args command; do
     fi
     if [ "$class" != usage ]; then
         size=()
-        [[ "$args" == --size* ]] && size=($args)
+        [[ "$args" == --size* ]] && read -r -a size <<<"$args"
         got=$("$LC" "$file" "${size[@]}")
         gclass=$(printf '%s' "$got" | cut -f1) gwhere=$(printf '%s' "$got" | cut -f2)
         if [ "$gclass" != "$class" ] || { [ "$class" != ok ] && [ "$gwhere" != "$where" ]; }; then

@@ -62,9 +62,9 @@ expect_rc() { if [ "$rc" = "$2" ]; then ok "$1 (exit $2)"; else bad "$1" "exit $
 # A hex word's bits, from the digits alone (no edgeflag code involved).
 declare -A H2B=([0]=0000 [1]=0001 [2]=0010 [3]=0011 [4]=0100 [5]=0101 [6]=0110 [7]=0111
                 [8]=1000 [9]=1001 [a]=1010 [b]=1011 [c]=1100 [d]=1101 [e]=1110 [f]=1111)
-hex2bin() { local h=$1 o= i; for ((i = 0; i < ${#h}; i++)); do o+=${H2B[${h:i:1}]}; done; echo "$o"; }
+hex2bin() { local h=$1 o='' i; for ((i = 0; i < ${#h}; i++)); do o+=${H2B[${h:i:1}]}; done; echo "$o"; }
 bin2hex() {
-    local b=$1 o= i
+    local b=$1 o='' i
     while [ $((${#b} % 4)) -ne 0 ]; do b=0$b; done
     for ((i = 0; i < ${#b}; i += 4)); do o+=$(printf %x $((2#${b:i:4}))); done
     echo "$o"
@@ -76,6 +76,7 @@ declare -A FH FL
 layout() {
     FH=() FL=()
     local f
+    # shellcheck disable=SC2013 # the field list is one line of words
     for f in $(sed -n 's|^// word [0-9]* bits: ||p' "$1"); do
         local n=${f%%\[*} r=${f#*\[}
         r=${r%\]}
@@ -109,7 +110,7 @@ set_line() { sed -i "${2}s/.*/$3/" "$1"; }
 del_line() { sed -i "${2}d" "$1"; }
 # where IFACE WORD: ", y Y, x X" etc. as check prints it, from the layout.
 where() {
-    local s= f
+    local s='' f
     for f in y row; do [ -n "${FH[$f]:-}" ] && { s+=", $f $(field "$2" $f)"; break; }; done
     for f in x q; do [ -n "${FH[$f]:-}" ] && { s+=", $f $(field "$2" $f)"; break; }; done
     echo "$1: cycle $(field "$2" cycle)$s"
@@ -120,7 +121,8 @@ where() {
     { bad "edgeflag vectors tiger.svg failed"; echo "$pass passed, $fail failed"; exit 1; }
 "$EFW" gen -o G >/dev/null 2>err ||
     { bad "edgeflag gen failed"; echo "$pass passed, $fail failed"; exit 1; }
-gcase=$(ls G/case_*.scene | sed -n 40p)
+gcases=(G/case_*.scene)
+gcase=${gcases[39]}
 "$EFW" vectors "$gcase" -o VG --samples 16 --rule evenodd >/dev/null 2>err ||
     { bad "edgeflag vectors $gcase failed"; echo "$pass passed, $fail failed"; exit 1; }
 
@@ -137,7 +139,8 @@ rtl_dir VG AG
 
 # ------------------------------------------------------------ identical data
 for pair in "V A" "VG AG"; do
-    set -- $pair
+    read -r e a <<<"$pair"
+    set -- "$e" "$a"
     run check "$1" "$2"
     if [ $rc = 0 ] && [ ! -s out ] && grep -q '^edgeflag check: PASS' err; then
         ok "identical directories $1 vs $2 pass"
@@ -237,10 +240,10 @@ run check N A
 mutate_hex() {
     local iface=$1 k=$2 bit=$3 ln w nw want
     rm -rf M && cp -R A M
-    layout V/$iface.expected.hex
-    read -r ln w < <(nth_data V/$iface.expected.hex "$k")
+    layout "V/$iface.expected.hex"
+    read -r ln w < <(nth_data "V/$iface.expected.hex" "$k")
     nw=$(flip_word "$w" "$bit")
-    set_line M/$iface.actual.hex "$k" "$nw"
+    set_line "M/$iface.actual.hex" "$k" "$nw"
     want="M/$iface.actual.hex:$k: $(where "$iface" "$w"): fields differ: "
     run check V M
     if [ $rc = 1 ] && [ "$(wc -l <out)" = 1 ] && [[ "$(cat out)" == "$want"* ]] && grep -q '\*' out &&
@@ -277,13 +280,14 @@ run check --transactions V D
 delay_test() {
     local iface=$1 k=$2 ln w nw
     rm -rf L && cp -R A L
-    layout V/$iface.expected.hex
-    read -r ln w < <(nth_data V/$iface.expected.hex "$k")
+    layout "V/$iface.expected.hex"
+    read -r ln w < <(nth_data "V/$iface.expected.hex" "$k")
     nw=$(delay_word "$w" 1)
-    set_line L/$iface.actual.hex "$k" "$nw"
+    set_line "L/$iface.actual.hex" "$k" "$nw"
     local c
     c=$(field "$w" cycle)
-    local want="L/$iface.actual.hex:$k: $(where "$iface" "$w"): cycle differs: expected $c, actual $((c + 1)) (late by 1): "
+    local want
+    want="L/$iface.actual.hex:$k: $(where "$iface" "$w"): cycle differs: expected $c, actual $((c + 1)) (late by 1): "
     run check V L
     if [ $rc = 1 ] && [ "$(wc -l <out)" = 1 ] && [[ "$(cat out)" == "$want"* ]]; then
         ok "$iface $k delayed by a cycle: one report, ${want#*: }"
@@ -300,10 +304,10 @@ delay_test span 300
 bin_where() {   # IFACE "record R offset O cycle C payload HEX" -> the report's prefix after the file name
     local iface=$1 r o c p
     read -r _ r _ o _ c _ p <<<"$2"
-    layout V/$iface.expected.hex
+    layout "V/$iface.expected.hex"
     local s=
-    for f in y row; do [ -n "${FH[$f]:-}" ] && { s+=", $f $(bits "$p" ${FH[$f]} ${FL[$f]})"; break; }; done
-    for f in x q; do [ -n "${FH[$f]:-}" ] && { s+=", $f $(bits "$p" ${FH[$f]} ${FL[$f]})"; break; }; done
+    for f in y row; do [ -n "${FH[$f]:-}" ] && { s+=", $f $(bits "$p" "${FH[$f]}" "${FL[$f]}")"; break; }; done
+    for f in x q; do [ -n "${FH[$f]:-}" ] && { s+=", $f $(bits "$p" "${FH[$f]}" "${FL[$f]}")"; break; }; done
     echo "record $r (byte offset $o): $iface: cycle $c$s"
 }
 mkdir -p B
@@ -343,20 +347,21 @@ run check V E --errors=0
 [ $rc = 1 ] && [ "$(wc -l <out)" = 30 ] && ok "--errors 0: all 30 lines" || bad "--errors 0" "exit $rc, $(wc -l <out) lines"
 
 # ------------------------------------------------------------ the library
-# The verifier through rtl_vectors/ef_check.h (tests/check/check_lib.c), as the host tool and a
-# DPI-C bench call it: the same exit status, the same mismatch lines and the same JUnit (but for
+# The verifier through rtl_vectors/ef_check.h (tests/check/check_lib.c), as edgeflag-host and a
+# testbench call it: the status the command's exit code says, the same mismatch lines and the same JUnit (but for
 # its times) as the command, the same pixels marked, and not one byte on stderr (no status stream).
 if [ -x "$LIB" ]; then
     for pair in "V/vectors.bin B/vectors.bin" "V/pix.expected.hex A/pix.actual.hex" "V A" "V E"; do
         read -r e a <<<"$pair"
         run check "$e" "$a" --errors 0 --junit jc.xml --diff-image dc.pam
         crc=$rc
+        case $crc in 0) cst=pass ;; 1) cst=fail ;; 2) cst=input ;; *) cst="exit $crc" ;; esac # docs/cli.md
         "$LIB" "$e" "$a" lib_report lib_junit.xml >lib_out 2>lib_err
         hdr=$(grep -abo ENDHDR dc.pam | head -n 1 | cut -d: -f1)   # the pixels start after "ENDHDR\n"
         marked=$(tail -c +$((hdr + 8)) dc.pam | od -An -v -tx1 -w4 | grep -c '^ ff 00 ff ff$')
-        if grep -q "^rc $crc mismatches .* magenta $marked\$" lib_out && cmp -s out lib_report && [ ! -s lib_err ] &&
+        if grep -q "^status $cst mismatches .* magenta $marked\$" lib_out && cmp -s out lib_report && [ ! -s lib_err ] &&
             cmp -s <(sed 's/time="[0-9.]*"//g' jc.xml) <(sed 's/time="[0-9.]*"//g' lib_junit.xml); then
-            ok "ef_check_run on $e vs $a: exit $crc, the command's report, JUnit and $marked marked pixels, silent"
+            ok "ef_check_run on $e vs $a: status $cst (exit $crc), the command's report, JUnit and $marked marked pixels, silent"
         else
             bad "ef_check_run on $e vs $a" "command: exit $crc, $marked magenta; library: $(cat lib_out)" \
                 "$(diff out lib_report | head -n 4)"

@@ -70,7 +70,7 @@ int main(int argc, char **argv)
         free(p);
         if (st != EF_OK)
             return report(st, &err);
-        ef_vec_manifest_free(&m);
+        ef_vec_manifest_destroy(&m);
         printf("ok\t-\tmanifest\n");
         return 0;
     }
@@ -81,11 +81,11 @@ int main(int argc, char **argv)
     for (int i = 0; e.format == EF_VEC_FMT_HEX && i < EF_IF_COUNT; i++)
         if (e.mask >> i & 1u)
             want = i;
-    ef_vec_dump_free(&e);
+    ef_vec_dump_destroy(&e);
     st = ef_vec_read_path(argv[2], NULL, want, want >= 0 ? want : ef_vec_iface_from_name(argv[2]), &a, &err);
     if (st != EF_OK)
         return report(st, &err);
-    ef_vec_dump_free(&a);
+    ef_vec_dump_destroy(&a);
     printf("ok\t-\tboth read\n");
     return 0;
 }

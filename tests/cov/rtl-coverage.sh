@@ -8,7 +8,9 @@
 #      dv/coverage/vl_cov_main.cpp as main (it writes the counters);
 #   2. runs make rtl-test's Verilator cases (every shared SVG at 24x18 and
 #      every 11th `edgeflag gen` level-1 case, rotating over NS x rule, the
-#      tiger with random back-pressure on pix) and make rtl-regress's (every
+#      tiger with random back-pressure on pix, the tiger at W_MAX x H_MAX at
+#      NS 8/16/32 and tests/cov/max_canvas.scene: the top rows and columns of the
+#      build) and make rtl-regress's (every
 #      level-1 case at 8/16/32 x the three rule settings, those that fit the
 #      build), each passing `edgeflag check` (a run that does not pass fails
 #      this script: coverage of a failing run means nothing);
@@ -87,6 +89,12 @@ rules=(scene nonzero evenodd)
         fi
     done < <(tail -n +3 "$work/gen/index.tsv")
     echo "bp_tiger|$root/tests/data/svg/tiger.svg|8|scene|24x18|424242"
+    # directed (added after the first measurement): no case above reaches the build's top
+    # rows and columns (coordinate bits 8 and up, occupancy rows past 138): the tiger filling
+    # W_MAX x H_MAX does
+    for ns in 8 16 32; do echo "max_tiger_$ns|$root/tests/data/svg/tiger.svg|$ns|scene|${WM}x$HM|-"; done
+    # and the full width with the sink cell and the right clamp (tests/cov/max_canvas.scene)
+    echo "max_rect_8|$root/tests/cov/max_canvas.scene|8|scene|${WM}x$HM|-"
     if [ "${EF_COV_REGRESS:-1}" != 0 ]; then
         while IFS=$'\t' read -r num file _ _ name _; do
             case $name in canvas-max*) continue ;; esac

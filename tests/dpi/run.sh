@@ -30,6 +30,7 @@
 #        EF_DPI_RTL=DIR takes the RTL from DIR instead of rtl)
 # Skips part 2 and 3, saying so, without verilator.  Ends with "N passed,
 # M failed"; exit 0 only if nothing failed.
+# shellcheck disable=SC2086 # the RTL file lists ($RTL, $A_*) are split into words on purpose
 set -u
 export LC_ALL=C
 ulimit -c 0                       # $fatal aborts the simulation: no core files
@@ -72,12 +73,12 @@ vec t8e "$tiger" --size 160x120 --samples 8 --rule evenodd
 # The first random case that fits the benches' 160x120 and mixes both rules
 # over several shapes (the rule and the colour change from shape to shape).
 g=
-for f in $(awk -F'\t' '$3 == "random" { print $2 }' "$work/gen/index.tsv"); do
+while read -r f; do
     if awk '$1 == "scene" && ($2 > 160 || $3 > 120) { big = 1 } $1 == "shape" { r[$2]++ }
             END { exit !(!big && r["nonzero"] && r["evenodd"]) }' "$work/gen/$f"; then
         g=$f; break
     fi
-done
+done < <(awk -F'\t' '$3 == "random" { print $2 }' "$work/gen/index.tsv")
 [ -n "$g" ] || { echo "test-dpi: no random gen case of both rules within 160x120"; exit 1; }
 vec g32 "$work/gen/$g" --samples 32
 vec g8 "$work/gen/$g" --samples 8
@@ -109,7 +110,8 @@ echo "test-dpi: $(verilator --version)"
 # "ok" or the reason in $work/vl_NAME/status.
 vl_build() {
     local name=$1 dut=$2 ns=$3 w=$4 h=$5 src=${6:-$R}; shift 5; [ $# -gt 0 ] && shift
-    local d=$work/vl_$name s=$(date +%s) rtl
+    local d=$work/vl_$name s rtl
+    s=$(date +%s)
     rtl=$(rtl_raster "$src")
     [ "$dut" = slb ] && { rtl=$(rtl_slb "$src"); set -- -DEF_TB_DUT_SLB "$@"; }
     mkdir -p "$d"
@@ -165,7 +167,7 @@ pass_run() {
     for i in $ifs; do
         f=$dir/$i.expected.hex; [ "$i" = cmd ] && f=$dir/cmd.stim.hex
         n=$(count "$f")
-        printf '%s\n' "$line" | grep -Eq "[:,] $n $i[,;]" || miss="$miss $i($n)"
+        printf '%s\n' "$line" | grep -Eq "[:,] $n ${i}[,;]" || miss="$miss $i($n)"
     done
     if [ "$(cat "$work/$name.rc")" = 0 ] && [ "${line#tb_lockstep: PASS}" != "$line" ] && [ -z "$miss" ]; then
         ok "lockstep $name: ${line#tb_lockstep: PASS }"

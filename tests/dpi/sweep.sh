@@ -11,6 +11,7 @@
 #
 # usage: bash tests/dpi/sweep.sh BUILD_DIR   (EF_DPI_KEEP=1 keeps the work dir)
 # Ends with the totals; exit 0 only if every run passed.
+# shellcheck disable=SC2086 # the RTL file lists ($RTL, $A_*) are split into words on purpose
 set -u
 export LC_ALL=C
 ulimit -c 0
@@ -41,7 +42,7 @@ echo "dpi-sweep: 3 builds in $(( $(date +%s) - t0 )) s"
 
 "$EF" gen -o "$work/gen" >"$work/gen.log" 2>&1 || { cat "$work/gen.log"; exit 1; }
 runs=0 failed=0 spans=0
-while IFS=$'\t' read -r k f kind cat name rest; do
+while IFS=$'\t' read -r k f kind _ name _; do
     case $k in ''|'#'*|case) continue ;; esac
     d=$work/v/$k
     if ! "$EF" vectors "$work/gen/$f" -o "$d" --formats hex --interfaces cmd >"$work/vectors.log" 2>&1; then

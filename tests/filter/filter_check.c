@@ -162,7 +162,7 @@ static void check_shared(const char *dir, const config *cf, int ncf)
                 ef_image img;
                 if (ef_ctx_create(&ctx, W, H, ns) != EF_OK ||
                     ef_ctx_set_filter(ctx, cf[c].filter, cf[c].subpixel) != EF_OK ||
-                    ef_image_alloc(&img, W, H) != EF_OK)
+                    ef_image_create(&img, W, H) != EF_OK)
                     die("context");
                 memset(oimg, 0, n * 4);
                 int bad = 0;
@@ -181,7 +181,7 @@ static void check_shared(const char *dir, const config *cf, int ncf)
                     bad = 1;
                 }
                 bad ? failed++ : passed++;
-                ef_image_free(&img);
+                ef_image_destroy(&img);
                 ef_ctx_destroy(ctx);
             }
         printf("filter: %-44s %4u shapes %4dx%-4d %s\n", names[f], sc.nshapes, W, H,
@@ -190,7 +190,7 @@ static void check_shared(const char *dir, const config *cf, int ncf)
         free(want);
         free(got);
         free(oimg);
-        ef_scene_free(&sc);
+        ef_scene_destroy(&sc);
         free(names[f]);
     }
 }
@@ -234,8 +234,8 @@ static void check_default(void)
     ef_polygon p = { pts, start, 1 };
     ef_ctx *a, *b;
     ef_image ia, ib;
-    if (ef_ctx_create(&a, 10, 10, 16) || ef_ctx_create(&b, 10, 10, 16) || ef_image_alloc(&ia, 10, 10) ||
-        ef_image_alloc(&ib, 10, 10))
+    if (ef_ctx_create(&a, 10, 10, 16) || ef_ctx_create(&b, 10, 10, 16) || ef_image_create(&ia, 10, 10) ||
+        ef_image_create(&ib, 10, 10))
         die("context");
     ef_rgba8 col = { 200, 100, 50, 180 };
     int ok = ef_ctx_set_filter(b, EF_FILTER_TENT, EF_SUBPIXEL_RGB) == EF_OK &&
@@ -279,8 +279,8 @@ static void check_default(void)
     ef_ctx_destroy(big);
     ef_ctx_destroy(a);
     ef_ctx_destroy(b);
-    ef_image_free(&ia);
-    ef_image_free(&ib);
+    ef_image_destroy(&ia);
+    ef_image_destroy(&ib);
 }
 
 int main(int argc, char **argv)

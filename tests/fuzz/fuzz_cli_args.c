@@ -3,8 +3,8 @@
  * (cli/args.c and the option parsers of `render`, `patterns`, `check` and
  * `vectors`).
  *
- * The whole input, as one string, goes to ef_cli_parse_int (several ranges)
- * and ef_cli_parse_size, each checked against a reference written here from
+ * The whole input, as one string, goes to ef_util_parse_int (several ranges)
+ * and ef_util_parse_size, each checked against a reference written here from
  * docs/cli.md ("decimal digits only, no sign, no spaces, no trailing
  * characters; a lower-case x separates the size").  Then the input, split at
  * newlines, is an argument vector for `edgeflag render ...`, `edgeflag
@@ -63,7 +63,7 @@ static void check_numbers(const char *s)
     for (size_t r = 0; r < sizeof ranges / sizeof ranges[0]; r++) {
         int32_t got = -12345;
         int64_t want = 0;
-        int ok = ef_cli_parse_int(s, ranges[r][0], ranges[r][1], &got);
+        int ok = ef_util_parse_int(s, ranges[r][0], ranges[r][1], &got);
         bool wok = ref_int(s, n, ranges[r][0], ranges[r][1], &want);
         if (ok != (int)wok || (ok && got != want))
             FAIL("parse_int('%s', %" PRId32 ", %" PRId32 ") = %d/%" PRId32 ", reference %d/%" PRId64, s, ranges[r][0],
@@ -73,7 +73,7 @@ static void check_numbers(const char *s)
     }
     int32_t w = -1, h = -1;
     int64_t rw = 0, rh = 0;
-    int ok = ef_cli_parse_size(s, EF_MAX_CANVAS, &w, &h);
+    int ok = ef_util_parse_size(s, EF_MAX_CANVAS, &w, &h);
     const char *x = strchr(s, 'x');
     bool wok =
         x && ref_int(s, (size_t)(x - s), 1, EF_MAX_CANVAS, &rw) && ref_int(x + 1, strlen(x + 1), 1, EF_MAX_CANVAS, &rh);
@@ -151,7 +151,7 @@ static void check_render(int argc, char **argv)
     if (!((a.fit_w == 0 && a.fit_h == 0) ||
           (a.fit_w >= 1 && a.fit_w <= EF_MAX_CANVAS && a.fit_h >= 1 && a.fit_h <= EF_MAX_CANVAS)))
         FAIL("render: size %" PRId32 "x%" PRId32, a.fit_w, a.fit_h);
-    if (!ef_cli_format_available(a.fmt) || a.fmt != ef_cli_format_from_path(a.output))
+    if (!ef_util_format_available(a.fmt) || a.fmt != ef_util_format_from_path(a.output))
         FAIL("render: output '%s' accepted with format %d", a.output, (int)a.fmt);
     if (a.samples != b.samples || a.rule != b.rule || a.fit_w != b.fit_w || a.fit_h != b.fit_h || a.input != b.input ||
         a.output != b.output)
@@ -216,8 +216,9 @@ static void check_check(int argc, char **argv)
         FAIL("check: cycles %d", a.cycles);
     if (a.junit && !a.junit[0])
         FAIL("check: empty --junit accepted");
-    if (a.diff_image && (!ef_cli_format_available(a.diff_fmt) || a.diff_fmt != ef_cli_format_from_path(a.diff_image) ||
-                         (a.diff_fmt != EF_CLI_FMT_PNG && a.diff_fmt != EF_CLI_FMT_PAM)))
+    if (a.diff_image &&
+        (!ef_util_format_available(a.diff_fmt) || a.diff_fmt != ef_util_format_from_path(a.diff_image) ||
+         (a.diff_fmt != EF_UTIL_FMT_PNG && a.diff_fmt != EF_UTIL_FMT_PAM)))
         FAIL("check: --diff-image '%s' accepted with format %d", a.diff_image, (int)a.diff_fmt);
     if (a.junit && a.diff_image && strcmp(a.junit, a.diff_image) == 0)
         FAIL("check: one file for both outputs");

@@ -217,7 +217,7 @@ static inline int fuzz_load_checked(fuzz_loader load, const char *name, const ch
     }
     fuzz_check_scene(s);
     FUZZ_CHECK(fuzz_scene_equal(s, &s2), "second load gave a different scene");
-    ef_scene_free(&s2);
+    ef_scene_destroy(&s2);
     if (opts && opts->fit_width)
         FUZZ_CHECK(s->width == opts->fit_width && s->height == opts->fit_height, "fit size not honoured");
     return 1;

@@ -64,8 +64,8 @@ static void make_vectors(void)
     ef_ctx *ctx;
     ef_image img;
     ef_vec_collect c;
-    FUZZ_CHECK(ef_ctx_create(&ctx, 8, 6, 8) == EF_OK && ef_image_alloc(&img, 8, 6) == EF_OK, "model");
-    ef_vec_collect_init(&c, EF_IF_ALL);
+    FUZZ_CHECK(ef_ctx_create(&ctx, 8, 6, 8) == EF_OK && ef_image_create(&img, 8, 6) == EF_OK, "model");
+    ef_vec_collect_create(&c, EF_IF_ALL);
     const ef_point pts[3] = { { 256, 128 }, { 1900, 700 }, { 600, 1500 } };
     const uint32_t start[2] = { 0, 3 };
     const ef_polygon poly = { pts, start, 1 };
@@ -81,8 +81,8 @@ static void make_vectors(void)
     ef_vec_out_init(&o, f, 0);
     ef_vec_bin_write(&o, &info, &c);
     FUZZ_CHECK(ef_vec_out_finish(&o, NULL) == 0 && fclose(f) == 0, "write vectors");
-    ef_vec_collect_free(&c);
-    ef_image_free(&img);
+    ef_vec_collect_destroy(&c);
+    ef_image_destroy(&img);
     ef_ctx_destroy(ctx);
 }
 
@@ -194,7 +194,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         /* (a digest run's file is rebuilt: the reader checked its counts against its records) */
         FUZZ_CHECK(digest || n == rep.records, "results hold %llu records, %llu received", (unsigned long long)n,
                    (unsigned long long)rep.records);
-        ef_vec_dump_free(&d);
+        ef_vec_dump_destroy(&d);
     } else {
         FUZZ_CHECK(access(actual, F_OK) != 0, "exit %d left a vectors.actual.bin", code);
     }

@@ -93,7 +93,7 @@ static void check_scene(const ef_scene *s)
         /* The composited scene, twice, on fresh contexts. */
         ef_image a, b;
         ef_ctx *c1, *c2;
-        FUZZ_CHECK(ef_image_alloc(&a, W, H) == EF_OK && ef_image_alloc(&b, W, H) == EF_OK, "image");
+        FUZZ_CHECK(ef_image_create(&a, W, H) == EF_OK && ef_image_create(&b, W, H) == EF_OK, "image");
         memset(a.px, 0, a.stride * (size_t)H);
         memset(b.px, 0, b.stride * (size_t)H);
         FUZZ_CHECK(ef_ctx_create(&c1, W, H, N) == EF_OK && ef_ctx_create(&c2, W, H, N) == EF_OK, "context");
@@ -101,8 +101,8 @@ static void check_scene(const ef_scene *s)
         FUZZ_CHECK(memcmp(a.px, b.px, a.stride * (size_t)H) == 0, "compositing not deterministic");
         ef_ctx_destroy(c1);
         ef_ctx_destroy(c2);
-        ef_image_free(&a);
-        ef_image_free(&b);
+        ef_image_destroy(&a);
+        ef_image_destroy(&b);
     }
     free(m1);
     free(m2);
@@ -122,12 +122,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         memset(&fit, 0, sizeof fit);
         fit.fit_width = s.width > MAXDIM ? MAXDIM : s.width;
         fit.fit_height = s.height > MAXDIM ? MAXDIM : s.height;
-        ef_scene_free(&s);
+        ef_scene_destroy(&s);
         if (ef_scene_load_text("fuzz.scene", (const char *)data, size, &fit, &s, &e) != EF_OK)
             return 0;
     }
     fuzz_check_scene(&s);
     check_scene(&s);
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
     return 0;
 }

@@ -23,9 +23,9 @@ static void one(const char *data, size_t size, const ef_load_opts *opts)
     ef_status ts = ef_scene_load_text("dump.scene", b.p, b.n, NULL, &t, &e);
     FUZZ_CHECK(ts == EF_OK, "the exact dump does not load: %s", e.msg);
     FUZZ_CHECK(fuzz_same_geometry(&s, &t), "the exact dump reads back different vertices");
-    ef_scene_free(&t);
+    ef_scene_destroy(&t);
     free(b.p);
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);

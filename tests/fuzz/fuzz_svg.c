@@ -28,7 +28,7 @@ static void one(const char *data, size_t size, const ef_load_opts *opts, int ren
         return;
 
     if (s.npoints > 65536) { /* a big scene (up to the work limit): checked above, not dumped */
-        ef_scene_free(&s);
+        ef_scene_destroy(&s);
         return;
     }
     fuzz_buf b = { 0 };
@@ -37,7 +37,7 @@ static void one(const char *data, size_t size, const ef_load_opts *opts, int ren
     FUZZ_CHECK(ts == EF_OK, "the exact dump does not load: %s at %" PRIu32 ":%" PRIu32 "\n%s", e.msg, e.line, e.col,
                b.p);
     FUZZ_CHECK(fuzz_same_geometry(&s, &t), "the exact dump reads back different vertices");
-    ef_scene_free(&t);
+    ef_scene_destroy(&t);
     free(b.p);
 
     if (render) {
@@ -50,7 +50,7 @@ static void one(const char *data, size_t size, const ef_load_opts *opts, int ren
         }
         ef_ctx_destroy(ctx);
     }
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);

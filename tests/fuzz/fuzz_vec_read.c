@@ -175,7 +175,7 @@ static void hex_round_trip(const ef_vec_dump *d)
         FUZZ_CHECK(!memcmp(back.seq[iface].cycle, q->cycle, q->n * 8) &&
                        !memcmp(back.seq[iface].pay, q->pay, q->n * q->nw * 8),
                    "round trip changed a transaction");
-    ef_vec_dump_free(&back);
+    ef_vec_dump_destroy(&back);
     free(b.p);
 }
 
@@ -205,8 +205,8 @@ static void fuzz_manifest(const uint8_t *p, size_t n)
         FUZZ_CHECK(!strcmp(nm, m2.files[k].name), "manifest differs");
     }
     FUZZ_CHECK(m.width >= 0 && m.width <= EF_MAX_CANVAS && m.height >= 0 && m.height <= EF_MAX_CANVAS, "size");
-    ef_vec_manifest_free(&m);
-    ef_vec_manifest_free(&m2);
+    ef_vec_manifest_destroy(&m);
+    ef_vec_manifest_destroy(&m2);
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
@@ -245,9 +245,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         if (mode <= 1)
             hex_round_trip(&r1.d);
     }
-    ef_vec_dump_free(&r1.d);
-    ef_vec_dump_free(&r2.d);
-    ef_vec_dump_free(&r3.d);
+    ef_vec_dump_destroy(&r1.d);
+    ef_vec_dump_destroy(&r2.d);
+    ef_vec_dump_destroy(&r3.d);
     free(p);
     return 0;
 }

@@ -42,21 +42,21 @@ fuzz-build:
 
 fuzz-bins: $(FUZZ_BINS)
 
-FUZZ_CLI_OBJ = $(filter-out $(BUILD)/cli/main.o,$(CLI_OBJ))
+FUZZ_CLI_OBJ = $(filter-out $(BUILD)/cli/main.o,$(CLI_OBJ)) $(UTIL_OBJ) $(VEC_A)
 $(BUILD)/fuzz/fuzz_render: $(ORACLE_OBJ)
 $(BUILD)/fuzz/fuzz_cli_args: $(FUZZ_CLI_OBJ)
-$(BUILD)/fuzz/fuzz_vec_read: $(RTLV_OBJ)
-$(BUILD)/fuzz/fuzz_board: $(HOST_BOARD_OBJ) $(RTLV_OBJ)
+$(BUILD)/fuzz/fuzz_vec_read: $(VEC_A)
+$(BUILD)/fuzz/fuzz_board: $(HOST_BOARD_OBJ) $(VEC_A)
 FUZZ_HOST_OBJ = $(BUILD)/host/host_link.o $(BUILD)/host/transport.o $(HOST_BOARD_OBJ)
-$(BUILD)/fuzz/fuzz_host_results: $(FUZZ_HOST_OBJ) $(FUZZ_CLI_OBJ)
+$(BUILD)/fuzz/fuzz_host_results: $(FUZZ_HOST_OBJ) $(UTIL_OBJ) $(VEC_A)
 $(BUILD)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/fuzz_common.h $(LIB_A)
 	@mkdir -p $(dir $@)
-	$(CC) $(CPPFLAGS) -Itests/fuzz -Itests/oracle -Icli -Ihost -Iboard -Iproto $(CFLAGS_ALL) -fsanitize=fuzzer $< \
+	$(CC) $(CPPFLAGS) -Itests/fuzz -Itests/oracle -Icli -Iutil -Ihost -Iboard -Iproto $(CFLAGS_ALL) -fsanitize=fuzzer $< \
 	    $(if $(filter fuzz_render,$(notdir $@)),$(ORACLE_OBJ)) \
 	    $(if $(filter fuzz_cli_args,$(notdir $@)),$(FUZZ_CLI_OBJ)) \
-	    $(if $(filter fuzz_vec_read,$(notdir $@)),$(RTLV_OBJ)) \
-	    $(if $(filter fuzz_board,$(notdir $@)),$(HOST_BOARD_OBJ) $(RTLV_OBJ)) \
-	    $(if $(filter fuzz_host_results,$(notdir $@)),$(FUZZ_HOST_OBJ) $(FUZZ_CLI_OBJ)) \
+	    $(if $(filter fuzz_vec_read,$(notdir $@)),$(VEC_A)) \
+	    $(if $(filter fuzz_board,$(notdir $@)),$(HOST_BOARD_OBJ) $(VEC_A)) \
+	    $(if $(filter fuzz_host_results,$(notdir $@)),$(FUZZ_HOST_OBJ) $(UTIL_OBJ) $(VEC_A)) \
 	    -o $@ $(LDFLAGS_ALL) $(LIB_A) $(PNG_LIBS) $(EXPAT_LIBS) $(VEC_LIBS) $(HOST_LIBS)
 
 fuzz: fuzz-build

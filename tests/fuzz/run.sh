@@ -16,7 +16,7 @@
 # (targets); fuzz/smoke append one line per target to WORK/fuzz-stats.tsv:
 # date, mode, target, executions, seconds, result.
 set -u
-cd "$(dirname "$0")/../.."
+cd "$(dirname "$0")/../.." || exit 1
 build=${1:?usage: run.sh BUILD MODE SECONDS TARGET...}
 mode=${2:?mode}
 secs=${3:?seconds}

@@ -7,13 +7,13 @@ GPIO_UMOCKDEV_LIBS := $(shell $(PKG_CONFIG) --libs umockdev-1.0 2>/dev/null || e
 GPIO_EMU := $(BUILD)/tests/host/gpio_emu
 GPIO_EMU_V2 := $(BUILD)/tests/host/gpio_emu_v2
 GPIO_EMU_OBJ := $(BUILD)/tests/host/gpio_emu.o $(BUILD)/tests/host/gpio_chip.o
-GPIO_EMU_LINK := $(BUILD)/host/host_link.o $(BUILD)/host/transport.o $(HOST_BOARD_OBJ) $(HOST_CLI_OBJ) $(LIB_A)
+GPIO_EMU_LINK := $(BUILD)/host/host_link.o $(BUILD)/host/transport.o $(HOST_BOARD_OBJ) $(UTIL_OBJ) $(VEC_A) $(LIB_A)
 GPIOD2_PREFIX := $(BUILD)/libgpiod2/prefix
 
 # A static pattern rule: only these objects, so other tests in tests/host keep their own flags.
 $(GPIO_EMU_OBJ): $(BUILD)/tests/host/%.o: tests/host/%.c
 	@mkdir -p $(dir $@)
-	$(CC) $(CPPFLAGS) $(HOST_CPPFLAGS) -Itests/host $(CFLAGS_ALL) $(GPIO_UMOCKDEV_CFLAGS) -c $< -o $@
+	$(CC) $(CPPFLAGS) -Ihost -Iboard -Iproto -Iutil -Itests/host $(CFLAGS_ALL) $(GPIO_UMOCKDEV_CFLAGS) -c $< -o $@
 
 $(GPIO_EMU): $(GPIO_EMU_OBJ) $(HOST_GPIO_OBJS) $(GPIO_EMU_LINK)
 	$(CC) $(LDFLAGS_ALL) -o $@ $^ $(HOST_GPIO_LIBS) $(GPIO_UMOCKDEV_LIBS) $(PNG_LIBS) $(EXPAT_LIBS) $(VEC_LIBS) -lz
@@ -21,7 +21,7 @@ $(GPIO_EMU): $(GPIO_EMU_OBJ) $(HOST_GPIO_OBJS) $(GPIO_EMU_LINK)
 # The v2 backend against the private libgpiod 2.3 (run tests/host/libgpiod2.sh first).
 $(BUILD)/gpiod2/gpio_v2.o: host/gpio_v2.c
 	@mkdir -p $(dir $@)
-	$(CC) $(CPPFLAGS) $(HOST_CPPFLAGS) $(CFLAGS_ALL) -I$(GPIOD2_PREFIX)/include \
+	$(CC) $(CPPFLAGS) -Ihost -Iboard -Iproto -Iutil $(CFLAGS_ALL) -I$(GPIOD2_PREFIX)/include \
 	    -DEF_GPIOD_VERSION='"$(shell PKG_CONFIG_PATH=$(GPIOD2_PREFIX)/lib/pkgconfig $(PKG_CONFIG) --modversion libgpiod)"' \
 	    -c $< -o $@
 $(GPIO_EMU_V2): $(GPIO_EMU_OBJ) $(BUILD)/host/transport_gpio.o $(BUILD)/gpiod2/gpio_v2.o $(GPIO_EMU_LINK)

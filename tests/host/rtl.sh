@@ -180,7 +180,7 @@ fi
 "$H" verify "$n/vectors.bin" "${SIM[@]}" --sim-dut verilog >usage.out 2>usage.err
 rc=$?
 if [ $rc = 2 ] && grep -q -- '--sim-dut must be model or rtl' usage.err; then
-    ok "--sim-dut verilog: exit 2, $(cat usage.err | head -n 1)"
+    ok "--sim-dut verilog: exit 2, $(head -n 1 usage.err)"
 else
     bad "--sim-dut verilog" "exit $rc; $(cat usage.err)"
 fi

@@ -32,9 +32,6 @@ done
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/edgeflag-host.XXXXXX") || exit 1
 trap 'rm -rf "$tmp"' EXIT
 cd "$tmp" || exit 1
-ALL=cmd,seg,et_wr,et_rd,plot,span,pix
-"$E" vectors --help | grep -q 'seg' || ALL=cmd,edge,et_wr,et_rd,plot,span,pix
-INTERNAL=${ALL#cmd,}
 # The simulated board works inside the host's reads and writes (a whole frame of the model at a
 # FRAME_END), so a busy machine stretches the time between two ACKs: every run gets a generous
 # --timeout (tests/host/waits.sh); only the stall, whose timeout is what it tests, a short one

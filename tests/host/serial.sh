@@ -17,6 +17,7 @@
 # machine cannot arrange is SKIPPED with the reason: docs/testing.md, "What the tests assume").
 # Recovery is asserted by how it happened (the host's --json counts); runs that must not time out
 # get a generous --timeout (tests/host/waits.sh, EF_TEST_TIMEOUT_SCALE).
+# shellcheck disable=SC2016 # how's conditions are single-quoted on purpose: evaluated when checked
 set -u
 export LC_ALL=C
 build=${1:?usage: tests/host/serial.sh BUILD_DIR [BOARD_CMD]}

@@ -8,9 +8,9 @@ PTYBOARD := $(BUILD)/tests/host/ptyboard
 
 $(SOCKBOARD:%=%.o) $(PTYBOARD:%=%.o): $(BUILD)/tests/host/%.o: tests/host/%.c
 	@mkdir -p $(dir $@)
-	$(CC) $(CPPFLAGS) $(HOST_CPPFLAGS) $(CFLAGS_ALL) -c $< -o $@
+	$(CC) $(CPPFLAGS) -Ihost -Iboard -Iproto -Iutil $(CFLAGS_ALL) -c $< -o $@
 
-$(SOCKBOARD) $(PTYBOARD): %: %.o $(HOST_BOARD_OBJ) $(HOST_CLI_OBJ) $(LIB_A)
+$(SOCKBOARD) $(PTYBOARD): %: %.o $(HOST_BOARD_OBJ) $(UTIL_OBJ) $(VEC_A) $(LIB_A)
 	$(CC) $(LDFLAGS_ALL) -o $@ $^ $(PNG_LIBS) $(EXPAT_LIBS) $(VEC_LIBS) -lz
 
 .PHONY: test-host-socket

@@ -18,6 +18,7 @@
 # stall and the mute board, whose timeouts are what they test, get a short one.
 # usage: bash tests/host/socket.sh BUILD_DIR   (`make test-host-socket`)
 # Ends with "N passed, M failed"; exit status 0 only if nothing failed.
+# shellcheck disable=SC2016 # how's conditions are single-quoted on purpose: evaluated when checked
 set -u
 export LC_ALL=C
 build=${1:?usage: tests/host/socket.sh BUILD_DIR}

@@ -4,7 +4,7 @@
 # layers-print).  An "ok" arrow that fails is as much a failure as a
 # "forbidden" one that compiles: both directions are checked.
 set -u
-cd "$(dirname "$0")/../.."
+cd "$(dirname "$0")/../.." || exit 1
 build=${1:-build}
 cc=${CC:-cc}
 declare -A inc
@@ -25,5 +25,23 @@ while IFS=$'\t' read -r layer header expect; do
     fi
 done <tests/layers/arrows.tsv
 [ $n -gt 0 ] || { echo "layers: no arrows checked"; exit 1; }
-if [ $bad -ne 0 ]; then echo "layers: $bad of $n arrows wrong"; exit 1; fi
-echo "layers: $n arrows as tests/layers/arrows.tsv says (include paths per folder)"
+# Every C/C++ source folder has a layer (tests/layers/folders.tsv), and that layer is one make prints.
+declare -A folder
+while IFS=$'\t' read -r f layer; do
+    case $f in ''|'#'*) continue ;; esac
+    folder[$f]=$layer
+    if [ "$layer" != verilator ] && [ -z "${inc[$layer]+x}" ]; then
+        echo "layers: tests/layers/folders.tsv gives $f the layer '$layer', which make layers-print does not know"
+        bad=$((bad + 1))
+    fi
+done <tests/layers/folders.tsv
+nf=0
+if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then
+    while read -r d; do
+        nf=$((nf + 1))
+        [ -n "${folder[$d]+x}" ] ||
+            { echo "layers: $d holds C sources but has no layer in tests/layers/folders.tsv"; bad=$((bad + 1)); }
+    done < <(git ls-files '*.c' '*.cpp' | sed 's|/[^/]*$||' | sort -u)
+fi
+if [ $bad -ne 0 ]; then echo "layers: FAIL: $bad wrong ($n arrows, $nf source folders checked)"; exit 1; fi
+echo "layers: $n arrows as tests/layers/arrows.tsv says (include paths per folder); $nf C source folders, each with its layer"

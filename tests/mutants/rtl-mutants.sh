@@ -12,7 +12,7 @@
 #   4. stage "rtl-test": each mutant runs make rtl-test's Verilator cases
 #      (every shared SVG at 24x18 and every 11th `edgeflag gen` level-1 case,
 #      rotating over NS x rule, and the tiger with random back-pressure on
-#      pix), shortest first, each under a timeout; the mutant is killed by the
+#      pix) and one directed case (the tiger at W_MAX x H_MAX), shortest first, each under a timeout; the mutant is killed by the
 #      first case whose bench does not pass, times out, or whose dumps fail
 #      `edgeflag check` (--cycles; --transactions under back-pressure);
 #   5. stage "regression": the survivors run every `edgeflag gen` level-1
@@ -36,6 +36,7 @@
 #                     (default 250000: a survivor runs all of them)
 #   EF_MUT_REUSE=DIR  a work folder kept (EF_MUT_KEEP=1) by an earlier run of the
 #                     same tree: its builds and vectors are reused
+#   EF_MUT_CACHE=FILE stage-1 results of an earlier run (its stage1.txt) reused
 #   EF_MUT_OUT=DIR    keep results.tsv and report.txt there
 # Ends with "N passed, M failed": failed when mutant 0 fails, or a
 # non-equivalent mutant survives both stages while EF_MUT_REQUIRE=1.
@@ -72,7 +73,12 @@ pass=0 fail=0
 
 # ------------------------------------------------------------ 1. schemata
 files=(ef_raster.v ef_dec.v ef_setup.v ef_div.v ef_etm.v ef_aet.v ef_plot.v ef_slb_fill.v ef_slb_ram.v ef_cov.v)
-nall=$(python3 "$root/dv/mutants/rtl_mutate.py" "$work/mut" "${files[@]/#/$root/rtl/}") || { echo "0 passed, 1 failed"; exit 1; }
+# an RTL variant (dv/rtl-variant.sh: a copy of rtl/ with its include files), whose .v files
+# rtl_mutate.py then replaces by their schemata in place
+bash "$root/dv/rtl-variant.sh" "$work/mut" >/dev/null || { echo "FAIL rtl-mutants: dv/rtl-variant.sh"; echo "0 passed, 1 failed"; exit 1; }
+# and the n-rooks table, a function included in ef_plot's body
+nall=$(python3 "$root/dv/mutants/rtl_mutate.py" "$work/mut" "${files[@]/#/$work/mut/}" "$work/mut/ef_rooks.vh") ||
+    { echo "0 passed, 1 failed"; exit 1; }
 MUTRTL=("${files[@]/#/$work/mut/}")
 
 # ------------------------------------------------------------ 2. builds
@@ -80,19 +86,19 @@ buildone() {
     [ -x "$work/vl_$1/Vtb_raster" ] && [ -n "${EF_MUT_REUSE:-}" ] && return 0
     if [ "$sim" = icarus ]; then
         mkdir -p "$work/vl_$1"
-        iverilog -g2005 -I"$root/rtl" -o "$work/vl_$1/t.vvp" -Ptb_raster.NS="$1" -Ptb_raster.W_MAX=$WM -Ptb_raster.H_MAX=$HM \
+        iverilog -g2005 -I"$work/mut" -o "$work/vl_$1/t.vvp" -Ptb_raster.NS="$1" -Ptb_raster.W_MAX=$WM -Ptb_raster.H_MAX=$HM \
             -Ptb_raster.E_MAX=$EM -Ptb_raster.FB_BITS=16 "$root/dv/tb/tb_raster.v" "${MUTRTL[@]}" >"$work/build_$1.log" 2>&1 ||
             { tail -20 "$work/build_$1.log"; return 1; }
         return
     fi
-    verilator --binary --timing -O1 -Wno-fatal -Wno-WIDTH -I"$root/rtl" --x-assign unique --x-initial unique --Mdir "$work/vl_$1" --top-module tb_raster \
+    verilator --binary --timing -O1 -Wno-fatal -Wno-WIDTH -I"$work/mut" --x-assign unique --x-initial unique --Mdir "$work/vl_$1" --top-module tb_raster \
         -GNS="$1" -GW_MAX=$WM -GH_MAX=$HM -GE_MAX=$EM -GFB_BITS=16 "$root/dv/tb/tb_raster.v" "${MUTRTL[@]}" \
         >"$work/build_$1.log" 2>&1 || { tail -20 "$work/build_$1.log"; return 1; }
 }
 pids=()
 for ns in $nslist; do buildone "$ns" & pids+=($!); done
 for p in "${pids[@]}"; do wait "$p" || { echo "FAIL rtl-mutants: Verilator did not build the schemata"; echo "0 passed, 1 failed"; exit 1; }; done
-echo "rtl-mutants: $nall mutants in $(echo "${files[@]}" | wc -w) files; schemata built ($sim) at NS $nslist in $(( $(date +%s) - t0 )) s"
+echo "rtl-mutants: $nall mutants in $(( $(echo "${files[@]}" | wc -w) + 1 )) files; schemata built ($sim) at NS $nslist in $(( $(date +%s) - t0 )) s"
 
 # ------------------------------------------------------------ 3. cases
 [ -f "$work/gen/index.tsv" ] || "$EF" gen -o "$work/gen" >/dev/null 2>&1 || { echo "FAIL rtl-mutants: edgeflag gen"; echo "0 passed, 1 failed"; exit 1; }
@@ -129,6 +135,10 @@ mkcase() {   # mkcase STAGE NAME INPUT NS RULE SIZE [BP]
         fi
     done < <(tail -n +3 "$work/gen/index.tsv")
     case " $nslist " in *" 8 "*) mkcase t bp_tiger "$root/tests/data/svg/tiger.svg" 8 scene 24x18 424242 ;; esac
+    # directed (added after the first run, where it killed 3 of the 31 survivors): the tiger
+    # filling the build's W_MAX x H_MAX, a FRAME of exactly the largest canvas, rows past 64
+    # for AET's occupancy search and enough edges to wrap its ring
+    case " $nslist " in *" 8 "*) [ "$maxcyc" = 0 ] && mkcase t max_tiger "$root/tests/data/svg/tiger.svg" 8 scene "${WM}x$HM" ;; esac
 } >"$work/cases.all"
 sort -k1,1 -k2,2n "$work/cases.all" >"$work/cases.txt"
 nt=$(grep -c '^t ' "$work/cases.txt"); nr=$(grep -c '^r ' "$work/cases.txt")
@@ -158,6 +168,7 @@ runmut() {
 export -f runmut; export work EF tmo sim
 
 # ------------------------------------------------------------ sanity: mutant 0
+[ "$nt" -gt 0 ] || { echo "FAIL rtl-mutants: no case for stage rtl-test"; echo "0 passed, 1 failed"; exit 1; }
 for st in t r; do
     r=$(runmut 0 $st)
     if [ "$r" != "0 survived" ]; then
@@ -183,7 +194,20 @@ nsel=$(grep -c . "$work/selected.tsv")
 echo "rtl-mutants: $nsel of $nall mutants selected${EF_MUT_SAMPLE:+ (seeded sample, seed ${EF_MUT_SEED:-27})}"
 
 # ------------------------------------------------------------ 4. + 5.
-cut -f1 "$work/selected.tsv" | parallel -j "$jobs" runmut '{}' t >"$work/stage1.txt"
+# EF_MUT_CACHE=FILE: stage-1 results ("K killed CASE" / "K survived") of an earlier run of the
+# same tree and cases, taken as they are
+: >"$work/stage1.txt"
+if [ -n "${EF_MUT_CACHE:-}" ] && [ -f "$EF_MUT_CACHE" ]; then
+    awk 'NR == FNR { c[$1] = $0; next } ($1 in c) { print c[$1] }' "$EF_MUT_CACHE" <(cut -f1 "$work/selected.tsv") >>"$work/stage1.txt"
+    echo "rtl-mutants: $(grep -c . "$work/stage1.txt") stage-1 results taken from $EF_MUT_CACHE"
+fi
+cut -d' ' -f1 "$work/stage1.txt" >"$work/done.txt"
+cut -f1 "$work/selected.tsv" | grep -vxF -f "$work/done.txt" | parallel -j "$jobs" runmut '{}' t >>"$work/stage1.txt"
+# every drawn mutant has its verdict, or the run is not a measurement
+nres=$(cut -d' ' -f1 "$work/stage1.txt" | sort -u | grep -c .)
+if [ "$nres" != "$nsel" ]; then
+    echo "FAIL rtl-mutants: $nres stage-1 verdicts for $nsel mutants"; echo "$pass passed, $((fail + 1)) failed"; exit 1
+fi
 if [ "${EF_MUT_REGRESS:-1}" = 1 ]; then
     awk '$2 == "survived" { print $1 }' "$work/stage1.txt" | parallel -j "$jobs" runmut '{}' r >"$work/stage2.txt"
 else
@@ -218,7 +242,9 @@ surv = []
 for mid, f, line, op, key, old, new in sel:
     b = blocks.setdefault(f, [0, 0, 0, 0, 0])
     b[0] += 1
-    st1 = s1.get(mid, ("missing", ""))[0]
+    if mid not in s1:
+        raise SystemExit("rtl-mutants: no stage-1 verdict for mutant %s" % mid)
+    st1 = s1[mid][0]
     st2 = s2.get(mid, ("", ""))[0]
     if st1 == "killed":
         b[1] += 1; verdict = "killed-rtl-test " + s1[mid][1]
@@ -238,7 +264,7 @@ def line(name, b):
     sc2 = "%d.%d %%" % divmod((b[1] + b[2]) * 1000 // ne, 10) if ne else "-"
     print("%-14s %8d %10d %10d %10d %9d %12s %12s" % (name, b[0], b[1], b[2], b[3], b[4], sc1, sc2))
 for f in sorted(blocks):
-    line(f.replace(".v", ""), blocks[f])
+    line(f[:-2] if f.endswith(".v") else f, blocks[f])
     tot = [a + b for a, b in zip(tot, blocks[f])]
 line("all", tot)
 if not regress:

@@ -50,6 +50,7 @@ grep -E '^throughput' R/merged/summary.txt | sed 's/^/    /'
 # ------------------------------------------------------------ 2. a killed shard, a missing shard
 # 40 shards of a DUT that takes a second a case: shards 1 and 2 run to the end, shard 3 is
 # killed after 3 s (of its 7 cases), shards 4..40 never start.
+# shellcheck disable=SC2016 # expanded by the shard, for each case
 slow='sleep 1; "$EDGEFLAG" vectors "$EF_CASE_FILE" -o "$EF_DUMPS" --samples "$EF_SAMPLES" $EF_RULE_OPT --dump --force --formats hex'
 parallel -j2 "$SHARD" --out K --shard {}/40 --run "'$slow'" ::: 1 2 >/dev/null 2>&1
 ( timeout -s KILL 3 "$SHARD" --out K --shard 3/40 --run "$slow" >/dev/null 2>&1 ) 2>/dev/null
@@ -87,8 +88,9 @@ if [ $frc = 1 ] && [ $fmrc = 1 ] && [ "$nf" -ge 1 ] &&
     ls F/shard_5_of_40/fail/case_*/dumps/pix.actual.hex >/dev/null 2>&1; then
     ok "a DUT with one wrong pixel: $nf failing runs, each with its seed and first mismatch line in the summary, files kept"
 else
-    bad "one wrong pixel" "shard exit $frc, merge exit $fmrc, $nf failing runs"; cat flip.log | tail -5; grep -A3 FAILED F/merged/summary.txt
+    bad "one wrong pixel" "shard exit $frc, merge exit $fmrc, $nf failing runs"; tail -5 flip.log; grep -A3 FAILED F/merged/summary.txt
 fi
+# shellcheck disable=SC2016 # expanded by the shard, for each case
 "$SHARD" --out P --shard 7/40 --run 'cd "$EF_DUMPS" && for f in "$EF_VECTORS"/*.expected.hex; do
     b=$(basename "$f" .expected.hex); [ "$b" = pix ] || grep -v "^//" "$f" >"$b.actual.hex"; done' >p.log 2>&1
 prc=$?
@@ -104,24 +106,27 @@ nr=$(grep -c '^[0-9]' T/shard_9_of_130/cases.tsv)
     ok "a DUT that hangs: every run a timeout after --timeout 1 ($nt runs), JUnit errors" || bad "timeout" "exit $trc, $nt of $nr"
 
 # ------------------------------------------------------------ 5. the DUT's limits
-# Level 1 in 4 shards for a DUT of 64x64 pixels and 200 edges a shape: the cases over it are
-# refused by name before any simulation, counted apart, and the merge passes.
-parallel --halt never -j2 "$SHARD" --out L --shard {}/4 --dut-limits 64x64 --dut-edges 200 ::: 1 2 3 4 >lpar.log 2>&1
+# Level 1 in 4 shards for a DUT of 64x64 pixels, 200 edges a shape, 8 and 16 samples: the runs
+# over it are refused by name before any simulation, counted apart, and the merge passes.
+parallel --halt never -j2 "$SHARD" --out L --shard {}/4 --dut-limits 64x64 --dut-edges 200 --dut-samples 8,16 ::: 1 2 3 4 \
+    >lpar.log 2>&1
 lprc=$?
 "$MERGE" L >lmerge.out 2>&1
 lmrc=$?
 # cases.tsv: case samples rule seed verdict seconds first
 refs() { cat L/shard_*_of_4/cases.tsv | awk -F'\t' -v re="$1" '$5 == "refused" && $7 ~ re { n++ } END { print n + 0 }'; }
 nref=$(refs '^refused before simulation: ')
-ncanvas=$(refs "^refused before simulation: canvas [0-9]+x[0-9]+ over the DUT's 64x64\$")
-nedges=$(refs "^refused before simulation: a shape of [0-9]+ edges over the DUT's 200\$")
-if [ $lprc = 0 ] && [ $lmrc = 0 ] && [ "$nref" -gt 0 ] && [ "$ncanvas" -gt 0 ] && [ "$nedges" -gt 0 ] &&
+ncanvas=$(refs "^refused before simulation: canvas [0-9]+x[0-9]+ over the DUT's 64x64 [(]--dut-limits[)]: refused\$")
+nedges=$(refs "^refused before simulation: shape [0-9]+ has [0-9]+ edges, over the DUT's 200 [(]--dut-edges[)]: refused\$")
+nsamp=$(refs "^refused before simulation: 32 samples per pixel, the DUT takes 8,16\$")
+if [ $lprc = 0 ] && [ $lmrc = 0 ] && [ "$ncanvas" -gt 0 ] && [ "$nedges" -gt 0 ] && [ "$nsamp" -gt 0 ] &&
+    [ "$nref" = $((ncanvas + nedges + nsamp)) ] &&
     grep -q "^runs: $ncases in 4 of 4 shards; failed: 0; refused (do not fit the DUT, not failures): $nref;" L/merged/summary.txt &&
     grep -q '^REFUSED runs' L/merged/summary.txt && grep -q '^RESULT: PASS' L/merged/summary.txt &&
     xmllint --noout L/merged/junit.xml && [ "$(grep -c '<skipped message="refused before simulation' L/merged/junit.xml)" = "$nref" ]; then
-    ok "the DUT's limits (64x64, 200 edges): $nref of $ncases runs refused by name before simulation ($ncanvas canvas, $nedges edges), counted apart, JUnit skipped, merge PASS"
+    ok "the DUT's limits (64x64, 200 edges, 8 and 16 samples): $nref of $ncases runs refused by name before simulation ($ncanvas canvas, $nedges edges, $nsamp sample count), counted apart, JUnit skipped, merge PASS"
 else
-    bad "DUT limits" "parallel $lprc, merge $lmrc, $nref refused ($ncanvas canvas, $nedges edges); $(grep -E '^runs|^RESULT' L/merged/summary.txt)"
+    bad "DUT limits" "parallel $lprc, merge $lmrc, $nref refused ($ncanvas canvas, $nedges edges, $nsamp samples); $(grep -E '^runs|^RESULT' L/merged/summary.txt)"
 fi
 # A DUT that refuses a case itself (exit non-zero with its REFUSED line): refused, its own words quoted.
 "$SHARD" --out D --shard 9/130 --run 'echo "tb_raster: REFUSED cmd.stim.hex:5: FRAME canvas over the hardware W_MAX x H_MAX"; exit 1' >d.log 2>&1

@@ -1,3 +1,5 @@
+# shellcheck shell=bash
+# shellcheck disable=SC2086,SC2154 # sourced by rtl-test.sh: its root, work, have_vl; file lists split on purpose
 # tests/rtl/blocks_a.sh - sourced by tests/rtl/run.sh (uses its submit,
 # count, $EF, $work, $root, $TB, $have_vl): the front of the pipeline in RTL,
 # block by block, each fed from its upstream interface's expected hex and
@@ -46,8 +48,7 @@ lint_a() {
             out=$(verilator --lint-only -Wall -I"$RTLA" $g --top-module $top $files 2>&1)
             [ -z "$out" ] || { echo "$out"; echo "RESULT FAIL lint $top NS=$ns: verilator -Wall is not silent"; return; }
         fi
-        # shellcheck disable=SC2086
-        out=$(iverilog -g2005 -Wall -I"$RTLA" $(echo "$g" | sed "s/-G/-P$top./g") -s $top -o /dev/null $files 2>&1)
+        out=$(iverilog -g2005 -Wall -I"$RTLA" ${g//-G/-P$top.} -s $top -o /dev/null $files 2>&1)
         [ -z "$out" ] || { echo "$out"; echo "RESULT FAIL lint $top NS=$ns: iverilog -g2005 -Wall is not silent"; return; }
     done
     echo "RESULT PASS lint ef_dec, ef_setup + ef_div, ef_etm NS=$ns: verilator -Wall and iverilog -g2005 -Wall silent"
@@ -65,8 +66,8 @@ blk_run() {
     case $tb in
         tb_dec)   files=$A_DEC;   params=(NCMD="$nc") ;;
         tb_setup) files=$A_SETUP; params=(NS="$ns" NCMD="$nc" NSEG="$ns_") ;;
-        # H_MAX 4096 (the cases' canvases are at most 2048 tall): the
-        # occupancy bitmap's simulation cost grows with it
+        # H_MAX 4096: the cases' canvases are at most 2048 tall, and the
+        # slot sweep after reset takes H_MAX cycles
         tb_etm)   files=$A_ETM;   params=(NS="$ns" H_MAX=4096 NCMD="$nc" NWR="$nw" NRD="$(count "$d/et_rd.expected.hex")"
                                           NPLOT="$(count "$d/plot.expected.hex")") ;;
     esac

@@ -10,6 +10,7 @@
 # EF_RTL_E_MAX: default 16384 x 16384, 8192 edges, the frame memory model 2^21
 # pixels): a case that does not fit it is REFUSED by the bench, which names
 # why; refusals are counted and listed apart from failures and fail nothing.
+# shellcheck disable=SC2086 # the RTL file lists ($RTL, $A_*) are split into words on purpose
 set -u
 export LC_ALL=C
 build=${1:?usage: tests/rtl/rtl-regress.sh BUILD_DIR}
@@ -55,7 +56,7 @@ export -f one; export work EF
             echo "gen_${num}_${ns}_$rule|$work/gen/$file|$ns|$rule|-"
         done; done
     done
-} | parallel -j "$jobs" --colsep '\|' one {1} {2} {3} {4} {5} >"$work/results.txt"
+} | parallel -j "$jobs" --colsep '\|' one '{1}' '{2}' '{3}' '{4}' '{5}' >"$work/results.txt"
 grep '^FAIL' "$work/results.txt"
 grep '^PASS tiger' "$work/results.txt" | awk '{ printf "rtl-regress: tiger 640x480, 8 samples: %d cycles in %.1f s of Verilator: %.0f cycles/s\n", $3, $4, $3 / $4 }'
 grep '^REFUSED' "$work/results.txt"

@@ -26,6 +26,7 @@
 #        (default 2), EF_RTL_SLICE, EF_RTL_KEEP=1 keeps the work directory)
 # Ends with "N passed, M failed"; exit status 0 only if nothing failed.
 # Needs iverilog and verilator (tools/install-deps.sh test installs them).
+# shellcheck disable=SC2086 # the RTL file lists ($RTL, $A_*) are split into words on purpose
 set -u
 export LC_ALL=C
 
@@ -127,7 +128,7 @@ for f in "$root"/tests/data/svg/*.svg; do
     ns=$((8 << (k % 3))); rule=$(echo scene nonzero evenodd | cut -d' ' -f$(( (k / 3) % 3 + 1 )))
     cases+=("svg_$(basename "$f" .svg)_${ns}_$rule|$f|$ns|$rule|24x18"); k=$((k + 1))
 done
-while IFS=$'\t' read -r num file kind cat name rest; do
+while IFS=$'\t' read -r num file kind _ name _; do
     [ "$kind" = directed ] || [ "$kind" = random ] || continue
     case $name in canvas-max*|zigzag-4096|same-cell-4096) continue ;; esac   # over the bench's W_MAX/H_MAX, or slow
     [ $((num % slice)) = 0 ] || continue
@@ -256,7 +257,7 @@ exits() {        # exits SIM
             echo "$out" | tail -n 5; echo "RESULT FAIL exits ($sim) $k: no line '$want' (exit $rc)"; return
         fi
         if [ $k = good ]; then
-            files=$(cd "$d/out" && ls | tr '\n' ' ')
+            files=$(cd "$d/out" && for f in *; do printf '%s ' "$f"; done)
             [ "$rc" = 0 ] && [ "$files" = "et_rd.actual.hex et_wr.actual.hex pix.actual.hex plot.actual.hex seg.actual.hex span.actual.hex " ] &&
                 [ -z "$(ls -A "$d/cwd")" ] ||
                 { echo "RESULT FAIL exits ($sim) good: exit $rc, wrote '$files' and '$(ls -A "$d/cwd")' in the working folder"; return; }
@@ -273,7 +274,7 @@ for sim in icarus verilator; do submit "exits_$sim" exits $sim; done
 # first_diff DIR_EXPECTED DIR_ACTUAL: "IFACE CYCLE" of the earliest first
 # difference over the interfaces, by plain in-order comparison of the words.
 first_diff() {
-    local i best=""
+    local i
     # payload widths P of docs/microarch.md 3: the cycle is the word's bits above P
     for i in seg:97 et_wr:181 et_rd:36 plot:36 span:75 pix:68; do
         awk -v i=${i%:*} -v p=${i#*:} '

@@ -38,6 +38,7 @@
 # Skips (exit 0, saying so) only when Icarus Verilog is not installed; the
 # Verilator parts are skipped, with a message, when verilator is missing.
 # Ends with "N passed, M failed"; exit status 0 only if nothing failed.
+# shellcheck disable=SC2086 # the RTL file lists ($RTL, $A_*) are split into words on purpose
 set -u
 export LC_ALL=C
 
@@ -334,6 +335,62 @@ mutant() {
 }
 submit mutant_no_forwarding mutant no-forwarding
 submit mutant_cov_lag mutant cov-lag
+
+# ---------------------------------------------------------------- exits
+# Every block bench and the $readmemh reader exits non-zero, with its FAIL
+# line, when an input cannot be opened or its output cannot be written
+# (Icarus; a $fatal exits 1), and 0 with its DONE/PASS line on a good run.
+bench_exits() {
+    local d=$work/exits T=$work/vec/tiger tb o out rc files io good bad_in
+    mkdir -p "$d"
+    for tb in tb_dec tb_setup tb_etm tb_slb_fill tb_readmem; do
+        case $tb in
+            tb_dec)   files="$root/rtl/ef_dec.v"; io="+cmd=$T/cmd.stim.hex +seg=OUT"
+                      good="-Ptb_dec.NCMD=$(count "$T/cmd.stim.hex")"; bad_in="+cmd=$d/no-such.hex +seg=$d/x.hex" ;;
+            tb_setup) files="$root/rtl/ef_setup.v $root/rtl/ef_div.v $root/rtl/ef_slb_ram.v"
+                      io="+seg_in=$T/seg.expected.hex +cmd=$T/cmd.stim.hex +et_wr=OUT"
+                      good="-Ptb_setup.NCMD=$(count "$T/cmd.stim.hex") -Ptb_setup.NSEG=$(count "$T/seg.expected.hex")"
+                      bad_in="+seg_in=$d/no-such.hex +cmd=$T/cmd.stim.hex +et_wr=$d/x.hex" ;;
+            tb_etm)   files="$root/rtl/ef_etm.v $root/rtl/ef_slb_ram.v"
+                      io="+et_wr_in=$T/et_wr.expected.hex +et_rd_exp=$T/et_rd.expected.hex +plot=$T/plot.expected.hex +et_rd=OUT"
+                      good="-Ptb_etm.H_MAX=256 -Ptb_etm.NWR=$(count "$T/et_wr.expected.hex") -Ptb_etm.NRD=$(count "$T/et_rd.expected.hex") -Ptb_etm.NPLOT=$(count "$T/plot.expected.hex")"
+                      bad_in="+et_wr_in=$d/no-such.hex +et_rd_exp=$T/et_rd.expected.hex +plot=$T/plot.expected.hex +et_rd=$d/x.hex" ;;
+            tb_slb_fill) files="$root/rtl/ef_slb_fill.v $root/rtl/ef_slb_ram.v"
+                      io="+plot=$T/plot.expected.hex +cmd=$T/cmd.stim.hex +span=OUT"
+                      good="-Ptb_slb_fill.NPLOT=$(count "$T/plot.expected.hex") -Ptb_slb_fill.NCMD=$(count "$T/cmd.stim.hex")"
+                      bad_in="+plot=$d/no-such.hex +cmd=$T/cmd.stim.hex +span=$d/x.hex" ;;
+            tb_readmem) files=""; io="+in=$T/plot.expected.hex +out=OUT"
+                      # shellcheck disable=SC2089 # the quotes are iverilog's: a string parameter
+                      good="-Ptb_readmem.P=36 -Ptb_readmem.DEPTH=$(count "$T/plot.expected.hex") -Ptb_readmem.IFACE=\"plot\""
+                      bad_in="+in=$d/no-such.hex +out=$d/x.hex" ;;
+        esac
+        o=$d/$tb.vvp
+        # shellcheck disable=SC2086,SC2090 # the lists split on purpose
+        iverilog -g2005 -I"$RI" $good -o "$o" "$TB/$tb.v" $files >"$d/$tb.build" 2>&1 ||
+            { cat "$d/$tb.build"; echo "RESULT FAIL exits $tb: compile"; return; }
+        # a good run
+        # shellcheck disable=SC2086
+        out=$( ( vvp -n "$o" ${io//OUT/$d/$tb.actual.hex} 2>&1 ) 2>/dev/null ); rc=$?
+        if [ $rc != 0 ] || ! printf '%s\n' "$out" | grep -Eq "^$tb( plot)?: (DONE|PASS)"; then
+            printf '%s\n' "$out" | tail -n 3; echo "RESULT FAIL exits $tb: a good run exit $rc"; return
+        fi
+        # an input that is not there
+        # shellcheck disable=SC2086
+        out=$( ( vvp -n "$o" $bad_in 2>&1 ) 2>/dev/null ); rc=$?
+        if [ $rc = 0 ] || ! printf '%s\n' "$out" | grep -Eq "^$tb( plot)?: (FAIL|error).*(cannot open|no-such)"; then
+            printf '%s\n' "$out" | tail -n 3; echo "RESULT FAIL exits $tb: a missing input: exit $rc"; return
+        fi
+        # an output that cannot be written
+        # shellcheck disable=SC2086
+        out=$( ( vvp -n "$o" ${io//OUT/$d/no-such-dir/x.hex} 2>&1 ) 2>/dev/null ); rc=$?
+        if [ $rc = 0 ] || ! printf '%s\n' "$out" | grep -Eq "^$tb( plot)?: (FAIL|error)"; then
+            printf '%s\n' "$out" | tail -n 3; echo "RESULT FAIL exits $tb: an unwritable output: exit $rc"; return
+        fi
+        echo "$tb: good run exit 0; missing input and unwritable output exit non-zero with their FAIL line"
+    done
+    echo "RESULT PASS exits: tb_dec, tb_setup, tb_etm, tb_slb_fill and tb_readmem exit 0 on a good run and non-zero (their FAIL line) on a missing input or an unwritable output"
+}
+submit bench_exits bench_exits
 
 # 5. DEC, SETUP (+ divider) and ETM in RTL, block by block (tests/rtl/blocks_a.sh)
 . "$root/tests/rtl/blocks_a.sh"

@@ -58,7 +58,7 @@ int main(int argc, char **argv)
     ef_status st = ef_scene_load_file(in, &o, &s, &e);
     if (st == EF_OK) {
         printf("ok\t-\t%" PRIu32 " shapes, %" PRIu32 " points\n", s.nshapes, s.npoints);
-        ef_scene_free(&s);
+        ef_scene_destroy(&s);
     } else if (e.line && e.col) {
         printf("%s\t%" PRIu32 ":%" PRIu32 "\t%s\n", class_of(st), e.line, e.col, e.msg);
     } else {

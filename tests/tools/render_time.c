@@ -60,7 +60,7 @@ int main(int argc, char **argv)
         for (int rule = 0; rule < 2; rule++) {
             ef_ctx *ctx;
             ef_image img;
-            if (ef_ctx_create(&ctx, s.width, s.height, n) != EF_OK || ef_image_alloc(&img, s.width, s.height) != EF_OK)
+            if (ef_ctx_create(&ctx, s.width, s.height, n) != EF_OK || ef_image_create(&img, s.width, s.height) != EF_OK)
                 return 70;
             for (int r = 0; r < repeat; r++) {
                 memset(img.px, 0, img.stride * (size_t)img.height);
@@ -70,11 +70,11 @@ int main(int argc, char **argv)
             }
             qsort(t, (size_t)repeat, sizeof *t, cmp_d);
             printf("  %2d samples %-8s %8.3f ms/frame\n", n, rule ? "evenodd" : "nonzero", t[repeat / 2]);
-            ef_image_free(&img);
+            ef_image_destroy(&img);
             ef_ctx_destroy(ctx);
         }
     }
     free(t);
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
     return 0;
 }

@@ -76,6 +76,6 @@ int main(int argc, char **argv)
             printf("\n");
         }
     }
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
     return ferror(stdout) ? 4 : 0;
 }

@@ -25,7 +25,7 @@
 static ef_gen_config cfg(int level, int grid, uint32_t nrandom)
 {
     ef_gen_config c;
-    assert_int_equal(ef_gen_config_init(&c, level), EF_OK);
+    assert_int_equal(ef_gen_config_defaults(&c, level), EF_OK);
     c.grid = grid;
     if (nrandom)
         c.nrandom = nrandom;
@@ -102,7 +102,7 @@ static void check_roundtrip(const ef_gen_case *gc, const ef_gen_text *t)
             fail_msg("case %u (%s): vertex %u reads back as (%d, %d), written (%d, %d)", (unsigned)gc->number, gc->name,
                      (unsigned)i, (int)s.points[i].x, (int)s.points[i].y, (int)g->points[i].x, (int)g->points[i].y);
     }
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
 }
 
 static void append(ef_gen_text *t, const char *s)
@@ -140,8 +140,8 @@ static void test_levels_and_counts(void **state)
 {
     ef_gen_config c;
     (void)state;
-    assert_int_equal(ef_gen_config_init(&c, 0), EF_ERR_ARG);
-    assert_int_equal(ef_gen_config_init(&c, 3), EF_ERR_ARG);
+    assert_int_equal(ef_gen_config_defaults(&c, 0), EF_ERR_ARG);
+    assert_int_equal(ef_gen_config_defaults(&c, 3), EF_ERR_ARG);
 
     c = cfg(1, 0, 0);
     assert_true(c.seed == EF_GEN_DEFAULT_SEED);
@@ -184,7 +184,7 @@ static void test_levels_and_counts(void **state)
         ef_gen_case gc;
         c = cfg(1, 0, 0);
         assert_int_equal(ef_gen_build(&c, ef_gen_total(&c), &gc), EF_ERR_ARG);
-        ef_gen_case_free(&gc);
+        ef_gen_case_destroy(&gc);
     }
 }
 
@@ -228,7 +228,7 @@ static void test_shard_union(void **state)
         assert_int_equal(ef_gen_index_row(&gc, &t), EF_OK);
         rows[k] = t.data;
         assert_int_equal(ef_gen_index_row(&gc, &whole), EF_OK);
-        ef_gen_case_free(&gc);
+        ef_gen_case_destroy(&gc);
     }
     for (uint32_t n = 2; n <= 5; n++) {
         ef_gen_text joined = { NULL, 0, 0 };
@@ -246,8 +246,8 @@ static void test_shard_union(void **state)
                 assert_int_equal(ef_gen_build(&c, k, &gc), EF_OK);
                 assert_int_equal(ef_gen_index_row(&gc, &t), EF_OK);
                 assert_string_equal(t.data, rows[k]);
-                ef_gen_text_free(&t);
-                ef_gen_case_free(&gc);
+                ef_gen_text_destroy(&t);
+                ef_gen_case_destroy(&gc);
             }
         }
         assert_int_equal(seen, total);
@@ -256,13 +256,13 @@ static void test_shard_union(void **state)
             append(&joined, rows[k]);
         assert_int_equal(joined.len, whole.len);
         assert_memory_equal(joined.data, whole.data, whole.len);
-        ef_gen_text_free(&joined);
+        ef_gen_text_destroy(&joined);
         free(got);
     }
     for (uint32_t k = 0; k < total; k++)
         free(rows[k]);
     free(rows);
-    ef_gen_text_free(&whole);
+    ef_gen_text_destroy(&whole);
 }
 
 /* ---------------------------------------------------------- determinism */
@@ -280,9 +280,9 @@ static uint64_t run_hash(const ef_gen_config *c, uint32_t first, uint32_t step)
         ef_gen_case gc;
         make(c, k, &gc, &t);
         h = fnv1a(h, t.data, t.len);
-        ef_gen_case_free(&gc);
+        ef_gen_case_destroy(&gc);
     }
-    ef_gen_text_free(&t);
+    ef_gen_text_destroy(&t);
     return h;
 }
 
@@ -320,23 +320,23 @@ static void test_random_depends_on_seed_and_j(void **state)
         y = drawing(tb.data);
         assert_string_equal(x, y);
         free(y);
-        ef_gen_case_free(&gb);
+        ef_gen_case_destroy(&gb);
         make(&l2, d2 + j, &gb, &tb);
         y = drawing(tb.data);
         assert_string_equal(x, y);
         free(y);
-        ef_gen_case_free(&gb);
+        ef_gen_case_destroy(&gb);
         make(&g8, d8 + j, &gb, &tb);
         y = drawing(tb.data);
         assert_string_equal(x, y);
         free(y);
         free(x);
         assert_true(ga.case_seed == ef_gen_case_seed(a.seed, j));
-        ef_gen_case_free(&ga);
-        ef_gen_case_free(&gb);
+        ef_gen_case_destroy(&ga);
+        ef_gen_case_destroy(&gb);
     }
-    ef_gen_text_free(&ta);
-    ef_gen_text_free(&tb);
+    ef_gen_text_destroy(&ta);
+    ef_gen_text_destroy(&tb);
 }
 
 /* ------------------------------------------------------------- round trip */
@@ -353,9 +353,9 @@ static void roundtrip_directed(const ef_gen_config *c)
         assert_null(strchr(gc.desc, '\t'));
         assert_null(strchr(gc.desc, '\n'));
         check_roundtrip(&gc, &t);
-        ef_gen_case_free(&gc);
+        ef_gen_case_destroy(&gc);
     }
-    ef_gen_text_free(&t);
+    ef_gen_text_destroy(&t);
 }
 
 static void test_roundtrip_directed(void **state)
@@ -378,15 +378,15 @@ static void test_roundtrip_random(void **state)
         ef_gen_case gc;
         make(&c, k, &gc, &t);
         check_roundtrip(&gc, &t);
-        ef_gen_case_free(&gc);
+        ef_gen_case_destroy(&gc);
     }
     for (uint32_t j = 600; j < l2.nrandom; j += 173) {
         ef_gen_case gc;
         make(&l2, d2 + j, &gc, &t);
         check_roundtrip(&gc, &t);
-        ef_gen_case_free(&gc);
+        ef_gen_case_destroy(&gc);
     }
-    ef_gen_text_free(&t);
+    ef_gen_text_destroy(&t);
 }
 
 static void test_q8_decimals(void **state)
@@ -413,7 +413,7 @@ static void test_q8_decimals(void **state)
         ef_gen_text t = { NULL, 0, 0 };
         assert_int_equal(ef_gen_append_q8(&t, cases[i].v), EF_OK);
         assert_string_equal(t.data, cases[i].s);
-        ef_gen_text_free(&t);
+        ef_gen_text_destroy(&t);
     }
     {
         char name[32];
@@ -442,10 +442,10 @@ static void test_categories_present(void **state)
                 ef_gen_case g2;
                 assert_int_equal(ef_gen_build(&c, k2, &g2), EF_OK);
                 assert_string_not_equal(g2.name, gc.name);
-                ef_gen_case_free(&g2);
+                ef_gen_case_destroy(&g2);
             }
         }
-        ef_gen_case_free(&gc);
+        ef_gen_case_destroy(&gc);
     }
     for (int i = 0; i < EF_GEN_NCATEGORIES; i++) {
         if (!seen[i])
@@ -475,7 +475,7 @@ static void test_issue_items(void **state)
                 wide_row = 1;
         if (s->ncontours >= 128 && gc.category == EF_GEN_CAT_OVERFLOW)
             overflow128 = 1;
-        ef_gen_case_free(&gc);
+        ef_gen_case_destroy(&gc);
     }
     assert_true(max_canvas);
     assert_true(at_limit);
@@ -493,7 +493,7 @@ static void check_expect(const ef_gen_case *gc, int n)
     ef_image img;
     ef_diag d;
     assert_int_equal(ef_ctx_create(&ctx, s->width, s->height, n), EF_OK);
-    assert_int_equal(ef_image_alloc(&img, s->width, s->height), EF_OK);
+    assert_int_equal(ef_image_create(&img, s->width, s->height), EF_OK);
     memset(img.px, 0, img.stride * (size_t)img.height);
     assert_int_equal(ef_scene_render(ctx, s, -1, &img), EF_OK);
     ef_ctx_diag(ctx, &d);
@@ -515,7 +515,7 @@ static void check_expect(const ef_gen_case *gc, int n)
     if (e->overflow == 0 && d.winding_overflows != 0)
         fail_msg("%s at N = %d: %llu winding overflows counted, expected none", gc->name, n,
                  (unsigned long long)d.winding_overflows);
-    ef_image_free(&img);
+    ef_image_destroy(&img);
     ef_ctx_destroy(ctx);
 }
 
@@ -536,7 +536,7 @@ static void test_expectations(void **state)
             check_expect(&gc, 32);
             checked++;
         }
-        ef_gen_case_free(&gc);
+        ef_gen_case_destroy(&gc);
     }
     print_message("expectations checked on %d directed cases x 3 sample counts\n", checked);
     assert_true(checked >= 30);

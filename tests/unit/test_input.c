@@ -120,8 +120,8 @@ static void assert_same_path(const char *d1, const char *d2)
     must(path(d2, &b, &e), &e);
     if (!same_points(&a, &b))
         fail_msg("'%s' and '%s' differ (%u vs %u points)", d1, d2, a.npoints, b.npoints);
-    ef_scene_free(&a);
-    ef_scene_free(&b);
+    ef_scene_destroy(&a);
+    ef_scene_destroy(&b);
 }
 
 /* ------------------------------------------------------- path grammar */
@@ -146,7 +146,7 @@ static void test_path_lines(void **state)
     assert_int_equal(p.ncontours, 1);
     assert_int_equal(p.start[0], 0);
     assert_int_equal(p.start[1], 3);
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
 }
 
 static void test_path_number_forms(void **state)
@@ -160,16 +160,16 @@ static void test_path_number_forms(void **state)
     assert_pt(&s, 0, 0, 0.5, 0.5);
     assert_pt(&s, 0, 1, 10, -2);
     assert_pt(&s, 0, 2, -3, -4.5);
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
     /* Rounding to Q16.8 once: 0.001953125 = 1/512 is a tie, up; 1/3 rounds down. */
     must(path("M 0.001953125 0.3333333 L 5 0 L 0 5", &s, &e), &e);
     assert_int_equal(pt(&s, 0, 0).x, 1);
     assert_int_equal(pt(&s, 0, 0).y, 85);
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
     must(path("M -0.001953125 -0.0019531 L 5 0 L 0 5", &s, &e), &e);
     assert_int_equal(pt(&s, 0, 0).x, 0); /* -0.5 ulp: ties toward +inf */
     assert_int_equal(pt(&s, 0, 0).y, 0);
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
 }
 
 static void test_path_implicit(void **state)
@@ -198,25 +198,25 @@ static void test_path_subpath_after_close(void **state)
     assert_pt(&s, 1, 0, 10, 10);
     assert_pt(&s, 1, 1, 100, 100);
     assert_pt(&s, 1, 2, 120, 100);
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
     /* Relative commands after z are relative to the subpath start. */
     must(path("M 10 10 l 10 0 l 0 10 z l 5 0 l 0 5", &s, &e), &e);
     assert_int_equal(s.ncontours, 2);
     assert_pt(&s, 1, 0, 10, 10);
     assert_pt(&s, 1, 1, 15, 10);
     assert_pt(&s, 1, 2, 15, 15);
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
     /* m after z: relative to the start point too. */
     assert_same_path("M 10 10 l 10 0 l 0 10 z m 1 1 l 5 0 l 0 5", "M 10 10 L 20 10 L 20 20 Z M 11 11 L 16 11 L 16 16");
     /* Unclosed subpaths are closed implicitly; degenerate ones vanish. */
     must(path("M 0 0 L 10 0 M 20 20 L 30 20 L 30 30 M 50 50", &s, &e), &e);
     assert_int_equal(s.ncontours, 1);
     assert_pt(&s, 0, 0, 20, 20);
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
     /* Repeated and closing points are not repeated in the contour. */
     must(path("M 0 0 L 0 0 L 10 0 L 10 0 L 10 10 L 0 0 Z", &s, &e), &e);
     assert_int_equal(contour_len(&s, 0), 3);
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
 }
 
 static void test_path_grammar_errors(void **state)
@@ -262,7 +262,7 @@ static void test_path_grammar_errors(void **state)
     /* Empty path data draws nothing and is no error. */
     must(path("  ", &s, &e), &e);
     assert_int_equal(s.nshapes, 0);
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
 }
 
 /* -------------------------------------------------------- curves */
@@ -326,11 +326,11 @@ static void test_quadratic_flattening(void **state)
         assert_true(fabs(px(p.x) - x) <= 1.0 / 512 + 1e-12);
         assert_true(fabs(px(p.y) - y) <= 1.0 / 512 + 1e-12);
     }
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
     /* A straight quadratic (L = 0) is one segment. */
     must(path("M 0 0 Q 5 5 10 10 L 0 10", &s, &e), &e);
     assert_int_equal(contour_len(&s, 0), 3);
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
 }
 
 static void test_cubic_flattening(void **state)
@@ -350,12 +350,12 @@ static void test_cubic_flattening(void **state)
         double y = u * u * u * 80 + 3 * u * u * t * 10 + 3 * u * t * t * 10 + t * t * t * 80;
         assert_true(dist_to_contour(&s, 0, x, y) <= 1.0 / 16 + 1.0 / 256);
     }
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
     /* A huge curve stops at 256 segments. */
     must(svg("<svg width='100' height='100'><path d='M -30000 0 C 30000 30000 -30000 30000 30000 0'/></svg>", &s, &e),
          &e);
     assert_int_equal(contour_len(&s, 0), 257);
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
 }
 
 /* ----------------------------------------------------------- arcs */
@@ -405,7 +405,7 @@ static void test_arc_quarter(void **state)
         double t = EF_TEST_PI + k * (EF_TEST_PI / 2) / 100;
         assert_true(dist_to_contour(&s, 0, 10 + 10 * cos(t), 10 + 10 * sin(t)) <= 1.0 / 16 + 1.0 / 256);
     }
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
 }
 
 static void test_arc_flags(void **state)
@@ -435,7 +435,7 @@ static void test_arc_flags(void **state)
             if (fabs(b[k] - cases[i].box[k]) > 1.0 / 16 + 0.005)
                 fail_msg("%s: bbox[%d] = %g, expected %g", cases[i].d, k, b[k], cases[i].box[k]);
         assert_on_circle(&s, centres[i][0], centres[i][1], 10, 0, s.npoints);
-        ef_scene_free(&s);
+        ef_scene_destroy(&s);
     }
 }
 
@@ -450,7 +450,7 @@ static void test_arc_special_cases(void **state)
     assert_on_circle(&s, 5, 0, 5, 0, s.npoints);
     bbox(&s, b);
     assert_true(fabs(b[1] + 5) < 0.01 && fabs(b[3]) < 1e-9); /* positive sweep from 180 deg: above */
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
     /* Negative radii lose their sign. */
     assert_same_path("M 0 10 A -10 -10 0 0 1 10 0", "M 0 10 A 10 10 0 0 1 10 0");
     /* A zero radius is a straight line. */
@@ -462,7 +462,7 @@ static void test_arc_special_cases(void **state)
     must(path("M 50 0 A 10 5 90 0 1 50 20 Z", &s, &e), &e);
     bbox(&s, b);
     assert_true(fabs(b[0] - 50) < 1e-9 && fabs(b[2] - 55) < 1.0 / 16 + 0.005);
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
     /* Relative arc end point; compact flags "01" followed by the end point. */
     assert_same_path("M 0 10 a10,10 0 0110-10", "M 0 10 A 10 10 0 0 1 10 0");
 }
@@ -498,13 +498,13 @@ static void test_shapes(void **state)
     assert_pt(&s, 2, 0, 70, 50);
     for (uint32_t i = s.start[2]; i < s.start[3]; i++)
         assert_true(fabs(hypot(px(s.points[i].x) - 50, px(s.points[i].y) - 50) - 20) < 0.005);
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
     must(
         svg("<svg width='100' height='100'><rect x='10' y='10' width='20' height='10' rx='50' ry='50'/></svg>", &s, &e),
         &e);
     bbox(&s, b); /* rx, ry clamped to half the size: an ellipse filling the box */
     assert_true(fabs(b[0] - 10) < 1e-9 && fabs(b[1] - 10) < 1e-9 && fabs(b[2] - 30) < 1e-9 && fabs(b[3] - 20) < 1e-9);
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
     ef_status st = svg("<svg width='100' height='100'><rect width='-1' height='10'/></svg>", &s, &e);
     expect_error(st, &e, EF_ERR_RANGE, 1, 31, &s);
 }
@@ -541,7 +541,7 @@ static void test_transforms(void **state)
     assert_pt(&s, 4, 2, 5, 8);
     assert_pt(&s, 5, 0, 51, 52); /* use: outer transform, then x/y */
     assert_pt(&s, 5, 1, 52, 52);
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
 
     static const char *bad[] = { "scale(1,2,3)", "foo(1)", "translate(1", "rotate(1 2)", "skewX(90)", "translate(1,)" };
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
@@ -566,50 +566,50 @@ static void test_viewbox_and_fit(void **state)
     assert_int_equal(s.width, 100);
     assert_int_equal(s.height, 50);
     assert_pt(&s, 0, 2, 100, 50);
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
     /* Fit into 200 x 200: scale 2, centred vertically. */
     must(svg_opts(doc, 200, 200, NULL, &s, &e), &e);
     assert_int_equal(s.width, 200);
     assert_int_equal(s.height, 200);
     assert_pt(&s, 0, 0, 0, 50);
     assert_pt(&s, 0, 2, 200, 150);
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
     /* width/height with a viewBox: default xMidYMid meet. */
     must(svg("<svg width='300' height='100' viewBox='0 0 100 100'><path d='M0 0 L 100 0 L 100 100'/></svg>", &s, &e),
          &e);
     assert_int_equal(s.width, 300);
     assert_pt(&s, 0, 0, 100, 0);
     assert_pt(&s, 0, 2, 200, 100);
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
     must(svg("<svg width='300' height='100' viewBox='0 0 100 100' preserveAspectRatio='xMaxYMin'>"
              "<path d='M0 0 L 100 0 L 100 100'/></svg>",
              &s, &e),
          &e);
     assert_pt(&s, 0, 0, 200, 0);
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
     must(svg("<svg width='300' height='100' viewBox='0 0 100 100' preserveAspectRatio='none'>"
              "<path d='M0 0 L 100 0 L 100 100'/></svg>",
              &s, &e),
          &e);
     assert_pt(&s, 0, 1, 300, 0);
     assert_pt(&s, 0, 2, 300, 100);
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
     must(svg("<svg width='300' height='100' viewBox='0 0 100 100' preserveAspectRatio='xMinYMid slice'>"
              "<path d='M0 0 L 100 0 L 100 100'/></svg>",
              &s, &e),
          &e);
     assert_pt(&s, 0, 0, 0, -100);
     assert_pt(&s, 0, 2, 300, 200);
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
     /* Canvas sizes round up; units convert at 96 px per inch. */
     must(svg("<svg width='10.2' height='1in'/>", &s, &e), &e);
     assert_int_equal(s.width, 11);
     assert_int_equal(s.height, 96);
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
     /* One size given: the other follows the viewBox's aspect ratio. */
     must(svg("<svg width='50' viewBox='0 0 100 40'/>", &s, &e), &e);
     assert_int_equal(s.height, 20);
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
     ef_status st = svg("<svg width='20000' height='10'/>", &s, &e);
     expect_error(st, &e, EF_ERR_LIMIT, 1, 1, &s);
     st = svg("<svg viewBox='0 0 0 10'/>", &s, &e);
@@ -620,7 +620,7 @@ static void test_viewbox_and_fit(void **state)
     must(svg("<svg viewBox='0 0 200 100'><rect x='10%' y='10%' width='50%' height='50%'/></svg>", &s, &e), &e);
     assert_pt(&s, 0, 0, 20, 10);
     assert_pt(&s, 0, 2, 120, 60);
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
 }
 
 /* -------------------------------------------------- colours, properties */
@@ -637,7 +637,7 @@ static ef_rgba8 color_of(const char *attrs)
         c = s.shapes[0].color;
     else
         assert_int_equal(s.nshapes, 0);
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
     return c;
 }
 
@@ -721,7 +721,7 @@ static void test_inheritance(void **state)
     assert_int_equal(nt.count, 1);
     assert_int_equal(s.notes, 1);
     assert_non_null(strstr(nt.last, "stroke ignored"));
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
 }
 
 static void test_gradient_and_notes(void **state)
@@ -748,7 +748,7 @@ static void test_gradient_and_notes(void **state)
     assert_int_equal(s.shapes[0].color.a, 191);
     assert_int_equal(s.shapes[1].color.r, 128); /* stops through href */
     assert_int_equal(nt.count, 4);              /* gradient, text, image, clip */
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
 }
 
 /* ---------------------------------------------------- errors, hostile */
@@ -813,7 +813,7 @@ static void test_hostile(void **state)
              "'http://www.w3.org/TR/2001/REC-SVG-20010904/DTD/svg10.dtd'>\n<svg width='1' height='1'/>",
              &s, &e),
          &e);
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
     /* Deep nesting. */
     char *deep = malloc(300 * 7 + 64);
     assert_non_null(deep);
@@ -883,7 +883,7 @@ static void test_scene_basic(void **state)
     assert_int_equal(p.ncontours, 1);
     assert_int_equal(p.start[0], 8);
     assert_int_equal(p.start[1], 11);
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
 }
 
 static void test_scene_tokens(void **state)
@@ -905,7 +905,7 @@ static void test_scene_tokens(void **state)
     assert_pt(&s, 0, 1, 0.5, 0.01171875); /* 0.01 rounds to 3/256 */
     assert_pt(&s, 0, 2, 25, 0);
     assert_pt(&s, 0, 3, 1, 5);
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
 }
 
 static void test_scene_errors(void **state)
@@ -973,13 +973,13 @@ static void test_scene_fit(void **state)
     assert_pt(&s, 0, 1, 200, 50);
     assert_pt(&s, 0, 2, 200, 150);
     assert_pt(&s, 0, 3, 101, 100);
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
     /* The scene's own size: the identity. */
     must(txt_opts("scene 64 32\nshape nonzero 0 0 0 255\ncontour 0.00390625 1 63.5 2 7 31.99609375\n", 64, 32, &s, &e),
          &e);
     assert_pt(&s, 0, 0, 0.00390625, 1);
     assert_pt(&s, 0, 2, 7, 31.99609375);
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
 }
 
 /* --------------------------------------------------- builder, files */
@@ -988,7 +988,7 @@ static void test_scene_builder(void **state)
 {
     (void)state;
     ef_scene s;
-    ef_scene_init(&s, 8, 4);
+    ef_scene_create(&s, 8, 4);
     ef_point pts[3] = { { 0, 0 }, { 256, 0 }, { 256, 256 } };
     assert_int_equal(ef_scene_add_contour(&s, pts, 3), EF_ERR_ARG); /* no shape yet */
     ef_rgba8 c = { 1, 2, 3, 4 };
@@ -1006,7 +1006,7 @@ static void test_scene_builder(void **state)
     assert_int_equal(s.npoints, 5);
     p = ef_scene_polygon(&s, 7);
     assert_null(p.pts);
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
     assert_int_equal(s.nshapes, 0);
 }
 
@@ -1028,14 +1028,14 @@ static void test_robustness(void **state)
     ef_point *pts = calloc(EF_MAX_EDGES_PER_SHAPE, sizeof *pts);
     assert_non_null(pts);
     ef_rgba8 c = { 1, 2, 3, 255 };
-    ef_scene_init(&s, 4, 4);
+    ef_scene_create(&s, 4, 4);
     assert_int_equal(ef_scene_begin_shape(&s, EF_RULE_NONZERO, c), EF_OK);
     assert_int_equal(ef_scene_add_contour(&s, pts, EF_MAX_EDGES_PER_SHAPE - 3), EF_OK);
     assert_int_equal(ef_scene_add_contour(&s, pts, 3), EF_OK);
     assert_int_equal(ef_scene_add_contour(&s, pts, 1), EF_ERR_LIMIT);
     assert_int_equal(ef_scene_begin_shape(&s, EF_RULE_NONZERO, c), EF_OK);
     assert_int_equal(ef_scene_add_contour(&s, pts, 3), EF_OK); /* the next shape starts afresh */
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
     free(pts);
 
     /* Quoted input: control characters (NUL included), invalid UTF-8 and a
@@ -1059,7 +1059,7 @@ static void test_robustness(void **state)
     assert_non_null(strstr(e.msg, "'\xc2\xbd'"));
     /* A BOM at the very start of either format is accepted. */
     must(txt("\xef\xbb\xbfscene 1 1\n", &s, &e), &e);
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
 }
 
 static void test_load_file(void **state)
@@ -1072,7 +1072,7 @@ static void test_load_file(void **state)
     assert_int_equal(ef_scene_load_file("x.png", NULL, &s, &e), EF_ERR_UNSUPPORTED);
     snprintf(path, sizeof path, "%s/lion.svg", svg_dir());
     must(ef_scene_load_file(path, NULL, &s, &e), &e);
-    ef_scene_free(&s);
+    ef_scene_destroy(&s);
 }
 
 static void test_shared_svgs(void **state)
@@ -1134,7 +1134,7 @@ static void test_shared_svgs(void **state)
                 fail_msg("%s: vertex (%g, %g) outside the %dx%d canvas", files[i].file, px(p.x), px(p.y), s.width,
                          s.height);
         }
-        ef_scene_free(&s);
+        ef_scene_destroy(&s);
         /* The same file fitted into 640 x 480 stays inside too. */
         ef_load_opts fo = { 640, 480, NULL, NULL };
         must(ef_scene_load_file(path, &fo, &s, &e), &e);
@@ -1143,7 +1143,7 @@ static void test_shared_svgs(void **state)
             ef_point p = s.points[k];
             assert_true(p.x >= -4 * 256 && p.y >= -4 * 256 && p.x <= 644 * 256 && p.y <= 484 * 256);
         }
-        ef_scene_free(&s);
+        ef_scene_destroy(&s);
     }
     if (found != 24)
         print_message("SVG folder %s (EF_SVG): %d of the 24 files found\n", svg_dir(), found);

@@ -271,7 +271,7 @@ static void test_composite(void **state)
     ef_ctx *ctx;
     ef_image img;
     assert_int_equal(ef_ctx_create(&ctx, 4, 2, 8), EF_OK);
-    assert_int_equal(ef_image_alloc(&img, 4, 2), EF_OK);
+    assert_int_equal(ef_image_create(&img, 4, 2), EF_OK);
     /* Opaque red over everything, then half-transparent blue on pixel 1 with
      * half coverage (left edge at x = 1.5 -> 4 of 8 samples). */
     ef_point full[4] = { { 0, 0 }, { PX(4), 0 }, { PX(4), PX(2) }, { 0, PX(2) } };
@@ -290,7 +290,7 @@ static void test_composite(void **state)
     assert_int_equal(img.px[0], 255);
     assert_int_equal(img.px[8], 255);
     assert_int_equal(img.px[8 + 2], 0);
-    ef_image_free(&img);
+    ef_image_destroy(&img);
     ef_ctx_destroy(ctx);
 }
 

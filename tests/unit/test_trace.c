@@ -96,7 +96,7 @@ static void render(const ef_scene *sc, int samples, int rule, stats *st, frame *
     ef_ctx *ctx;
     assert_int_equal(ef_ctx_create(&ctx, sc->width, sc->height, samples), EF_OK);
     ef_image img;
-    assert_int_equal(ef_image_alloc(&img, sc->width, sc->height), EF_OK);
+    assert_int_equal(ef_image_create(&img, sc->width, sc->height), EF_OK);
     if (st) {
         memset(st, 0, sizeof *st);
         st->ordered = st->pix_ok = 1;
@@ -168,7 +168,7 @@ static void shared_svgs(void **state)
         ef_error err;
         assert_int_equal(ef_scene_load_file(path, &opts, &sc, &err), EF_OK);
         check_scene(e->d_name, &sc);
-        ef_scene_free(&sc);
+        ef_scene_destroy(&sc);
         n++;
     }
     closedir(d);
@@ -190,7 +190,7 @@ static void edge_cases(void **state)
 {
     (void)state;
     ef_scene sc;
-    ef_scene_init(&sc, 40, 24);
+    ef_scene_create(&sc, 40, 24);
     const ef_point wide[4] = { { PX(-30), PX(-5) }, { PX(70.3), PX(2.2) }, { PX(65), PX(40) }, { PX(-12), PX(20.7) } };
     add(&sc, EF_RULE_NONZERO, (ef_rgba8){ 200, 30, 40, 255 }, wide, 4);
     const ef_point tri[3] = { { PX(3.1), PX(3.3) }, { PX(30.9), PX(8.45) }, { PX(7), PX(21.2) } };
@@ -205,7 +205,7 @@ static void edge_cases(void **state)
     const ef_point right[4] = { { PX(38.5), PX(1) }, { PX(40), PX(1) }, { PX(40), PX(23) }, { PX(38.5), PX(23) } };
     add(&sc, EF_RULE_EVENODD, (ef_rgba8){ 90, 90, 90, 200 }, right, 4);
     check_scene("edge cases", &sc);
-    ef_scene_free(&sc);
+    ef_scene_destroy(&sc);
 }
 
 /* Off means off: a context with tracing disabled again emits nothing. */
@@ -221,14 +221,14 @@ static void disable(void **state)
     assert_int_equal(ef_trace_enable(ctx, 0, NULL, NULL), EF_OK);
     assert_int_equal(ef_trace_frame_begin(ctx), EF_ERR_ARG);
     ef_image img;
-    assert_int_equal(ef_image_alloc(&img, 8, 8), EF_OK);
+    assert_int_equal(ef_image_create(&img, 8, 8), EF_OK);
     const ef_point p[3] = { { 0, 0 }, { PX(8), 0 }, { 0, PX(8) } };
     const uint32_t start[2] = { 0, 3 };
     ef_polygon poly = { p, start, 1 };
     assert_int_equal(ef_fill(ctx, &img, &poly, EF_RULE_NONZERO, (ef_rgba8){ 1, 2, 3, 255 }), EF_OK);
     for (int i = 0; i < EF_IF_COUNT; i++)
         assert_int_equal(st.n[i], 0);
-    ef_image_free(&img);
+    ef_image_destroy(&img);
     ef_ctx_destroy(ctx);
 }
 

@@ -81,8 +81,8 @@ static void check_scene(const char *name, const ef_scene *sc)
             assert_int_equal(ef_ctx_create(&b, sc->width, sc->height, samples), EF_OK);
             assert_int_equal(ef_ctx_set_filter(a, settings[k].f, settings[k].s), EF_OK);
             assert_int_equal(ef_ctx_set_filter(b, settings[k].f, settings[k].s), EF_OK);
-            assert_int_equal(ef_image_alloc(&ia, sc->width, sc->height), EF_OK);
-            assert_int_equal(ef_image_alloc(&ib, sc->width, sc->height), EF_OK);
+            assert_int_equal(ef_image_create(&ia, sc->width, sc->height), EF_OK);
+            assert_int_equal(ef_image_create(&ib, sc->width, sc->height), EF_OK);
             assert_int_equal(ef_trace_enable(b, EF_IF_ALL, sink, &st), EF_OK);
             assert_int_equal(ef_trace_frame_begin(b), EF_OK);
             assert_int_equal(ef_scene_render(a, sc, -1, &ia), EF_OK);
@@ -106,8 +106,8 @@ static void check_scene(const char *name, const ef_scene *sc)
             assert_int_equal(st.n[EF_IF_PIX], covered);
             assert_true(cycles == st.max_cycle + 1);
             assert_int_equal(st.n[EF_IF_SEG], sc->nshapes + db.edges_in);
-            ef_image_free(&ia);
-            ef_image_free(&ib);
+            ef_image_destroy(&ia);
+            ef_image_destroy(&ib);
             ef_ctx_destroy(a);
             ef_ctx_destroy(b);
         }
@@ -135,7 +135,7 @@ static void shared_svgs(void **state)
         ef_error err;
         assert_int_equal(ef_scene_load_file(path, &opts, &sc, &err), EF_OK);
         check_scene(e->d_name, &sc);
-        ef_scene_free(&sc);
+        ef_scene_destroy(&sc);
         n++;
     }
     closedir(d);
@@ -150,7 +150,7 @@ static void edge_cases(void **state)
 {
     (void)state;
     ef_scene sc;
-    ef_scene_init(&sc, 40, 24);
+    ef_scene_create(&sc, 40, 24);
     const ef_point all[4] = { { 0, 0 }, { PX(40), 0 }, { PX(40), PX(24) }, { 0, PX(24) } };
     assert_int_equal(ef_scene_begin_shape(&sc, EF_RULE_NONZERO, (ef_rgba8){ 20, 40, 60, 255 }), EF_OK);
     assert_int_equal(ef_scene_add_contour(&sc, all, 4), EF_OK);
@@ -165,7 +165,7 @@ static void edge_cases(void **state)
     assert_int_equal(ef_scene_begin_shape(&sc, EF_RULE_EVENODD, (ef_rgba8){ 0, 0, 255, 255 }), EF_OK);
     assert_int_equal(ef_scene_add_contour(&sc, out, 3), EF_OK);
     check_scene("edge cases", &sc);
-    ef_scene_free(&sc);
+    ef_scene_destroy(&sc);
 }
 
 int main(void)

@@ -202,7 +202,7 @@ static void test_collect_refuses(void **state)
     ef_txn t;
     (void)state;
 
-    ef_vec_collect_init(&c, EF_IF_ALL);
+    ef_vec_collect_create(&c, EF_IF_ALL);
     t = txn(EF_IF_PLOT, 5, (const int64_t[]){ 0, 1, 2, 3, 0 });
     assert_int_equal(ef_vec_collect_add(&c, &t), EF_OK);
     t.cycle = 5; /* second transfer in one cycle */
@@ -211,23 +211,23 @@ static void test_collect_refuses(void **state)
     t.cycle = 9; /* dropped after the first failure */
     assert_int_equal(ef_vec_collect_add(&c, &t), EF_ERR_ARG);
     assert_int_equal(ef_vec_collect_count(&c, EF_IF_PLOT), 1);
-    ef_vec_collect_free(&c);
+    ef_vec_collect_destroy(&c);
 
-    ef_vec_collect_init(&c, EF_IF_ALL);
+    ef_vec_collect_create(&c, EF_IF_ALL);
     t.cycle = UINT64_C(1) << 48;
     assert_int_equal(ef_vec_collect_add(&c, &t), EF_ERR_ARG);
-    ef_vec_collect_free(&c);
+    ef_vec_collect_destroy(&c);
 
-    ef_vec_collect_init(&c, EF_IF_ALL);
+    ef_vec_collect_create(&c, EF_IF_ALL);
     t.cycle = 1;
     t.w[0] |= UINT64_C(1) << 36; /* above plot's 36 bits */
     assert_int_equal(ef_vec_collect_add(&c, &t), EF_ERR_ARG);
-    ef_vec_collect_free(&c);
+    ef_vec_collect_destroy(&c);
 
-    ef_vec_collect_init(&c, 1u << EF_IF_PIX); /* plot not enabled */
+    ef_vec_collect_create(&c, 1u << EF_IF_PIX); /* plot not enabled */
     t = txn(EF_IF_PLOT, 5, (const int64_t[]){ 0, 1, 2, 3, 0 });
     assert_int_equal(ef_vec_collect_add(&c, &t), EF_ERR_ARG);
-    ef_vec_collect_free(&c);
+    ef_vec_collect_destroy(&c);
 }
 
 static void test_merge_order(void **state)
@@ -254,7 +254,7 @@ static void test_merge_order(void **state)
     size_t k = 0;
     (void)state;
 
-    ef_vec_collect_init(&c, EF_IF_ALL);
+    ef_vec_collect_create(&c, EF_IF_ALL);
     for (size_t i = 0; i < sizeof in / sizeof in[0]; i++) {
         t = txn(in[i].iface, in[i].cycle, zero);
         t.w[0] = i; /* tag: which arrival */
@@ -277,7 +277,7 @@ static void test_merge_order(void **state)
     assert_true(ef_vec_collect_total(&c, EF_IF_ALL) == 9);
     assert_true(ef_vec_collect_end(&c, EF_IF_ALL) == 7);
     assert_true(ef_vec_collect_end(&c, 1u << EF_IF_PLOT) == 5);
-    ef_vec_collect_free(&c);
+    ef_vec_collect_destroy(&c);
 }
 
 /* ------------------------------------------------------------ files */
@@ -300,7 +300,7 @@ static void small_run(run *r, uint32_t mask)
     r->info.seed = 42;
     r->info.cycles = 4;
     r->info.mask = mask;
-    ef_vec_collect_init(&r->c, mask);
+    ef_vec_collect_create(&r->c, mask);
     for (int i = 0; i < 3; i++) {
         ef_txn t = txn(EF_IF_ET_RD, cyc[i], rd[i]);
         assert_int_equal(ef_vec_collect_add(&r->c, &t), EF_OK);
@@ -345,7 +345,7 @@ static void test_vcd_small(void **state)
                              "#30\n0!\n1\"\nb101 %\n#35\n1!\n"
                              "#40\n0!\n0\"\n"); /* the end: 10 * cycles */
     free(got);
-    ef_vec_collect_free(&r.c);
+    ef_vec_collect_destroy(&r.c);
 }
 
 static void write_hex(ef_vec_out *o, const void *arg)
@@ -373,7 +373,7 @@ static void test_hex_file(void **state)
     free(got);
     assert_string_equal(ef_vec_hex_name(EF_IF_CMD, name, sizeof name), "cmd.stim.hex");
     assert_string_equal(ef_vec_hex_name(EF_IF_PIX, name, sizeof name), "pix.expected.hex");
-    ef_vec_collect_free(&r.c);
+    ef_vec_collect_destroy(&r.c);
 }
 
 static void write_bin(ef_vec_out *o, const void *arg)
@@ -414,7 +414,7 @@ static void test_bin(void **state)
     assert_true(rec[0] == EF_IF_ET_RD && rec[1] == 5 && le(rec + 2, 8) == 3);
     assert_true(le(rec + 10, 5) == (UINT64_C(5) << 22 | 3));
     free(b);
-    ef_vec_collect_free(&r.c);
+    ef_vec_collect_destroy(&r.c);
 }
 
 typedef struct mrun {
@@ -469,7 +469,7 @@ static void test_manifest(void **state)
                              "  ]\n"
                              "}\n");
     free(got);
-    ef_vec_collect_free(&m.r.c);
+    ef_vec_collect_destroy(&m.r.c);
 }
 
 /* The out's hash and byte count are those of the bytes produced. */
@@ -489,7 +489,7 @@ static void test_out_hash(void **state)
     assert_string_equal(h1, h2);
     assert_true(o.crc == ef_vec_crc32(0, got, n));
     free(got);
-    ef_vec_collect_free(&r.c);
+    ef_vec_collect_destroy(&r.c);
 }
 
 /* The sink's bytes, SHA-256 and CRC are those of what reached the file, over

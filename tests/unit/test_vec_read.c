@@ -71,7 +71,7 @@ static void test_pix_word_fields(void **state)
     assert_int_equal(ef_txn_field(&t, 1), 2);    /* x */
     assert_int_equal(ef_txn_field(&t, 2), 0x80); /* alpha */
     assert_int_equal(ef_txn_field(&t, 3), 0x11223344u);
-    ef_vec_dump_free(&d);
+    ef_vec_dump_destroy(&d);
 }
 
 static void test_span_word_and_header(void **state)
@@ -99,7 +99,7 @@ static void test_span_word_and_header(void **state)
     assert_int_equal(ef_txn_field(&t, 1), 12);
     assert_int_equal(ef_txn_field(&t, 2), 5);
     assert_int_equal(ef_txn_field(&t, 3), 0xff);
-    ef_vec_dump_free(&d);
+    ef_vec_dump_destroy(&d);
 }
 
 /* What `$readmemh` accepts reads to the same transaction. */
@@ -124,7 +124,7 @@ static void test_readmemh_leniency(void **state)
         ef_vec_dump_txn(&d, EF_IF_PIX, 0, &t);
         assert_int_equal(t.cycle, 5);
         assert_int_equal(ef_txn_field(&t, 3), 0x11223344u);
-        ef_vec_dump_free(&d);
+        ef_vec_dump_destroy(&d);
     }
 }
 
@@ -155,12 +155,12 @@ static void test_hex_refusals(void **state)
     ef_vec_dump d;
     ef_vec_read_error e;
     assert_int_equal(hex("// count 7 pixels\n0\n", EF_IF_PIX, -1, &d, &e), EF_OK);
-    ef_vec_dump_free(&d);
+    ef_vec_dump_destroy(&d);
     /* A dump of nothing that says so is fine. */
     assert_int_equal(hex("// no transactions\n", EF_IF_PIX, -1, &d, &e), EF_OK);
     assert_int_equal(d.mask, 1u << EF_IF_PIX);
     assert_int_equal(d.seq[EF_IF_PIX].n, 0);
-    ef_vec_dump_free(&d);
+    ef_vec_dump_destroy(&d);
 }
 
 static void put_le(uint8_t *p, unsigned n, uint64_t v)
@@ -228,7 +228,7 @@ static void test_binary(void **state)
     assert_int_equal(t.cycle, 9);
     assert_int_equal(ef_txn_field(&t, 0), 3);
     assert_int_equal(ef_txn_field(&t, 3), 0x11223345u);
-    ef_vec_dump_free(&d);
+    ef_vec_dump_destroy(&d);
 
     memcpy(c, b, n);
     c[3] = 'X';
@@ -286,7 +286,7 @@ static void test_manifest(void **state)
     assert_int_equal(m.files[2].index, 2);
     assert_int_equal(m.files[1].iface, -1);
     assert_string_equal(m.files[2].name, "caf\xc3\xa9\xf0\x9f\x98\x80.hex");
-    ef_vec_manifest_free(&m);
+    ef_vec_manifest_destroy(&m);
 
     /* line 0: a value refused after parsing, named by its key (FILE: KEY: ...);
      * else a syntax error at LINE:COL. */
@@ -348,7 +348,7 @@ static void test_manifest(void **state)
                               &m, &e),
                      EF_OK);
     assert_true(m.files[0].count == UINT64_MAX && m.files[1].count == UINT64_C(9223372036854775808));
-    ef_vec_manifest_free(&m);
+    ef_vec_manifest_destroy(&m);
     char deep[200];
     memset(deep, '[', 100);
     snprintf(deep + 100, sizeof deep - 100, "%s", "");
@@ -383,8 +383,8 @@ static void test_streaming(void **state)
     assert_int_equal(a.seq[EF_IF_PIX].n, b.seq[EF_IF_PIX].n);
     assert_memory_equal(a.seq[EF_IF_PIX].pay, b.seq[EF_IF_PIX].pay, a.seq[EF_IF_PIX].n * 16);
     assert_memory_equal(a.seq[EF_IF_PIX].loc, b.seq[EF_IF_PIX].loc, a.seq[EF_IF_PIX].n * 8);
-    ef_vec_dump_free(&a);
-    ef_vec_dump_free(&b);
+    ef_vec_dump_destroy(&a);
+    ef_vec_dump_destroy(&b);
     free(text);
 }
 

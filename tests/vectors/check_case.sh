@@ -141,7 +141,7 @@ while read -r name fmt iface role count bytes sha; do
         ;;
     vcd)
         [ "$(tac "$f" | grep -m 1 '^#')" = "#$((10 * cycles))" ] || fail "vcd: last timestamp is not #$((10 * cycles))"
-        grep -qx '\$timescale 1ns \$end' "$f" || fail "vcd: timescale"
+        grep -qx '[$]timescale 1ns [$]end' "$f" || fail "vcd: timescale"
         if [ "${ROUNDTRIP:-1}" = 1 ]; then
             vcd2fst "$f" "$dir.fst" >/dev/null 2>&1 && fst2vcd "$dir.fst" >"$dir.rt.vcd" 2>/dev/null ||
                 fail "vcd2fst/fst2vcd failed"

@@ -30,6 +30,7 @@
 #        EF_VEC_JOBS (default: the number of CPUs), EF_VEC_FULL, TMPDIR (default
 #        /dev/shm if writable, else /tmp))
 # Ends with "N passed, M failed"; exit status 0 only if nothing failed.
+# shellcheck disable=SC2012 # `ls -A` of folders this test wrote, whose names are plain
 set -u
 export LC_ALL=C
 
@@ -210,6 +211,7 @@ mkdir -p vs vf
 # Without --force a case directory written twice (overlapping shards) fails with exit 4.
 # Each run's exit status is kept: a case the fit pushes out of range (exit 3)
 # must fail alike in both.
+# shellcheck disable=SC2016 # sh -c's own $0, $1, $2
 xargs -P "$JOBS" -L 1 sh -c '"$0" vectors "$1" -o "$2" --samples 8 --size 48x36 --formats hex,bin >/dev/null 2>&1; echo "$2 $?" >>shard.rc' "$EF" <shard.cmds
 rcs() { grep "^$1/" shard.rc | sed "s|^$1/||" | sort; }
 nf=$(find vf -mindepth 1 -maxdepth 1 -type d | wc -l)
@@ -240,7 +242,7 @@ fi
 run vectors "$scene" -o sub2 --samples 16 --formats bin,vcd --interfaces pix,cmd
 run vectors "$scene" -o sub3 --samples 16 --formats=vcd,bin --interfaces=cmd,pix
 ls2=$(ls -A sub2 | tr '\n' ' ')
-scopes=$(sed -n 's/^\$scope module \([a-z_]*\) \$end$/\1/p' sub2/vectors.vcd | tr '\n' ' ')
+scopes=$(sed -n 's/^[$]scope module \([a-z_]*\) [$]end$/\1/p' sub2/vectors.vcd | tr '\n' ' ')
 if [ $rc = 0 ] && [ "$ls2" = "frame.png manifest.json vectors.bin vectors.vcd " ] && [ "$scopes" = "edgeflag cmd pix " ] &&
    "$BINCHK" sub2/vectors.bin | grep -q ' mask=65 ' && diff -r sub2 sub3 >/dev/null &&
    cmp -s <(grep -v '^//' full/cmd.stim.hex; grep -v '^//' full/pix.expected.hex) <("$BINCHK" --hex 0 sub2/vectors.bin; "$BINCHK" --hex 6 sub2/vectors.bin); then
@@ -492,7 +494,8 @@ if "$VCDCMP" "$v" "$v" >/dev/null; then ok "vcd_compare: a VCD equals itself"; e
 awk 'done || !/^b[01]*1 / || !defs { print; if (/enddefinitions/) defs = 1; next } { sub(/1 /, "0 "); print; done = 1 }' "$v" >flip.vcd
 awk '!done && /^b[01]+ / && defs { done = 1; next } /enddefinitions/ { defs = 1 } 1' "$v" >drop.vcd
 awk '!done && /^#[0-9]+$/ && $0 != "#0" { print "#" substr($0, 2) + 1; done = 1; next } 1' "$v" >shift.vcd
-sed '0,/ valid \$end/s// valid2 $end/' "$v" >rename.vcd
+# shellcheck disable=SC2016 # a VCD's $end, not a variable
+sed '0,/ valid [$]end/s// valid2 $end/' "$v" >rename.vcd
 head -c $(($(wc -c <"$v") / 2)) "$v" >trunc.vcd
 head -c 4000 /dev/urandom >garbage.vcd
 for c in flip drop shift rename; do
@@ -510,7 +513,7 @@ for c in trunc garbage; do
 done
 cp cv/vectors.bin flip.bin
 byte=$(od -An -tu1 -j 200 -N 1 cv/vectors.bin | tr -d ' ')
-printf "\\$(printf '%03o' $((byte ^ 1)))" | dd of=flip.bin bs=1 seek=200 conv=notrunc 2>/dev/null
+printf '%b' "\\0$(printf '%03o' $((byte ^ 1)))" | dd of=flip.bin bs=1 seek=200 conv=notrunc 2>/dev/null
 if ! cmp -s cv/vectors.bin flip.bin && ! "$BINCHK" flip.bin >/dev/null 2>cmp.out; then
     ok "vec_bin_check detects one flipped byte: $(head -c 100 cmp.out)"
 else

@@ -10,7 +10,7 @@
 
 /* WITH_PNG=0 (Makefile) builds without libpng, e.g. for 32-bit bit-exact
  * checks where the i386 -dev package is unavailable: PNG output is then
- * refused up front (ef_cli_format_available) rather than failing late. */
+ * refused up front (ef_util_format_available) rather than failing late. */
 #ifndef EF_NO_PNG
 #include <png.h>
 #include <setjmp.h>
@@ -28,21 +28,21 @@ static int ext_is(const char *ext, const char *want)
     return *ext == '\0' && *want == '\0';
 }
 
-ef_cli_format ef_cli_format_from_path(const char *path)
+ef_util_format ef_util_format_from_path(const char *path)
 {
     const char *slash = strrchr(path, '/');
     const char *base = slash ? slash + 1 : path;
     const char *dot = strrchr(base, '.');
 
     if (!dot || dot == base) /* no extension, or a dot file like ".png" */
-        return EF_CLI_FMT_UNKNOWN;
+        return EF_UTIL_FMT_UNKNOWN;
     if (ext_is(dot + 1, "png"))
-        return EF_CLI_FMT_PNG;
+        return EF_UTIL_FMT_PNG;
     if (ext_is(dot + 1, "pam"))
-        return EF_CLI_FMT_PAM;
+        return EF_UTIL_FMT_PAM;
     if (ext_is(dot + 1, "pgm"))
-        return EF_CLI_FMT_PGM;
-    return EF_CLI_FMT_UNKNOWN;
+        return EF_UTIL_FMT_PGM;
+    return EF_UTIL_FMT_UNKNOWN;
 }
 
 static void set_err(char *err, size_t size, const char *msg)
@@ -101,13 +101,13 @@ static int write_pgm(FILE *fp, const ef_image *img, char *err, size_t errsize)
     return rc;
 }
 
-int ef_cli_format_available(ef_cli_format fmt)
+int ef_util_format_available(ef_util_format fmt)
 {
 #ifdef EF_NO_PNG
-    if (fmt == EF_CLI_FMT_PNG)
+    if (fmt == EF_UTIL_FMT_PNG)
         return 0;
 #endif
-    return fmt != EF_CLI_FMT_UNKNOWN;
+    return fmt != EF_UTIL_FMT_UNKNOWN;
 }
 
 /* ---------------------------------------------------------------- PNG */
@@ -181,9 +181,9 @@ static int write_png(FILE *fp, const ef_image *img, char *err, size_t errsize)
         for (int32_t x = 0; x < img->width; x++) {
             const uint8_t *p = src + 4 * (size_t)x;
             uint8_t *q = row + 4 * (size_t)x;
-            q[0] = ef_cli_unpremultiply(p[0], p[3]);
-            q[1] = ef_cli_unpremultiply(p[1], p[3]);
-            q[2] = ef_cli_unpremultiply(p[2], p[3]);
+            q[0] = ef_util_unpremultiply(p[0], p[3]);
+            q[1] = ef_util_unpremultiply(p[1], p[3]);
+            q[2] = ef_util_unpremultiply(p[2], p[3]);
             q[3] = p[3];
         }
         png_write_row(png, row);
@@ -206,14 +206,14 @@ static int write_png(FILE *fp, const ef_image *img, char *err, size_t errsize)
 }
 #endif
 
-int ef_cli_write_image(FILE *fp, ef_cli_format fmt, const ef_image *img, char *err, size_t errsize)
+int ef_util_write_image(FILE *fp, ef_util_format fmt, const ef_image *img, char *err, size_t errsize)
 {
     set_err(err, errsize, "");
     switch (fmt) {
-    case EF_CLI_FMT_PNG: return write_png(fp, img, err, errsize);
-    case EF_CLI_FMT_PAM: return write_pam(fp, img, err, errsize);
-    case EF_CLI_FMT_PGM: return write_pgm(fp, img, err, errsize);
-    case EF_CLI_FMT_UNKNOWN: break;
+    case EF_UTIL_FMT_PNG: return write_png(fp, img, err, errsize);
+    case EF_UTIL_FMT_PAM: return write_pam(fp, img, err, errsize);
+    case EF_UTIL_FMT_PGM: return write_pgm(fp, img, err, errsize);
+    case EF_UTIL_FMT_UNKNOWN: break;
     }
     set_err(err, errsize, "unknown output format");
     errno = EINVAL;

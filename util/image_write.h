@@ -10,23 +10,28 @@
  *   PGM  P5, MAXVAL 255: the alpha channel only (the coverage of a single
  *        opaque shape).
  */
-#ifndef EF_CLI_IMAGE_WRITE_H
-#define EF_CLI_IMAGE_WRITE_H
+#ifndef EF_UTIL_IMAGE_WRITE_H
+#define EF_UTIL_IMAGE_WRITE_H
 
 #include "edgeflag.h"
 
 #include <stdio.h>
 
-typedef enum ef_cli_format { EF_CLI_FMT_UNKNOWN = 0, EF_CLI_FMT_PNG, EF_CLI_FMT_PAM, EF_CLI_FMT_PGM } ef_cli_format;
+typedef enum ef_util_format {
+    EF_UTIL_FMT_UNKNOWN = 0,
+    EF_UTIL_FMT_PNG,
+    EF_UTIL_FMT_PAM,
+    EF_UTIL_FMT_PGM
+} ef_util_format;
 
 /* By the extension of path (case-insensitive): .png, .pam, .pgm. */
-ef_cli_format ef_cli_format_from_path(const char *path);
+ef_util_format ef_util_format_from_path(const char *path);
 
 /* 1 if this build can write fmt (PNG needs libpng: WITH_PNG=0 drops it). */
-int ef_cli_format_available(ef_cli_format fmt);
+int ef_util_format_available(ef_util_format fmt);
 
 /* Straight-alpha value of a premultiplied channel (the rule above). */
-static inline uint8_t ef_cli_unpremultiply(uint8_t c, uint8_t a)
+static inline uint8_t ef_util_unpremultiply(uint8_t c, uint8_t a)
 {
     uint32_t v;
     if (a == 0)
@@ -37,6 +42,6 @@ static inline uint8_t ef_cli_unpremultiply(uint8_t c, uint8_t a)
 
 /* Encodes img to fp.  0 on success; -1 on a write or encoder error, with a
  * message in err (NUL-terminated) and errno set when it is an I/O error. */
-int ef_cli_write_image(FILE *fp, ef_cli_format fmt, const ef_image *img, char *err, size_t errsize);
+int ef_util_write_image(FILE *fp, ef_util_format fmt, const ef_image *img, char *err, size_t errsize);
 
-#endif /* EF_CLI_IMAGE_WRITE_H */
+#endif /* EF_UTIL_IMAGE_WRITE_H */

@@ -18,10 +18,10 @@
  * One slot per temporary open at once (vectors writes its files two at a
  * time, each into its own temporary); every slot is changed only by the
  * thread that opens and commits (atomic_file.h), with the signals blocked. */
-static char tmp_path[EF_CLI_ATOMIC_MAX][4352];
-static volatile sig_atomic_t tmp_active[EF_CLI_ATOMIC_MAX];
-static unsigned char tmp_used[EF_CLI_ATOMIC_MAX]; /* from open to commit or abort */
-static int tmp_count;                             /* slots in use; the handlers are installed while > 0 */
+static char tmp_path[EF_UTIL_ATOMIC_MAX][4352];
+static volatile sig_atomic_t tmp_active[EF_UTIL_ATOMIC_MAX];
+static unsigned char tmp_used[EF_UTIL_ATOMIC_MAX]; /* from open to commit or abort */
+static int tmp_count;                              /* slots in use; the handlers are installed while > 0 */
 
 static struct sigaction old_int, old_term, old_hup, old_xfsz;
 static int handlers_installed;
@@ -30,7 +30,7 @@ static void on_signal(int sig)
 {
     struct sigaction dfl;
 
-    for (int k = 0; k < EF_CLI_ATOMIC_MAX; k++)
+    for (int k = 0; k < EF_UTIL_ATOMIC_MAX; k++)
         if (tmp_active[k])
             unlink(tmp_path[k]); /* async-signal-safe */
     /* Die of the same signal with the default action, so the parent sees
@@ -144,7 +144,7 @@ static int make_template(const char *path, char *out, size_t size)
     return 0;
 }
 
-int ef_cli_atomic_open(ef_cli_atomic *af, const char *path)
+int ef_util_atomic_open(ef_util_atomic *af, const char *path)
 {
     sigset_t old;
     int fd, saved, slot = 0;
@@ -155,10 +155,10 @@ int ef_cli_atomic_open(ef_cli_atomic *af, const char *path)
     af->path = path;
     af->slot = -1;
     af->synced = 0;
-    while (slot < EF_CLI_ATOMIC_MAX && tmp_used[slot])
+    while (slot < EF_UTIL_ATOMIC_MAX && tmp_used[slot])
         slot++;
-    if (slot == EF_CLI_ATOMIC_MAX) {
-        errno = EBUSY; /* the handler knows EF_CLI_ATOMIC_MAX paths */
+    if (slot == EF_UTIL_ATOMIC_MAX) {
+        errno = EBUSY; /* the handler knows EF_UTIL_ATOMIC_MAX paths */
         return -1;
     }
     /* Built in a buffer of its own, then copied whole into the slot (GCC's
@@ -200,7 +200,7 @@ int ef_cli_atomic_open(ef_cli_atomic *af, const char *path)
     return 0;
 }
 
-int ef_cli_atomic_sync(ef_cli_atomic *af)
+int ef_util_atomic_sync(ef_util_atomic *af)
 {
     if (!af->fp) {
         errno = EBADF;
@@ -220,7 +220,7 @@ int ef_cli_atomic_sync(ef_cli_atomic *af)
     return 0;
 }
 
-int ef_cli_atomic_commit(ef_cli_atomic *af)
+int ef_util_atomic_commit(ef_util_atomic *af)
 {
     sigset_t old;
     int err = 0;
@@ -229,7 +229,7 @@ int ef_cli_atomic_commit(ef_cli_atomic *af)
         errno = EBADF;
         return -1;
     }
-    if (!af->synced && ef_cli_atomic_sync(af) != 0)
+    if (!af->synced && ef_util_atomic_sync(af) != 0)
         err = errno;
     if (fclose(af->fp) != 0 && !err)
         err = errno;
@@ -273,7 +273,7 @@ int ef_cli_atomic_commit(ef_cli_atomic *af)
     return 0;
 }
 
-void ef_cli_atomic_abort(ef_cli_atomic *af)
+void ef_util_atomic_abort(ef_util_atomic *af)
 {
     if (af->fp) {
         fclose(af->fp);
@@ -285,7 +285,7 @@ void ef_cli_atomic_abort(ef_cli_atomic *af)
 }
 
 /* mkdir -p (atomic_file.h). */
-int ef_cli_make_dirs(const char *dir)
+int ef_util_make_dirs(const char *dir)
 {
     char *p = strdup(dir);
     struct stat st;
