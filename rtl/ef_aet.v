@@ -19,7 +19,8 @@
 //   t .. t+n-1  et_rd of the slot's n new edges (et_rd_ready high), each
 //               with a record read; the records arrive at t+1 .. t+n and
 //               all but the last are appended to the ring;
-//   t+n ..      one plot per cycle: the ring's edges in order (those active
+//   t+n ..      one plot per cycle (computed here, presented on plot a cycle
+//               later by the output register: t+n+1 ..): the ring's edges in order (those active
 //               from earlier rows, then the new ones), the last new edge
 //               from the record port itself (it still holds it); each edge
 //               goes back to the ring's tail after its last plot in the row
@@ -157,7 +158,11 @@ module ef_aet #(
 
     // ------------------------------------------------------------ row data
     wire        row_start = (ph == PH_W) && plot_ready;
-    wire [ROWW-1:0] row_now = row_start ? nx_row : row;
+    // In PH_W the row's data mean something only when it starts: taking them
+    // from the phase alone keeps SLB's plot_ready out of the datapath (issue
+    // 25: it only enables).
+    wire            in_w = (ph == PH_W);
+    wire [ROWW-1:0] row_now = in_w ? nx_row : row;
     wire [SRW-1:0]  base = {{(SRW-ROWW){1'b0}}, row_now} << LOG2NS;
     wire [SRW-1:0]  rend = base + NSM1;
 
@@ -226,7 +231,7 @@ module ef_aet #(
     wire rd_take = et_rd_valid && in_rd;
     assign rec_re = rd_take;
     assign rec_ra = et_rd_eid;
-    wire [EA:0] n_new_now = (row_start && nx_occ) ? {(EA+1){1'b0}} : n_new;
+    wire [EA:0] n_new_now = in_w ? {(EA+1){1'b0}} : n_new;
     wire rd_end = rd_take && et_rd_last;
 
     // ------------------------------------------------------------ plotting
@@ -234,7 +239,7 @@ module ef_aet #(
     wire first   = (ph != PH_PL);             // the row's first plot
     wire fr      = first || fresh;
     // edges of the row, and which come from the record port (the last new)
-    wire [EA:0]   nn = row_start ? {(EA+1){1'b0}} : n_new;   // new edges of the row
+    wire [EA:0]   nn = in_w ? {(EA+1){1'b0}} : n_new;   // new edges of the row
     wire        rec_edge = (nn != 0);     // the last edge comes from rec_*
     wire [RA+1:0] n_all = {1'b0, n_old} + {{(RA+1-EA){1'b0}}, nn};
     wire [RA+1:0] k_now = first ? {(RA+2){1'b0}} : k;
@@ -269,12 +274,32 @@ module ef_aet #(
         .q(q), .x_next(x_next), .e_next(e_next)
     );
 
-    assign plot_valid = in_plot;
-    assign plot_last  = in_plot && edge_done && row_last;
-    assign plot_row   = row_now;
-    assign plot_s     = s_now;
-    assign plot_q     = q;
-    assign plot_dir   = S_dir;
+    // The plot register (issue 25): PLOT's result is presented on plot in
+    // the next cycle, so no combinational path runs from the ring, the
+    // record port and PLOT's carry chains into SLB.  SLB is ready for every
+    // plot of a row (it drops plot_ready only after taking the row's last),
+    // so the register never holds a plot that is not taken.
+    reg        p_valid, p_last, p_dir;
+    reg [`EF_PLOT_ROW_W-1:0] p_row;
+    reg [`EF_PLOT_S_W-1:0]   p_s;
+    reg [`EF_PLOT_Q_W-1:0]   p_q;
+    always @(posedge clk) begin
+        if (rst)
+            p_valid <= 1'b0;
+        else
+            p_valid <= in_plot;
+        p_last <= in_plot && edge_done && row_last;
+        p_row  <= row_now;
+        p_s    <= s_now;
+        p_q    <= q;
+        p_dir  <= S_dir;
+    end
+    assign plot_valid = p_valid;
+    assign plot_last  = p_last;
+    assign plot_row   = p_row;
+    assign plot_s     = p_s;
+    assign plot_q     = p_q;
+    assign plot_dir   = p_dir;
 
     // ------------------------------------------------------------ ring ports
     wire push   = in_plot && edge_done && survive;
@@ -309,7 +334,7 @@ module ef_aet #(
     assign row_req     = eos_go || (w1 && !shape_end && nx_occ_calc);
     assign row_req_row = eos_go ? rmin : nx_calc;
 
-    assign busy = (ph != PH_IDLE);
+    assign busy = (ph != PH_IDLE) || p_valid;
 
     // et_rd's row field is not used here: the sequencer knows the row it
     // requested, and ETM presents that row's list.  The field is on the

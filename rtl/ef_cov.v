@@ -91,14 +91,20 @@ module ef_cov #(
     wire [13:0] cov_w = pc255 >> LOG2NS;                 // <= 255
     /* verilator lint_on UNUSEDSIGNAL */
     wire [7:0]  cov   = cov_w[7:0];
-    wire [7:0]  p_r = mul(cfg_rgb[23:16], cfg_alpha);
-    wire [7:0]  p_g = mul(cfg_rgb[15:8], cfg_alpha);
-    wire [7:0]  p_b = mul(cfg_rgb[7:0], cfg_alpha);
+    // P, premultiplied, registered (issue 25: one multiplier fewer in the
+    // span's cycle): SHAPE sets cfg_rgb/cfg_alpha at least L_SETUP cycles
+    // before the shape's first span, so the register has long caught up.
+    reg [7:0] p_r, p_g, p_b;
+    always @(posedge clk) begin
+        p_r <= mul(cfg_rgb[23:16], cfg_alpha);
+        p_g <= mul(cfg_rgb[15:8], cfg_alpha);
+        p_b <= mul(cfg_rgb[7:0], cfg_alpha);
+    end
 
     // ------------------------------------------------ stages
     reg [14:0] a_cnt;
     reg [13:0] a_y, a_x;
-    reg [7:0]  a_cov, a_sr, a_sg, a_sb, a_sa;
+    reg [7:0]  a_cov;
     reg        b_valid;
     reg [13:0] b_y, b_x;
     reg [7:0]  b_cov, b_sr, b_sg, b_sb, b_sa;
@@ -140,8 +146,12 @@ module ef_cov #(
             // B <- A
             b_valid <= issue;
             if (issue) begin
+                // the span's products from its registered coverage (issue
+                // 25: popcount and coverage, then the products, each in
+                // a cycle of its own; the schedule is unchanged)
                 b_y <= a_y; b_x <= a_x; b_cov <= a_cov;
-                b_sr <= a_sr; b_sg <= a_sg; b_sb <= a_sb; b_sa <= a_sa;
+                b_sr <= mul(p_r, a_cov); b_sg <= mul(p_g, a_cov); b_sb <= mul(p_b, a_cov);
+                b_sa <= mul(cfg_alpha, a_cov);
                 a_x <= a_x + 14'd1;
             end
             // A
@@ -150,10 +160,6 @@ module ef_cov #(
                 a_y <= span_y;
                 a_x <= span_x;
                 a_cov <= cov;
-                a_sr <= mul(p_r, cov);
-                a_sg <= mul(p_g, cov);
-                a_sb <= mul(p_b, cov);
-                a_sa <= mul(cfg_alpha, cov);
             end else if (issue) begin
                 a_cnt <= a_cnt - 15'd1;
             end

@@ -7,9 +7,8 @@
 //   P1 (the seg's cycle, registered at its transfer): orientation, dY, dX,
 //      first and last sample rows r0 = ceil((Y0 - c) / h) and
 //      r1 = ceil((Y1 - c) / h) - 1 as arithmetic shifts (h = 2^(8 - LOG2NS)),
-//      the top and bottom clip, and the drop decision (horizontal, or
-//      r0 > r1 after clipping);
-//   P2: the dividends M = (Y_r0 - Y0)*dX - 1 (|M| < 2^48; the spec's
+//      the top and bottom clip;
+//   P2: the drop decision (horizontal, or r0 > r1 after clipping), the dividends M = (Y_r0 - Y0)*dX - 1 (|M| < 2^48; the spec's
 //      A = X0*dY + M, and X0 is added to M's quotient after the divider)
 //      and h*dX (a shift, |h*dX| < 2^29);
 //   30 non-restoring stages and the floor correction (ef_div, two lanes
@@ -85,9 +84,12 @@ module ef_setup #(
     wire signed [25:0] r0_c = r0_raw[25] ? 26'sd0 : r0_raw;
     wire signed [25:0] r1_c = (r1_raw > last_row) ? last_row : r1_raw;
     wire [1:0]         unused_dy = dy_w[25:24];
-    wire               keep = (ya != yb) && !(r0_c > r1_c);
+    // The drop decision (r0 > r1 after the clip) is made in P2 from the
+    // registered rows (issue 25: off P1's path; it is used only at the
+    // divider's end).
 
-    reg        p1_v, p1_eos, p1_keep, p1_dir;
+    reg        p1_v, p1_eos, p1_flat, p1_dir;
+    reg signed [25:0] p1_r0c, p1_r1c;
     reg signed [23:0] p1_x0, p1_y0;
     reg signed [25:0] p1_dx;
     reg [23:0] p1_dy;
@@ -100,7 +102,9 @@ module ef_setup #(
         else if (en) begin
             p1_v    <= take;
             p1_eos  <= seg_eos;
-            p1_keep <= keep && !seg_eos;
+            p1_flat <= (ya == yb) || seg_eos;
+            p1_r0c  <= r0_c;
+            p1_r1c  <= r1_c;
             p1_dir  <= !down;
             p1_x0   <= x0;
             p1_y0   <= y0;
@@ -127,6 +131,7 @@ module ef_setup #(
     wire        unused_dx = p1_dx[25];
     wire signed [29:0] hdx  = $signed({{5{p1_dx[24]}}, p1_dx[24:0]} << SH);   // |h*dX| < 2^29
 
+    wire        p1_keep = !p1_flat && !(p1_r0c > p1_r1c);
     wire [`EF_ET_WR_R0_W-1:0] slot_w = p1_r0 >> LOG2NS;    // the pixel row of r0
     wire [`EF_ET_WR_R0_W-`EF_ET_WR_SLOT_W-1:0] unused_slot = slot_w[`EF_ET_WR_R0_W-1:`EF_ET_WR_SLOT_W];
 

@@ -44,8 +44,9 @@
 //  * The flush is issued in the cycle after the last cell's step (or in that
 //    step's span transfer cycle); from the cycle after the flush (or in the
 //    flush span's transfer cycle) plot_ready is high again: the next row's
-//    first cycle.  The scan needs no idle cycle between rows: the last
-//    clear-on-read write lands before the next row's first read.
+//    first cycle (plot_ready does not depend on the cell RAM's output).
+//    The scan needs no idle cycle between rows: the last clear-on-read
+//    write lands before the next row's first read.
 //
 // COV's acceptance (cov_free, item 6) is COV's business: this block sees it
 // only as span_ready.  The reference COV raises ready at cov_free = a + len.
@@ -202,7 +203,12 @@ module ef_slb_fill #(
     wire s2_done = !stall;     // stage 2 completes at this edge
 
     // ------------------------------------------------------------ stage 1
-    assign plot_ready = init_done && !scanning && !stall;
+    // No path from the cell RAM's output into AET/PLOT (issue 25): while
+    // no scan is in progress stage 2 holds no CELL op (a CELL op is issued
+    // only while scanning, and only the flush ends the scan), so the only
+    // span that can stall is the flush's, which depends on registers alone.
+    wire flush_stall = span_flush && !span_ready;
+    assign plot_ready = init_done && !scanning && !flush_stall;
     wire take_plot  = plot_valid && plot_ready;
     wire scan_go    = init_done && scanning && !stall;
     wire scan_cell  = scan_go && (ptr <= xend);
@@ -226,7 +232,7 @@ module ef_slb_fill #(
     // The schedule's cursor after a row (item 5): the cycle after the flush
     // step, or the flush span's transfer cycle.  The drain (item 6) counts it.
     assign scan_done = init_done && !scanning && !trk_any
-                    && ((s2_op == OP_NONE) || ((s2_op == OP_FLUSH) && !stall));
+                    && ((s2_op == OP_NONE) || ((s2_op == OP_FLUSH) && !flush_stall));
 
     // ------------------------------------------------------------ registers
     always @(posedge clk) begin

