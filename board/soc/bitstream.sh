@@ -24,10 +24,10 @@ secs=$(($(date +%s) - start))
 bit=$dir/gateware/radiona_ulx3s.bit
 [ -s "$bit" ] || { echo "bitstream: no $bit" >&2; exit 1; }
 # nextpnr's last utilisation table and its last Fmax lines (after routing)
-util=$(awk '/Device utilisation:/{buf=""; on=1; next} on && /^Info: *[A-Z_0-9]+: /{buf=buf $0 "\n"; next} on{on=0} END{printf "%s", buf}' "$log")
-cell() { printf '%s\n' "$util" | awk -v c="$1" '$2 == c":" {print $3}'; }
+util=$(awk '/Device utilisation:/{buf=""; on=1; next} on && /^Info:[ \t]*[A-Z_0-9]+: /{buf=buf $0 "\n"; next} on{on=0} END{printf "%s", buf}' "$log")
+cell() { printf '%s\n' "$util" | awk -v c="$1" '$2 == c":" {print $3 $4}'; }
 lut4=$(awk '$2 == "LUT4" {v=$1} END{print v}' "$dir/gateware/radiona_ulx3s.rpt" 2>/dev/null)
-fmax=$(grep -E "Max frequency for clock" "$log" | tail -n 4)
+fmax=$(grep -E "Max frequency for clock" "$log" | tail -n 3)
 if [ -z "$util" ] || [ -z "$fmax" ]; then
     echo "bitstream: no utilisation or Fmax in $log" >&2
     exit 1
