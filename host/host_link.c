@@ -164,6 +164,13 @@ static int lost(hl *h, int err)
     const char *d = h->ops->detail ? h->ops->detail(h->l) : NULL;
     if (d && *d)
         fprintf(stderr, "edgeflag-host: %s\n", d);
+    /* --resume needs the resume state; lost before the run's first state was
+     * written (at identify or reset), there is nothing to resume */
+    if (h->state_path[0] == '\0' || access(h->state_path, F_OK) != 0) {
+        fprintf(stderr, "edgeflag-host: %s before the run started; nothing to resume: run the same command again\n",
+                err == EF_HOST_ENODEV ? "the board went away (unplugged?)" : "the board stopped answering");
+        return EF_HX_LOST;
+    }
     fprintf(stderr,
             "edgeflag-host: %s after %" PRIu32 " of %" PRIu32 " frames acknowledged and %" PRIu32
             " result frames kept in %s; run the same command with --resume to continue\n",

@@ -220,6 +220,12 @@ run "another device: exit 6" 6 'did not answer identify as an edgeflag board' --
 board --unix b.sock --vectors tiger/vectors.bin --mute
 run "a board that never answers identify: exit 5 after four tries" 5 "no identify reply in 4 tries of $SHORT ms" -- \
     "$H" verify tiger/vectors.bin "${LINK[@]}" --timeout "$SHORT" --connect "$SOCK" --results rm
+# lost at identify, before any resume state exists: the host must not send the user to --resume
+if grep -q 'nothing to resume: run the same command again' err.txt && ! grep -q -- '--resume' err.txt; then
+    ok "lost before the run started: told to run again, not to --resume"
+else
+    bad "lost before the run started" "$(head -c 400 err.txt | tr '\n' ' ')"
+fi
 stop_board
 
 # ------------------------------------------------------------------ 3. nobody there, bad address
