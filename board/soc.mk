@@ -16,7 +16,7 @@ EF_VENV ?= build/venv
 EF_VENV_PY := $(EF_VENV)/bin/python
 BOARD_DIR := $(BUILD)/board/$(BOARD)-ns$(BOARD_NS)
 BOARD_SIM_DIR := $(BUILD)/board/sim-ns$(BOARD_NS)
-BOARD_SOC_SRC := board/soc/soc.py board/soc/ef_periph.py board/soc/ef_gate_ecp5.v board/soc/ef_gate_sim.v \
+BOARD_SOC_SRC := board/soc/soc.py board/soc/ef_periph.py board/soc/ef_usb.py board/soc/usb_core.py board/soc/ef_gate_ecp5.v board/soc/ef_gate_sim.v \
                  $(wildcard rtl/*.v) $(wildcard rtl/*.vh)
 BOARD_TOOLS := $(EF_VENV)/.installed-soc build/fpga-bin/nextpnr-ecp5
 
@@ -57,10 +57,11 @@ $(BOARD_SIM_DIR)/gateware/sim.v: $(BOARD_SOC_SRC) | $(BOARD_SIM_DIR)/firmware.bi
 	$(EF_VENV_PY) board/soc/soc.py --target sim --ns $(BOARD_NS) --out $(BOARD_SIM_DIR) \
 	    --rom $(BOARD_SIM_DIR)/firmware.bin >$(BOARD_SIM_DIR)/gateware.log 2>&1 || \
 	    { tail -n 20 $(BOARD_SIM_DIR)/gateware.log; exit 1; }
-$(BOARD_SIM_DIR)/obj/board_sim: $(BOARD_SIM_DIR)/gateware/sim.v board/sim/board_sim.cpp
+$(BOARD_SIM_DIR)/obj/board_sim: $(BOARD_SIM_DIR)/gateware/sim.v board/sim/board_sim.cpp board/sim/usb_link.cpp \
+                                 board/sim/usb_link.h board/sim/usb_wire.h
 	verilator $(BOARD_SIM_VFLAGS) -Mdir $(BOARD_SIM_DIR)/obj -o board_sim \
 	    $$(cat $(BOARD_SIM_DIR)/gateware/sources.txt) $(BOARD_SIM_DIR)/gateware/sim.v \
-	    $(abspath board/sim/board_sim.cpp) -CFLAGS -O2 >$(BOARD_SIM_DIR)/verilate.log 2>&1 || \
+	    $(abspath board/sim/board_sim.cpp) $(abspath board/sim/usb_link.cpp) -CFLAGS -O2 >$(BOARD_SIM_DIR)/verilate.log 2>&1 || \
 	    { tail -n 30 $(BOARD_SIM_DIR)/verilate.log; exit 1; }
 $(BOARD_SIM_DIR)/gateware/sim_rom.init: $(BOARD_SIM_DIR)/firmware.bin $(BOARD_SIM_DIR)/gateware/sim.v
 	od -An -v -tx4 -w4 $< | tr -d ' ' >$@.tmp && mv $@.tmp $@

@@ -13,7 +13,7 @@
 // bytes arrive and leave as fast as the FT231X would bring them.
 //
 //   board_sim --dir GATEWARE_DIR [--pty-link FILE] [--listen PATH] [--baud N]
-//             [--max-seconds S] [--quiet]
+//             [--max-seconds S] [--quiet] [--usb PATH]
 //
 // --dir: where the memory images (sim_rom.init, ...) are.  With --pty-link
 // the pseudo-terminal's name (/dev/pts/N) is written into FILE; it is always
@@ -21,6 +21,9 @@
 // (one host at a time; a host's disconnection keeps the board's run, as a
 // powered board keeps it).  On SIGTERM or SIGINT, or after --max-seconds of
 // wall time, it prints the cycles simulated and the bytes moved, and exits 0.
+// --usb PATH: the SoC's USB device on a unix socket for tests/host/usb_emu.c
+// (--soc), through the host controller of usb_link.cpp (the usb clock is 12
+// MHz: one every 5 sys cycles).
 #include <cerrno>
 #include <csignal>
 #include <cstdint>
@@ -36,6 +39,7 @@
 #include <unistd.h>
 
 #include "Vsim.h"
+#include "usb_link.h"
 #include "verilated.h"
 
 static volatile sig_atomic_t stop_now;
@@ -57,7 +61,7 @@ static void usage()
 
 int main(int argc, char **argv)
 {
-    const char *dir = nullptr, *pty_link = nullptr, *listen_path = nullptr;
+    const char *dir = nullptr, *pty_link = nullptr, *listen_path = nullptr, *usb_path = nullptr;
     double baud = 3e6, max_seconds = 0;
     int quiet = 0;
     for (int i = 1; i < argc; i++) {
@@ -72,6 +76,8 @@ int main(int argc, char **argv)
             baud = std::atof(argv[++i]);
         else if (a == "--max-seconds" && i + 1 < argc)
             max_seconds = std::atof(argv[++i]);
+        else if (a == "--usb" && i + 1 < argc)
+            usb_path = argv[++i];
         else if (a == "--quiet")
             quiet = 1;
         else
@@ -148,6 +154,17 @@ int main(int argc, char **argv)
     top.serial_sink_valid = 0;
     top.serial_source_ready = 0;
     top.sim_trace = 0;
+    top.utmi_line_state = 2; // J: an idle bus, no reset
+    UsbLink *usb = nullptr;
+    if (usb_path) {
+        usb = usb_link_new(usb_path, UtmiPins{ &top.utmi_rx_data, &top.utmi_rx_valid, &top.utmi_rx_active,
+                                              &top.utmi_rx_error, &top.utmi_tx_ready, &top.utmi_line_state,
+                                              &top.utmi_tx_data, &top.utmi_tx_valid, &top.utmi_term_select });
+        if (!usb)
+            return 1;
+        std::printf("board_sim: usb on %s\n", usb_path);
+        std::fflush(stdout);
+    }
     uint64_t cyc = 0;
     for (; !stop_now; cyc++) {
         if (cyc == 16)
@@ -178,7 +195,14 @@ int main(int argc, char **argv)
             }
             if ((cyc & ((1u << 22) - 1)) == 0 && max_seconds > 0 && now_s() - t0 > max_seconds)
                 break;
+            if (usb)
+                usb_link_poll(usb);
         }
+        // usb rises with every fifth sys rise (12 MHz): its inputs before, its outputs between
+        const unsigned um = (unsigned)(cyc % 5);
+        const bool frozen = usb && usb_link_frozen(usb);
+        if (usb && um == 0)
+            usb_link_drive(usb);
         // the UART's PHY streams, at the line rate
         top.serial_sink_valid = in_pos < in_len && cyc >= next_rx;
         top.serial_sink_data = in_pos < in_len ? in[in_pos] : 0;
@@ -186,13 +210,17 @@ int main(int argc, char **argv)
         // sys falls, then rises; ef is high for sys cycles 0 and 1 of every 4, so it rises
         // with every fourth sys rise and falls two sys cycles later
         top.sys_clk = 0;
-        top.ef_clk = ((cyc - 1) & 3) < 2;
+        top.ef_clk = frozen ? 0 : ((cyc - 1) & 3) < 2;
+        top.usb_clk = um == 1 || um == 2;
         top.eval();
+        if (usb && um == 0)
+            usb_link_sample(usb);
         const bool rx_take = top.serial_sink_valid && top.serial_sink_ready;
         const bool tx_take = top.serial_source_valid && top.serial_source_ready;
         const uint8_t tx_byte = top.serial_source_data;
-        top.sys_clk = 1;
-        top.ef_clk = (cyc & 3) < 2;
+        top.sys_clk = !frozen;   // a frozen board: its CPU and ef_raster stand still (usb_wire.h)
+        top.ef_clk = frozen ? 0 : (cyc & 3) < 2;
+        top.usb_clk = um <= 2;
         top.eval();
         if (rx_take) {
             in_pos++, bytes_in++;
@@ -210,6 +238,11 @@ int main(int argc, char **argv)
                      "%llu bytes out\n",
                      (unsigned long long)cyc, cyc / (double)sys_hz, dt, cyc / dt, (unsigned long long)bytes_in,
                      (unsigned long long)bytes_out);
+    if (usb) {
+        if (!quiet)
+            usb_link_report(usb, cyc / (double)sys_hz, dt);
+        usb_link_free(usb);
+    }
     top.final();
     return 0;
 }
