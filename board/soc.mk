@@ -8,6 +8,8 @@
 #   make firmware [BOARD=...]   the firmware alone (its size printed)
 #   make board-sim              the simulated board (build/board/sim-ns8/obj/board_sim)
 #   make board-sim-test         verify through the simulated board (tests/board/soc_sim.sh)
+#   make board-sim-usb-test     the same over USB: libusb, umockdev, the SoC's USB device
+#                               (tests/board/usb_sim.sh)
 #   EF_BOARD_SERIAL=...         the serial number identify reports (default EFULX3S-0001)
 BOARD ?= ulx3s-25f
 BOARD_NS ?= 8
@@ -20,7 +22,7 @@ BOARD_SOC_SRC := board/soc/soc.py board/soc/ef_periph.py board/soc/ef_usb.py boa
                  $(wildcard rtl/*.v) $(wildcard rtl/*.vh)
 BOARD_TOOLS := $(EF_VENV)/.installed-soc build/fpga-bin/nextpnr-ecp5
 
-.PHONY: board-tools firmware bitstream board-sim board-sim-test
+.PHONY: board-tools firmware bitstream board-sim board-sim-test board-sim-usb-test
 
 # the tools: Debian's cross compiler and picolibc, the pinned PyPI groups, the PATH shims
 $(BOARD_TOOLS): tools/requirements/soc.txt tools/requirements/fpga.txt tools/requirements/usb.txt tools/install-fpga.sh
@@ -72,3 +74,10 @@ board-sim: $(BOARD_TOOLS)
 
 board-sim-test: all board-sim $(PTYBOARD)
 	bash tests/board/soc_sim.sh $(BOARD_SIM_DIR)
+
+# The simulated board over USB: the unmodified edgeflag-host and libusb under umockdev
+# (tests/host/usb_emu --soc) against the SoC's USB device (tests/board/usb_sim.sh)
+board-sim-usb-test: all board-sim
+	@bash tools/install-deps.sh test
+	@$(MAKE) --no-print-directory host-usb-emu
+	bash tests/board/usb_sim.sh $(BOARD_SIM_DIR)

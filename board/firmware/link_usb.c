@@ -25,10 +25,10 @@
 #define IN_LAST 0x100u
 #define MB_STATUS 64u
 
-static int identified;      /* the mailbox holds identify and the board is on the bus */
-static uint32_t acked;      /* the request toggle last served */
-static uint32_t seen;       /* the toggle of the request being served */
-static int held = -1;       /* the byte held back, or -1 */
+static int identified; /* the mailbox holds identify and the board is on the bus */
+static uint32_t acked; /* the request toggle last served */
+static uint32_t seen;  /* the toggle of the request being served */
+static int held = -1;  /* the byte held back, or -1 */
 
 static void usb_mailbox(unsigned at, const uint8_t *buf, size_t len)
 {
@@ -90,12 +90,11 @@ static void usb_reply(int req, const uint8_t *buf, size_t len)
     }
     if (req == FW_REQ_STATUS)
         usb_mailbox(MB_STATUS, buf, len);
-    if (req == FW_REQ_RESET || req == FW_REQ_LINK_LOST) {
-        /* the stream bytes both ways: the core drops the IN ones until the ack below */
-        held = -1;
+    if (req == FW_REQ_RESET || req == FW_REQ_LINK_LOST)
+        held = -1;           /* the IN bytes: the core drops those it has until the ack below */
+    if (req == FW_REQ_RESET) /* the OUT bytes (a bus reset keeps them: the host saw them ACKed) */
         while (usb_status_read() & ST_OUT)
             usb_out_pop_write(1);
-    }
     acked = seen;
     usb_ctl_ack_write(acked);
 }

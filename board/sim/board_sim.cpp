@@ -154,12 +154,12 @@ int main(int argc, char **argv)
     top.serial_sink_valid = 0;
     top.serial_source_ready = 0;
     top.sim_trace = 0;
-    top.utmi_line_state = 2; // J: an idle bus, no reset
+    top.utmi_line_state = 2;   // J: an idle bus, no reset
     UsbLink *usb = nullptr;
     if (usb_path) {
         usb = usb_link_new(usb_path, UtmiPins{ &top.utmi_rx_data, &top.utmi_rx_valid, &top.utmi_rx_active,
-                                              &top.utmi_rx_error, &top.utmi_tx_ready, &top.utmi_line_state,
-                                              &top.utmi_tx_data, &top.utmi_tx_valid, &top.utmi_term_select });
+                                               &top.utmi_rx_error, &top.utmi_tx_ready, &top.utmi_line_state,
+                                               &top.utmi_tx_data, &top.utmi_tx_valid, &top.utmi_term_select });
         if (!usb)
             return 1;
         std::printf("board_sim: usb on %s\n", usb_path);

@@ -27,17 +27,26 @@
 
 #include "usb_wire.h"
 
-namespace {
+namespace
+{
 
 enum Pid : uint8_t {
-    OUT = 0x1, IN = 0x9, SOF = 0x5, SETUP = 0xD, DATA0 = 0x3, DATA1 = 0xB, ACK = 0x2, NAK = 0xA, STALL = 0xE
+    OUT = 0x1,
+    IN = 0x9,
+    SOF = 0x5,
+    SETUP = 0xD,
+    DATA0 = 0x3,
+    DATA1 = 0xB,
+    ACK = 0x2,
+    NAK = 0xA,
+    STALL = 0xE
 };
 
-const uint32_t FRAME = 12000;     // bit times in a 1 ms frame
-const uint32_t GUARD = 1200;      // no transaction starts this close to the next SOF
-const uint32_t TIMEOUT = 96;      // bit times the host waits for the device's packet
-const uint32_t GAP = 4;           // bit times between packets
-const uint32_t RESET_SE0 = 12000; // a bus reset's SE0: 1 ms (USB asks 10 ms; LUNA detects it after 150)
+const uint32_t FRAME = 12000;       // bit times in a 1 ms frame
+const uint32_t GUARD = 1200;        // no transaction starts this close to the next SOF
+const uint32_t TIMEOUT = 96;        // bit times the host waits for the device's packet
+const uint32_t GAP = 4;             // bit times between packets
+const uint32_t RESET_SE0 = 12000;   // a bus reset's SE0: 1 ms (USB asks 10 ms; LUNA detects it after 150)
 const int MPS = 64;
 
 // USB 2.0 section 8.3.5: CRC5 over the token's 11 bits, CRC16 over a data
@@ -82,17 +91,17 @@ std::vector<uint8_t> data_packet(bool toggle, const uint8_t *p, size_t n)
 
 struct Transfer {
     uint32_t id;
-    int type, ep;           // USBW_CONTROL/USBW_BULK, endpoint address
-    uint32_t in_len;        // IN: the buffer's length (control: wLength)
-    std::vector<uint8_t> out; // control: setup + OUT data; bulk OUT: the bytes
-    std::vector<uint8_t> in;  // received
-    size_t done = 0;        // OUT bytes sent
-    int stage = 0;          // control: 0 setup, 1 data, 2 status
+    int type, ep;               // USBW_CONTROL/USBW_BULK, endpoint address
+    uint32_t in_len;            // IN: the buffer's length (control: wLength)
+    std::vector<uint8_t> out;   // control: setup + OUT data; bulk OUT: the bytes
+    std::vector<uint8_t> in;    // received
+    size_t done = 0;            // OUT bytes sent
+    int stage = 0;              // control: 0 setup, 1 data, 2 status
     int errors = 0;
     bool cancel = false;
 };
 
-} // namespace
+}   // namespace
 
 struct UsbLink {
     UtmiPins p;
@@ -100,19 +109,20 @@ struct UsbLink {
     std::vector<uint8_t> rxbuf;
     std::string txbuf;
     std::deque<Transfer> ctrl, bulk_out, bulk_in;
-    std::deque<uint32_t> resets; // bus resets asked for (their ids)
+    std::deque<uint32_t> resets;   // bus resets asked for (their ids)
     bool frozen = false;
+    bool trace = std::getenv("EF_USB_LINK_TRACE") != nullptr;   // every transfer on stderr
 
     // device state as the host knows it
     uint8_t addr = 0;
-    bool tog_out = false, tog_in = false; // bulk data toggles (0x01, 0x81)
+    bool tog_out = false, tog_in = false;   // bulk data toggles (0x01, 0x81)
     bool tog_ctl = false;
 
     // the wire: one packet out, or waiting for one in
     enum { IDLE, SEND, WAIT, RECV, RESET, SETTLE } w = IDLE;
-    std::vector<uint8_t> pkt; // being sent or received
+    std::vector<uint8_t> pkt;   // being sent or received
     size_t pos = 0;
-    uint32_t t = 0;           // bit times in this wire state
+    uint32_t t = 0;   // bit times in this wire state
     bool got_byte = false;
 
     // the transaction in flight
@@ -142,10 +152,12 @@ struct UsbLink {
     void complete(Transfer &x, int status)
     {
         const bool in = x.type == USBW_BULK ? (x.ep & 0x80) != 0 : (x.out[0] & 0x80) != 0;
-        const uint32_t n = in ? (uint32_t)x.in.size()
-                              : (uint32_t)(x.type == USBW_BULK ? x.done : x.out.size() - 8);
+        const uint32_t n = in ? (uint32_t)x.in.size() : (uint32_t)(x.type == USBW_BULK ? x.done : x.out.size() - 8);
         send_msg(USBW_COMPLETE, x.id, (uint32_t)status, n, in ? x.in.data() : nullptr, in ? n : 0);
         transfers++;
+        if (trace)
+            std::fprintf(stderr, "usb_link: %llu: done %u type %d ep %02x status %d bytes %u\n",
+                         (unsigned long long)cycle, x.id, x.type, x.ep, status, n);
     }
     void drop_all()
     {
@@ -162,8 +174,17 @@ struct UsbLink {
                 send_msg(USBW_COMPLETE, h.id, (uint32_t)USBW_EPROTO, 0, nullptr, 0);
                 return;
             }
+            if (trace)
+                std::fprintf(stderr, "usb_link: %llu: submit %u type %d ep %02x len %u/%u%s\n",
+                             (unsigned long long)cycle, x.id, x.type, x.ep, (unsigned)x.out.size(), x.in_len,
+                             x.type == USBW_CONTROL ? (x.out[1] == 3   ? " STATUS"
+                                                       : x.out[1] == 2 ? " RESET"
+                                                                       : "")
+                                                    : "");
             (x.type == USBW_CONTROL ? ctrl : (x.ep & 0x80) ? bulk_in : bulk_out).push_back(std::move(x));
         } else if (h.op == USBW_CANCEL) {
+            if (trace)
+                std::fprintf(stderr, "usb_link: %llu: cancel %u\n", (unsigned long long)cycle, h.id);
             for (auto *q : { &ctrl, &bulk_out, &bulk_in })
                 for (auto &x : *q)
                     if (x.id == h.id)
@@ -172,6 +193,8 @@ struct UsbLink {
             resets.push_back(h.id);
         } else if (h.op == USBW_FREEZE) {
             frozen = h.a != 0;
+            if (trace)
+                std::fprintf(stderr, "usb_link: %llu: freeze %d\n", (unsigned long long)cycle, (int)frozen);
         }
     }
     void poll()
@@ -194,7 +217,7 @@ struct UsbLink {
                 continue;
             }
             if (n == 0 || (errno != EAGAIN && errno != EWOULDBLOCK)) {
-                close(fd); // the emulator went away: its transfers with it
+                close(fd);   // the emulator went away: its transfers with it
                 fd = -1;
                 drop_all();
                 frozen = false;
@@ -222,14 +245,8 @@ struct UsbLink {
     }
 
     // ---- the transaction layer: what to do when the wire is idle
-    void start_send(std::vector<uint8_t> v)
-    {
-        pkt = std::move(v), pos = 0, t = 0, w = SEND;
-    }
-    void start_wait()
-    {
-        pkt.clear(), t = 0, w = WAIT;
-    }
+    void start_send(std::vector<uint8_t> v) { pkt = std::move(v), pos = 0, t = 0, w = SEND; }
+    void start_wait() { pkt.clear(), t = 0, w = WAIT; }
     // The device's packet (or a timeout) arrived: decide.
     void transaction_step()
     {
@@ -295,7 +312,7 @@ struct UsbLink {
         const uint16_t c = crc16(r.data() + 1, r.size() - 3);
         return r[r.size() - 2] == (uint8_t)c && r[r.size() - 1] == (uint8_t)(c >> 8);
     }
-    int handshake() const // the device's handshake: ACK, NAK, STALL, or -1 (none, garbled)
+    int handshake() const   // the device's handshake: ACK, NAK, STALL, or -1 (none, garbled)
     {
         if (reply_timeout || reply.size() != 1 || !pid_ok(reply[0]))
             return -1;
@@ -308,7 +325,7 @@ struct UsbLink {
         if (++cur->errors >= 3)
             finish(status);
     }
-    void finish(int status) // the transfer ends
+    void finish(int status)   // the transfer ends
     {
         Transfer x = std::move(*cur);
         auto *q = x.type == USBW_CONTROL ? &ctrl : (x.ep & 0x80) ? &bulk_in : &bulk_out;
@@ -316,7 +333,7 @@ struct UsbLink {
         cur = nullptr;
         complete(x, status);
     }
-    void finish_handshake() // after SETUP, OUT or the OUT status stage
+    void finish_handshake()   // after SETUP, OUT or the OUT status stage
     {
         kind_done();
         const int h = handshake();
@@ -348,14 +365,14 @@ struct UsbLink {
             x.stage = (dir_in || x.out.size() > 8) ? 1 : 2;
             return;
         }
-        if (x.stage == 1) { // an OUT data stage packet
+        if (x.stage == 1) {   // an OUT data stage packet
             const size_t total = x.out.size() - 8, n = std::min<size_t>(MPS, total - x.done);
             x.done += n, tog_ctl = !tog_ctl;
             if (x.done == total)
                 x.stage = 2;
             return;
         }
-        control_done(x); // the OUT status stage of an IN request
+        control_done(x);   // the OUT status stage of an IN request
     }
     void control_done(Transfer &x)
     {
@@ -364,11 +381,11 @@ struct UsbLink {
         const unsigned wvalue = s[2] | s[3] << 8;
         if (s[0] == 0x00 && s[1] == 5)
             addr = (uint8_t)(wvalue & 0x7F);
-        if ((s[0] == 0x00 && s[1] == 9) || (s[0] == 0x02 && s[1] == 1)) // SET_CONFIGURATION, CLEAR_FEATURE(halt)
+        if ((s[0] == 0x00 && s[1] == 9) || (s[0] == 0x02 && s[1] == 1))   // SET_CONFIGURATION, CLEAR_FEATURE(halt)
             tog_out = tog_in = false;
         finish(USBW_OK);
     }
-    void finish_in() // after an IN token: data (ACKed), NAK, STALL or nothing
+    void finish_in()   // after an IN token: data (ACKed), NAK, STALL or nothing
     {
         kind_done();
         if (reply_timeout || reply.empty()) {
@@ -399,16 +416,16 @@ struct UsbLink {
         const uint8_t *d = reply.data() + 1;
         if (x.type == USBW_BULK) {
             if (t1 != tog_in)
-                return; // a repeat of a packet whose ACK the device missed: ACKed, not taken
+                return;   // a repeat of a packet whose ACK the device missed: ACKed, not taken
             tog_in = !tog_in;
             const size_t room = x.in_len - x.in.size(), take = std::min(n, room);
             x.in.insert(x.in.end(), d, d + take);
             bytes_in += take;
             if (n < (size_t)MPS || x.in.size() == x.in_len || take < n)
-                finish(take < n ? USBW_EPROTO : USBW_OK); // babble when the packet overflows
+                finish(take < n ? USBW_EPROTO : USBW_OK);   // babble when the packet overflows
             return;
         }
-        if (x.stage == 1) { // the IN data stage
+        if (x.stage == 1) {   // the IN data stage
             if (t1 != tog_ctl)
                 return;
             tog_ctl = !tog_ctl;
@@ -447,7 +464,7 @@ struct UsbLink {
         }
         if (!resets.empty()) {
             if (!*p.term_select)
-                return; // no device on the bus yet (its pull-up is off)
+                return;   // no device on the bus yet (its pull-up is off)
             reset_id = resets.front();
             resets.pop_front();
             w = RESET, t = 0;
@@ -499,7 +516,7 @@ struct UsbLink {
         switch (w) {
         case IDLE:
             *p.rx_active = 0;
-            *p.line_state = 2; // J
+            *p.line_state = 2;   // J
             schedule();
             if (w == IDLE || w == RESET)
                 break;
@@ -507,7 +524,7 @@ struct UsbLink {
         case SEND:
             // SYNC (8 bit times), then a byte every 8, then the EOP (3)
             *p.rx_active = 1;
-            *p.line_state = 1; // K (the line is busy)
+            *p.line_state = 1;   // K (the line is busy)
             if (t >= 8 && t % 8 == 0 && pos < pkt.size()) {
                 *p.rx_data = pkt[pos++];
                 *p.rx_valid = 1;
@@ -520,7 +537,7 @@ struct UsbLink {
             }
             t++;
             break;
-        case SETTLE: // the inter-packet gap after the host's packet
+        case SETTLE:   // the inter-packet gap after the host's packet
             *p.rx_active = 0;
             *p.line_state = 2;
             if (++t >= GAP) {
@@ -529,7 +546,7 @@ struct UsbLink {
                     transaction_step();
             }
             break;
-        case WAIT: // for the device's packet
+        case WAIT:   // for the device's packet
             *p.line_state = 2;
             t++;
             break;
@@ -540,7 +557,7 @@ struct UsbLink {
             break;
         case RESET:
             *p.rx_active = 0;
-            *p.line_state = t < RESET_SE0 ? 0 : 2; // SE0, then J
+            *p.line_state = t < RESET_SE0 ? 0 : 2;   // SE0, then J
             if (++t >= RESET_SE0 + 200) {
                 addr = 0, tog_out = tog_in = false;
                 send_msg(USBW_BUS_RESET, reset_id, 0, 0, nullptr, 0);
@@ -568,7 +585,7 @@ struct UsbLink {
                     pkt.push_back(*p.tx_data);
                 } else {
                     reply = pkt, reply_timeout = false;
-                    w = SETTLE, t = 0; // the EOP and the gap, then the next step
+                    w = SETTLE, t = 0;   // the EOP and the gap, then the next step
                     return;
                 }
             }
@@ -607,14 +624,15 @@ bool usb_link_frozen(const UsbLink *u) { return u->frozen; }
 
 void usb_link_report(const UsbLink *u, double sim_s, double wall_s)
 {
-    std::fprintf(stderr,
-                 "board_sim: usb: %llu transfers, %llu transactions (%.0f per simulated s, %.0f per wall s), %llu NAKed, "
-                 "%llu without answer, %llu SOFs, %llu bytes out, %llu bytes in (%.0f B per simulated s)\n",
-                 (unsigned long long)u->transfers, (unsigned long long)u->transactions,
-                 sim_s > 0 ? u->transactions / sim_s : 0.0, wall_s > 0 ? u->transactions / wall_s : 0.0,
-                 (unsigned long long)u->naks, (unsigned long long)u->timeouts, (unsigned long long)u->sofs,
-                 (unsigned long long)u->bytes_out, (unsigned long long)u->bytes_in,
-                 sim_s > 0 ? (u->bytes_out + u->bytes_in) / sim_s : 0.0);
+    std::fprintf(
+        stderr,
+        "board_sim: usb: %llu transfers, %llu transactions (%.0f per simulated s, %.0f per wall s), %llu NAKed, "
+        "%llu without answer, %llu SOFs, %llu bytes out, %llu bytes in (%.0f B per simulated s)\n",
+        (unsigned long long)u->transfers, (unsigned long long)u->transactions,
+        sim_s > 0 ? u->transactions / sim_s : 0.0, wall_s > 0 ? u->transactions / wall_s : 0.0,
+        (unsigned long long)u->naks, (unsigned long long)u->timeouts, (unsigned long long)u->sofs,
+        (unsigned long long)u->bytes_out, (unsigned long long)u->bytes_in,
+        sim_s > 0 ? (u->bytes_out + u->bytes_in) / sim_s : 0.0);
 }
 
 void usb_link_free(UsbLink *u)

@@ -68,8 +68,10 @@ class _CRGULX3S(Module):
         self.submodules.usb_pll = usb_pll = ECP5PLL()
         self.comb += usb_pll.reset.eq(rst)
         usb_pll.register_clkin(clk25, 25e6)
-        usb_pll.create_clkout(self.cd_usb_io, 48e6, margin=0)
-        usb_pll.create_clkout(self.cd_usb, 12e6, margin=0)
+        # 48 MHz is not reachable exactly from 25 MHz within the PLL's PFD and VCO ranges: the
+        # nearest is 47.917 MHz (VCO 575 MHz / 12), -0.17 %, inside full speed's +-0.25 %
+        usb_pll.create_clkout(self.cd_usb_io, 48e6, margin=2e-3)
+        usb_pll.create_clkout(self.cd_usb, 12e6, margin=2e-3)
         # keep the ESP32 from resetting the FPGA (as litex_boards' target does)
         self.comb += platform.request("wifi_gpio0").eq(1)
 
