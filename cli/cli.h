@@ -125,7 +125,9 @@ enum {
     EF_OPT_EMIT_VERILOG,
     EF_OPT_DUT_LIMITS,
     EF_OPT_DUT_EDGES,
-    EF_OPT_SCHEDULE
+    EF_OPT_SCHEDULE,
+    EF_OPT_DUT_SAMPLES,
+    EF_OPT_DUT_FILE
 };
 enum { EF_CLI_MAX_OPTIONS = 24 }; /* entries of one command's table */
 
