@@ -44,6 +44,7 @@ typedef enum ef_iface {
 #define EF_L_DEC 1    /* cmd -> seg */
 #define EF_L_SETUP 33 /* seg -> et_wr: 2 + 30 divider stages + 1 */
 #define EF_L_COV 3    /* span accepted -> first pix */
+#define EF_L_PLOT 2   /* a row's last et_rd cycle (or its start, without one) -> its first plot: PLOT's two registers */
 
 /* Commands (the `op` field of cmd). */
 enum { EF_OP_FRAME = 1, EF_OP_SHAPE = 2, EF_OP_EDGE = 3, EF_OP_SHAPE_END = 4, EF_OP_FRAME_END = 5 };
