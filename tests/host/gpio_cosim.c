@@ -14,6 +14,11 @@
  *       --unplug-after N: once the board has taken N stream bytes the lines
  *       go dead (the socket closes: the board's pull-downs, nothing on the
  *       host's inputs), as if the cable were pulled.
+ *   gpio_cosim SOCKET --bench KIB STEP_CYCLES
+ *       the link tests by hand: KIB x 1040 bytes in sink mode, KIB KiB in
+ *       source mode; bus cycles, host steps, wall time, and board time taken
+ *       as host steps x STEP_CYCLES at 60 MHz (board_sim --gpio-lockstep
+ *       --gpio-step-cycles STEP_CYCLES makes that exact).
  *   gpio_cosim SOCKET --selftest SERIAL
  *       the bus through the transport: identify (serial SERIAL) and status,
  *       the host's timing as the chip sees it, an engine failure (err with
@@ -172,6 +177,52 @@ static void selftest(emu_chip *e, const char *serial)
     ef_transport_gpio.close(l);
 }
 
+static double now_s(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
+}
+
+/* One link test (docs/board.md section 8) by hand: payload bytes each way, and what it cost on
+ * the bus (cycles), in host steps (GPIO calls, as the chip counted them) and in wall time. */
+static void bench_mode(emu_chip *e, ef_link *l, uint32_t mode, unsigned kib, unsigned step_cycles)
+{
+    static uint8_t f[EF_PROTO_HEADER + 1040 + EF_PROTO_TRAILER], buf[65536];
+    uint8_t start[EF_PROTO_START_LEN] = { 0 };
+    const unsigned nframes = mode == EF_MODE_SINK ? kib : 0; /* 1040-byte DATA payloads (80 commands) */
+    uint64_t su, ho, sets, gets, edges;
+    check(ef_transport_gpio.reset(l) == 0, "bench: reset: %s", ef_gpio_link_detail(l));
+    emu_chip_timing(e, &su, &ho, &sets, &gets, &edges);
+    const unsigned long long c0 = ef_gpio_link_cycles(l);
+    const double t0 = now_s();
+    ef_put32(start + 8, mode);
+    ef_put32(start + 12, mode == EF_MODE_SOURCE ? kib : 0);
+    int rc = ef_transport_gpio.write(l, f, ef_frame_put(f, EF_FT_START, 0, 0, start, sizeof start), 10000);
+    for (uint32_t seq = 1; rc == 0 && seq <= nframes + 1; seq++) {
+        uint32_t len = seq <= nframes ? 1040 : 0;
+        memset(f + EF_PROTO_HEADER, (int)seq, len);
+        rc = ef_transport_gpio.write(l, f, ef_frame_seal(f, seq <= nframes ? EF_FT_DATA : EF_FT_END, 0, seq, len),
+                                     10000);
+    }
+    ef_frame fr;
+    int done = rc == 0 && read_frame(l, EF_FT_DONE, &fr, buf, sizeof buf);
+    const double dt = now_s() - t0;
+    const unsigned long long cycles = ef_gpio_link_cycles(l) - c0;
+    emu_chip_timing(e, &su, &ho, &sets, &gets, &edges);
+    const unsigned long long steps = sets + gets,
+                             payload = (unsigned long long)(nframes ? nframes * 1040u : kib * 1024u);
+    check(done, "bench %s: no DONE (rc %d, %s)", mode == EF_MODE_SINK ? "sink" : "source", rc, ef_gpio_link_detail(l));
+    const double board_s = (double)steps * step_cycles / 60e6;
+    printf("gpio-cosim: bench %s: %llu payload bytes, %llu bus cycles (%.2f payload bytes per cycle), %llu host steps "
+           "(%.2f per cycle); wall %.2f s: %.0f bus cycles/s, %.0f payload B/s; board time at %u sys cycles (60 MHz) "
+           "a step: %.6f s: %.0f bus cycles/s, %.0f payload B/s\n",
+           mode == EF_MODE_SINK ? "sink (host to board)" : "source (board to host)", payload, cycles,
+           cycles ? (double)payload / (double)cycles : 0.0, steps, cycles ? (double)steps / (double)cycles : 0.0, dt,
+           dt > 0 ? (double)cycles / dt : 0.0, dt > 0 ? (double)payload / dt : 0.0, step_cycles, board_s,
+           board_s > 0 ? (double)cycles / board_s : 0.0, board_s > 0 ? (double)payload / board_s : 0.0);
+}
+
 int main(int argc, char **argv)
 {
     if (argc == 2 && strcmp(argv[1], "--lines") == 0) {
@@ -186,6 +237,20 @@ int main(int argc, char **argv)
     emu_chip *e = emu_chip_new_sim(argv[1], WIRING);
     if (!e)
         return 2;
+    if (strcmp(argv[2], "--bench") == 0 && argc == 5) { /* gpio_cosim SOCKET --bench KIB STEP_CYCLES */
+        char err[256];
+        ef_host_opts o = { .chip = "gpiochip0", .lines = LINES, .timeout_ms = 10000 };
+        ef_link *l = NULL;
+        int rc = ef_transport_gpio.open(&l, &o, err, sizeof err);
+        check(rc == 0 && l, "open: rc %d: %s", rc, err);
+        if (l) {
+            bench_mode(e, l, EF_MODE_SINK, (unsigned)atoi(argv[3]), (unsigned)atoi(argv[4]));
+            bench_mode(e, l, EF_MODE_SOURCE, (unsigned)atoi(argv[3]), (unsigned)atoi(argv[4]));
+            ef_transport_gpio.close(l);
+        }
+        printf("gpio-cosim: %d checks, %d failed\n", checks, failed);
+        return failed ? 1 : 0;
+    }
     if (strcmp(argv[2], "--selftest") == 0 && argc == 4) {
         selftest(e, argv[3]);
         printf("gpio-cosim: %d checks, %d failed\n", checks, failed);
