@@ -80,10 +80,14 @@ static int usb_control(void)
 {
     if (!identified)
         return FW_REQ_IDENTIFY; /* once, at start: the mailbox first, then the pull-up */
-    const uint32_t st = usb_status_read();
+    uint32_t st = usb_status_read();
     const uint32_t req = (st & ST_REQ) ? 1u : 0u;
     if (req == acked)
         return FW_REQ_NONE;
+    /* The toggle and its code change together in the usb domain and cross into sys through a
+     * synchroniser each: one may arrive a sys cycle before the other.  Read the code again, a
+     * CSR access later, when both have arrived. */
+    st = usb_status_read();
     seen = req;
     switch ((st >> ST_CODE_SHIFT) & 3u) {
     case 1: return FW_REQ_STATUS;
