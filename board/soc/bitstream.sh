@@ -13,8 +13,10 @@ py=${EF_VENV:-build/venv}/bin/python
 log=$dir/bitstream.log
 start=$(date +%s)
 echo "bitstream: $board, ef_raster NS $ns, seed $seed (Yosys, nextpnr-ecp5 and ecppack from PyPI: slow on a busy machine)"
+# EF_SOC_FLAGS: more soc.py options (`make bitstream BOARD_GPIO=0` gives --no-gpio)
+# shellcheck disable=SC2086
 if ! "$py" board/soc/soc.py --target "$board" --ns "$ns" --out "$dir" --rom "$dir/firmware.bin" --seed "$seed" \
-        >"$log" 2>&1; then
+        ${EF_SOC_FLAGS:-} >"$log" 2>&1; then
     grep -E "ERROR|Error|error:|FAIL" "$log" | tail -n 20
     tail -n 20 "$log"
     echo "bitstream: FAILED (log: $log)" >&2
@@ -27,7 +29,9 @@ bit=$dir/gateware/radiona_ulx3s.bit
 util=$(awk '/Device utilisation:/{buf=""; on=1; next} on && /^Info:[ \t]*[A-Z_0-9]+: /{buf=buf $0 "\n"; next} on{on=0} END{printf "%s", buf}' "$log")
 cell() { printf '%s\n' "$util" | awk -v c="$1" '$2 == c":" {print $3 $4}'; }
 lut4=$(awk '$2 == "LUT4" {v=$1} END{print v}' "$dir/gateware/radiona_ulx3s.rpt" 2>/dev/null)
-fmax=$(grep -E "Max frequency for clock" "$log" | tail -n 3)
+# (nextpnr prints them after placement and after routing: the last line of each clock)
+nclk=$(grep -E "Max frequency for clock" "$log" | sed "s/.*for clock *'\{0,1\}//; s/'\{0,1\}: .*//" | sort -u | wc -l)
+fmax=$(grep -E "Max frequency for clock" "$log" | tail -n "$nclk")
 if [ -z "$util" ] || [ -z "$fmax" ]; then
     echo "bitstream: no utilisation or Fmax in $log" >&2
     exit 1
