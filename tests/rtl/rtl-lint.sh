@@ -150,6 +150,7 @@ TB=dv/tb
 vl tb_raster --top-module tb_raster $TB/tb_raster.v $RTL || l_ok=0
 vl "tb_raster (a user DUT)" -DEF_TB_USER_DUT --top-module tb_raster $TB/tb_raster.v $RTL || l_ok=0
 vl tb_dec --top-module tb_dec $TB/tb_dec.v $R/ef_dec.v || l_ok=0
+vl tb_err --top-module tb_err $TB/tb_err.v $RTL || l_ok=0
 vl tb_setup --top-module tb_setup $TB/tb_setup.v $R/ef_setup.v $R/ef_div.v $R/ef_slb_ram.v || l_ok=0
 vl tb_etm --top-module tb_etm $TB/tb_etm.v $R/ef_etm.v $R/ef_slb_ram.v || l_ok=0
 vl tb_slb_fill --top-module tb_slb_fill $TB/tb_slb_fill.v $R/ef_slb_fill.v $R/ef_slb_ram.v || l_ok=0
@@ -163,7 +164,7 @@ vl "tb_lockstep (ef_raster)" --top-module tb_lockstep $R/ef_ifaces_pkg.sv dv/dpi
 vl "tb_lockstep (ef_slb_fill)" -DEF_TB_DUT_SLB --top-module tb_lockstep $R/ef_ifaces_pkg.sv dv/dpi/ef_model_pkg.sv dv/dpi/tb_lockstep.sv $RTL || l_ok=0
 vl "ef_ifaces_pkg.sv (lint wrapper)" --top-module ef_ifaces_pkg_lint $R/ef_ifaces_pkg.sv dv/lint/ef_ifaces_pkg_lint.sv || l_ok=0
 }
-n=$((n + 15))
+n=$((n + 16))
 out=$(iverilog -g2012 -Wall -o /dev/null $R/ef_ifaces_pkg.sv dv/lint/ef_ifaces_pkg_lint.sv 2>&1)
 [ -z "$out" ] || { l_ok=0; bad "iverilog -g2012 -Wall of ef_ifaces_pkg.sv + its lint wrapper is not silent" "$out"; }
 # every Verilog file of rtl/ and dv/ is in some lint
