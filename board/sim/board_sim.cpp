@@ -13,14 +13,15 @@
 // bytes arrive and leave as fast as the FT231X would bring them.
 //
 //   board_sim --dir GATEWARE_DIR [--pty-link FILE] [--listen PATH] [--baud N]
-//             [--max-seconds S] [--quiet]
+//             [--max-seconds S] [--quiet] [--gpio-listen PATH [--gpio-step-cycles N] [--gpio-lockstep]]
 //
 // --dir: where the memory images (sim_rom.init, ...) are.  With --pty-link
 // the pseudo-terminal's name (/dev/pts/N) is written into FILE; it is always
 // the first line of the standard output; with --listen the board listens on the unix socket PATH instead
 // (one host at a time; a host's disconnection keeps the board's run, as a
 // powered board keeps it).  On SIGTERM or SIGINT, or after --max-seconds of
-// wall time, it prints the cycles simulated and the bytes moved, and exits 0.
+// wall time, it prints the cycles simulated and the bytes moved, and exits 0.  --gpio-listen: the
+// SoC's GPIO bus pins behind a unix socket for the emulated gpiochip of the tests (gpio_link.cpp).
 #include <cerrno>
 #include <csignal>
 #include <cstdint>
@@ -36,6 +37,7 @@
 #include <unistd.h>
 
 #include "Vsim.h"
+#include "gpio_link.h"
 #include "verilated.h"
 
 static volatile sig_atomic_t stop_now;
@@ -51,7 +53,8 @@ static double now_s()
 static void usage()
 {
     std::fprintf(stderr, "usage: board_sim --dir GATEWARE_DIR [--pty-link FILE | --listen PATH] [--baud N] "
-                         "[--max-seconds S] [--quiet]\n");
+                         "[--max-seconds S] [--quiet] [--gpio-listen PATH [--gpio-step-cycles N] "
+                         "[--gpio-lockstep]]\n");
     std::exit(2);
 }
 
@@ -60,6 +63,9 @@ int main(int argc, char **argv)
     const char *dir = nullptr, *pty_link = nullptr, *listen_path = nullptr;
     double baud = 3e6, max_seconds = 0;
     int quiet = 0;
+    const char *gpio_path = nullptr;
+    unsigned gpio_step = 60;
+    bool gpio_lockstep = false;
     for (int i = 1; i < argc; i++) {
         std::string a = argv[i];
         if (a == "--dir" && i + 1 < argc)
@@ -74,6 +80,12 @@ int main(int argc, char **argv)
             max_seconds = std::atof(argv[++i]);
         else if (a == "--quiet")
             quiet = 1;
+        else if (a == "--gpio-listen" && i + 1 < argc)
+            gpio_path = argv[++i];
+        else if (a == "--gpio-step-cycles" && i + 1 < argc)
+            gpio_step = (unsigned)std::atoi(argv[++i]);
+        else if (a == "--gpio-lockstep")
+            gpio_lockstep = true;
         else
             usage();
     }
@@ -126,6 +138,9 @@ int main(int argc, char **argv)
             }
         }
     }
+    GpioLink *gpio = gpio_path ? gpio_link_open(gpio_path, gpio_step, gpio_lockstep) : nullptr;
+    if (gpio_path && !gpio)
+        return 1;
     std::fflush(stdout);
     if (chdir(dir) != 0) {   // the $readmemh images are named relative to the gateware folder
         std::perror("board_sim: --dir");
@@ -183,6 +198,8 @@ int main(int argc, char **argv)
         top.serial_sink_valid = in_pos < in_len && cyc >= next_rx;
         top.serial_sink_data = in_pos < in_len ? in[in_pos] : 0;
         top.serial_source_ready = out_len < sizeof out && cyc >= next_tx;
+        if (gpio)
+            gpio_link_cycle(gpio, top, cyc);
         // sys falls, then rises; ef is high for sys cycles 0 and 1 of every 4, so it rises
         // with every fourth sys rise and falls two sys cycles later
         top.sys_clk = 0;
@@ -210,6 +227,8 @@ int main(int argc, char **argv)
                      "%llu bytes out\n",
                      (unsigned long long)cyc, cyc / (double)sys_hz, dt, cyc / dt, (unsigned long long)bytes_in,
                      (unsigned long long)bytes_out);
+    if (gpio)
+        gpio_link_close(gpio, (double)sys_hz);
     top.final();
     return 0;
 }
