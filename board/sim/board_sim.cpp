@@ -14,6 +14,7 @@
 //
 //   board_sim --dir GATEWARE_DIR [--pty-link FILE] [--listen PATH] [--baud N]
 //             [--max-seconds S] [--quiet] [--gpio-listen PATH [--gpio-step-cycles N] [--gpio-lockstep]]
+//             [--usb PATH]
 //
 // --dir: where the memory images (sim_rom.init, ...) are.  With --pty-link
 // the pseudo-terminal's name (/dev/pts/N) is written into FILE; it is always
@@ -22,6 +23,9 @@
 // powered board keeps it).  On SIGTERM or SIGINT, or after --max-seconds of
 // wall time, it prints the cycles simulated and the bytes moved, and exits 0.  --gpio-listen: the
 // SoC's GPIO bus pins behind a unix socket for the emulated gpiochip of the tests (gpio_link.cpp).
+// --usb PATH: the SoC's USB device on a unix socket for tests/host/usb_emu.c
+// (--soc), through the host controller of usb_link.cpp (the usb clock is 12
+// MHz: one every 5 sys cycles).
 #include <cerrno>
 #include <csignal>
 #include <cstdint>
@@ -38,6 +42,7 @@
 
 #include "Vsim.h"
 #include "gpio_link.h"
+#include "usb_link.h"
 #include "verilated.h"
 
 static volatile sig_atomic_t stop_now;
@@ -60,7 +65,7 @@ static void usage()
 
 int main(int argc, char **argv)
 {
-    const char *dir = nullptr, *pty_link = nullptr, *listen_path = nullptr;
+    const char *dir = nullptr, *pty_link = nullptr, *listen_path = nullptr, *usb_path = nullptr;
     double baud = 3e6, max_seconds = 0;
     int quiet = 0;
     const char *gpio_path = nullptr;
@@ -78,6 +83,8 @@ int main(int argc, char **argv)
             baud = std::atof(argv[++i]);
         else if (a == "--max-seconds" && i + 1 < argc)
             max_seconds = std::atof(argv[++i]);
+        else if (a == "--usb" && i + 1 < argc)
+            usb_path = argv[++i];
         else if (a == "--quiet")
             quiet = 1;
         else if (a == "--gpio-listen" && i + 1 < argc)
@@ -163,6 +170,17 @@ int main(int argc, char **argv)
     top.serial_sink_valid = 0;
     top.serial_source_ready = 0;
     top.sim_trace = 0;
+    top.utmi_line_state = 2;   // J: an idle bus, no reset
+    UsbLink *usb = nullptr;
+    if (usb_path) {
+        usb = usb_link_new(usb_path, UtmiPins{ &top.utmi_rx_data, &top.utmi_rx_valid, &top.utmi_rx_active,
+                                               &top.utmi_rx_error, &top.utmi_tx_ready, &top.utmi_line_state,
+                                               &top.utmi_tx_data, &top.utmi_tx_valid, &top.utmi_term_select });
+        if (!usb)
+            return 1;
+        std::printf("board_sim: usb on %s\n", usb_path);
+        std::fflush(stdout);
+    }
     uint64_t cyc = 0;
     for (; !stop_now; cyc++) {
         if (cyc == 16)
@@ -193,7 +211,14 @@ int main(int argc, char **argv)
             }
             if ((cyc & ((1u << 22) - 1)) == 0 && max_seconds > 0 && now_s() - t0 > max_seconds)
                 break;
+            if (usb)
+                usb_link_poll(usb);
         }
+        // usb rises with every fifth sys rise (12 MHz): its inputs before, its outputs between
+        const unsigned um = (unsigned)(cyc % 5);
+        const bool frozen = usb && usb_link_frozen(usb);
+        if (usb && um == 0)
+            usb_link_drive(usb);
         // the UART's PHY streams, at the line rate
         top.serial_sink_valid = in_pos < in_len && cyc >= next_rx;
         top.serial_sink_data = in_pos < in_len ? in[in_pos] : 0;
@@ -203,13 +228,17 @@ int main(int argc, char **argv)
         // sys falls, then rises; ef is high for sys cycles 0 and 1 of every 4, so it rises
         // with every fourth sys rise and falls two sys cycles later
         top.sys_clk = 0;
-        top.ef_clk = ((cyc - 1) & 3) < 2;
+        top.ef_clk = frozen ? 0 : ((cyc - 1) & 3) < 2;
+        top.usb_clk = um == 1 || um == 2;
         top.eval();
+        if (usb && um == 0)
+            usb_link_sample(usb);
         const bool rx_take = top.serial_sink_valid && top.serial_sink_ready;
         const bool tx_take = top.serial_source_valid && top.serial_source_ready;
         const uint8_t tx_byte = top.serial_source_data;
-        top.sys_clk = 1;
-        top.ef_clk = (cyc & 3) < 2;
+        top.sys_clk = !frozen;   // a frozen board: its CPU and ef_raster stand still (usb_wire.h)
+        top.ef_clk = frozen ? 0 : (cyc & 3) < 2;
+        top.usb_clk = um <= 2;
         top.eval();
         if (rx_take) {
             in_pos++, bytes_in++;
@@ -229,6 +258,11 @@ int main(int argc, char **argv)
                      (unsigned long long)bytes_out);
     if (gpio)
         gpio_link_close(gpio, (double)sys_hz);
+    if (usb) {
+        if (!quiet)
+            usb_link_report(usb, cyc / (double)sys_hz, dt);
+        usb_link_free(usb);
+    }
     top.final();
     return 0;
 }
