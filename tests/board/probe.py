@@ -261,6 +261,36 @@ def main():
     check(again["error"] is None and again["results"] == full["results"],
           "after a run cut by a reset, the same run gives the same records", (again["error"], again["done"]))
 
+    # --- identify's limits are the DUT's (section 3.1, 3.2): a FRAME of exactly W_MAX x 1 and of
+    # 1 x H_MAX is rendered, one a pixel over either is refused by the DUT (ERROR code 16)
+    wmax, hmax = struct.unpack("<II", ident[20:28])
+    for w, h, ok_ in ((wmax, 1, True), (1, hmax, True), (wmax + 1, 1, False), (1, hmax + 1, False)):
+        r = dut_run(b, ifaces, samples, 0, b"", cmd(1, w, h) + cmd(5))
+        if ok_:
+            check(r["error"] is None and r["done"][2] == 2, "a FRAME of %d x %d (identify's limits): DONE" % (w, h),
+                  (r["error"], r["done"]))
+        else:
+            check(r["error"] is not None and r["error"][0] == 16,
+                  "a FRAME of %d x %d (a pixel over identify's limits): ERROR code 16" % (w, h), r["error"])
+
+    # --- a connection that ends in the middle of a frame (section 5.5): the board drops the part
+    # it had, so the next connection's first frame is taken with no NAK
+    b.reset()
+    b.send(frame(T_START, 0, start_payload(0, 0, 1)))
+    b.frames(1.0)
+    part = frame(T_DATA, 1, b"\0" * 13)
+    b.send(part[:11])
+    b.s.close()
+    time.sleep(0.5)
+    b2 = Board(sys.argv[1][5:])
+    b2.send(part)
+    fs = b2.frames(1.5)
+    check([t for t, _, _ in fs] == [T_ACK] and struct.unpack("<III", fs[0][2])[0] == 2,
+          "a frame cut by the end of a connection, sent whole on the next: taken (ACK 2), no NAK",
+          [(hex(t), p.hex()) for t, _, p in fs])
+    b2.bad_flags += b.bad_flags
+    b = b2
+
     check(not b.bad_flags, "every board frame has flags 0 (docs/board.md 2: no flag is defined board -> host)",
           b.bad_flags)
     print("%d passed, %d failed" % (passed, failed))
