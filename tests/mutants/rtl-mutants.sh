@@ -84,6 +84,7 @@ files=(ef_raster.v ef_dec.v ef_setup.v ef_div.v ef_etm.v ef_aet.v ef_plot.v ef_s
 # an RTL variant (dv/rtl-variant.sh: a copy of rtl/ with its include files), whose .v files
 # rtl_mutate.py then replaces by their schemata in place
 bash "$root/dv/rtl-variant.sh" "$work/mut" >/dev/null || { echo "FAIL rtl-mutants: dv/rtl-variant.sh"; echo "0 passed, 1 failed"; exit 1; }
+mkdir -p "$work/orig" && cp "$work/mut"/*.v "$work/mut"/*.vh "$work/orig/"   # the sources as mutated, for the report
 # and the n-rooks table, a function included in ef_plot's body
 nall=$(python3 "$root/dv/mutants/rtl_mutate.py" "$work/mut" "${files[@]/#/$work/mut/}" "$work/mut/ef_rooks.vh") ||
     { echo "0 passed, 1 failed"; exit 1; }
@@ -270,7 +271,7 @@ fi
 
 # ------------------------------------------------------------ 6. report
 python3 - "$work/selected.tsv" "$work/stage1.txt" "$work/stage2.txt" "${EF_MUT_EQUIV:-$root/dv/mutants/equivalent.tsv}" \
-    "${EF_MUT_REGRESS:-1}" "$work/strata.tsv" >"$work/report.txt" 2>"$work/results.tsv" <<'EOF' || { cat "$work/report.txt" "$work/results.tsv"; echo "FAIL rtl-mutants: the report"; echo "$pass passed, $((fail + 1)) failed"; exit 1; }
+    "${EF_MUT_REGRESS:-1}" "$work/strata.tsv" "$work/orig" >"$work/report.txt" 2>"$work/results.tsv" <<'EOF' || { cat "$work/report.txt" "$work/results.tsv"; echo "FAIL rtl-mutants: the report"; echo "$pass passed, $((fail + 1)) failed"; exit 1; }
 import sys
 sel = [l.rstrip("\n").split("\t") for l in open(sys.argv[1]) if l.strip()]
 def res(p):
@@ -286,10 +287,25 @@ try:
     for l in open(sys.argv[4]):
         if l.startswith("#") or not l.strip() or l.startswith("key\t"):
             continue
-        k, why = l.rstrip("\n").split("\t", 1)
-        eqv[k] = why
+        k, src, why = l.rstrip("\n").split("\t", 2)
+        eqv[k] = (src, why)
 except FileNotFoundError:
     pass
+# an entry holds while the mutated line reads as it did when it was triaged (a key's occurrence
+# number can move to other code when the file changes): else the mutant counts as a survivor
+rtl_src = {}
+def line_of(f, ln):
+    if f not in rtl_src:
+        rtl_src[f] = open(sys.argv[7] + "/" + f).read().split("\n")
+    return " ".join(rtl_src[f][int(ln) - 1].split())
+stale = []
+def is_eqv(f, ln, key):
+    if key not in eqv:
+        return False
+    if eqv[key][0] != line_of(f, ln):
+        stale.append("stale equivalence (the line changed, triage it again): %s rtl/%s:%s '%s'" % (key, f, ln, line_of(f, ln)))
+        return False
+    return True
 regress = sys.argv[5] == "1"
 blocks = {}
 surv = []
@@ -304,7 +320,7 @@ for mid, f, line, op, key, old, new in sel:
         b[1] += 1; verdict = "killed-rtl-test " + s1[mid][1]
     elif st2 == "killed":
         b[2] += 1; verdict = "killed-regression " + s2[mid][1]
-    elif key in eqv:
+    elif is_eqv(f, line, key):
         b[3] += 1; verdict = "equivalent"
     else:
         b[4] += 1; verdict = "SURVIVED"; surv.append((f, line, op, old, new, key))
@@ -343,7 +359,7 @@ per = {}
 for mid, f, line_, op, key, old, new in sel:
     st1 = s1[mid][0]
     st2 = s2.get(mid, ("", ""))[0]
-    eq = st1 != "killed" and st2 != "killed" and key in eqv
+    eq = st1 != "killed" and st2 != "killed" and key in eqv and eqv[key][0] == line_of(f, line_)
     per.setdefault(f, []).append((0 if eq else 1, 1 if st1 == "killed" else 0,
                                   1 if st1 == "killed" or st2 == "killed" else 0))
 for which, name in ((1, "rtl-test"), (2, "+regression")):
@@ -369,6 +385,8 @@ for f in sorted(per):
     rs = per[f]
     print("  %-14s sample %3d of %3d; rtl-test killed %3d of %3d non-equivalent, Wilson 95 %% %s"
           % (f, len(rs), pop[f], sum(r[1] for r in rs), sum(r[0] for r in rs), wilson(sum(r[1] for r in rs), sum(r[0] for r in rs))))
+for l in stale:
+    print(l)
 for f, ln, op, old, new, key in surv:
     print("survivor: rtl/%s:%s %s: '%s' -> '%s'  key %s" % (f, ln, op, old[:60], new[:60], key))
 print("SURVIVORS %d" % len(surv))
