@@ -25,7 +25,8 @@
 #                        EF_COV_SLICE_ONLY=N: every Nth of them at NS 8);
 #                        EF_COV_REGRESS=3: each level-1 case at three settings
 #                        (NS 8/16/32, the rule rotating) instead of all nine
-#   EF_COV_MAXCYC=N      leave out cases of more than N cycles (default: none)
+#   EF_COV_MAXCYC=N      leave out cases of more than N cycles (default: none);
+#                        EF_COV_REG_MAXCYC=N only the level-1 regression's
 #   EF_COV_REUSE=DIR     a work folder kept (EF_COV_KEEP=1) by an earlier run of
 #                        the same tree: its --coverage builds are reused
 #   EF_COV_REQUIRE=1     exit 1 unless the targets are met (every line and
@@ -141,6 +142,8 @@ one() {   # one NAME INPUT NS RULE SIZE BP: "PASS NAME", "SKIP NAME why" or "FAI
     if [ "$me" -gt $EM ]; then echo "SKIP $1 a shape of $me edges"; rm -rf "$d"; return; fi
     cyc=$(sed -n 's/.*"cycles": \([0-9]*\).*/\1/p' "$d/manifest.json")
     if [ "${EF_COV_MAXCYC:-0}" -gt 0 ] && [ "$cyc" -gt "$EF_COV_MAXCYC" ]; then echo "SKIP $1 $cyc cycles"; rm -rf "$d"; return; fi
+    case $1 in reg_*) if [ "${EF_COV_REG_MAXCYC:-0}" -gt 0 ] && [ "$cyc" -gt "$EF_COV_REG_MAXCYC" ]; then
+        echo "SKIP $1 $cyc cycles"; rm -rf "$d"; return; fi ;; esac
     [ "$6" != - ] && { pa=(+bp="$6"); mode=--transactions; }
     r=$(cd "$d" && "$work/vl_$3/Vtb_raster" +cmd="$d/cmd.stim.hex" +out="$a/" +covfile="$work/dat/$1.dat" "${pa[@]}" 2>&1)
     if ! echo "$r" | grep -q '^tb_raster: DONE'; then echo "FAIL $1 bench: $(echo "$r" | grep 'tb_raster' | head -n 1)"
