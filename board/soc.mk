@@ -2,7 +2,7 @@
 # (board/firmware: board/ef_board.c unchanged) and the whole board under Verilator (board/sim).
 # Included by the Makefile.
 #
-#   make bitstream BOARD=ulx3s-25f|ulx3s-85f [BOARD_NS=8|16] [BOARD_SEED=N] [BOARD_GPIO=0]
+#   make bitstream BOARD=ulx3s-25f|ulx3s-85f [BOARD_NS=8|16] [BOARD_SEED=N] [BOARD_GPIO=0] [BOARD_USB=0]
 #        -> build/board/$(BOARD)-ns$(BOARD_NS)/gateware/radiona_ulx3s.bit, utilisation and Fmax
 #           printed; fails when timing is not met (nextpnr without --timing-allow-fail)
 #   make firmware [BOARD=...]   the firmware alone (its size printed)
@@ -10,6 +10,7 @@
 #   make board-sim-test         verify through the simulated board (tests/board/soc_sim.sh)
 #   make board-gpio-test        edgeflag-host over emulated GPIO into its gateware (tests/board/gpio_cosim.sh)
 #   BOARD_GPIO=0                the SoC without the GPIO bus slave (build/board/...-nogpio)
+#   BOARD_USB=0                 the SoC without the USB device (build/board/...-nousb)
 #   make board-sim-usb-test     the same over USB: libusb, umockdev, the SoC's USB device
 #                               (tests/board/usb_sim.sh)
 #   EF_BOARD_SERIAL=...         the serial number identify reports (default EFULX3S-0001)
@@ -19,7 +20,8 @@ BOARD_SEED ?= 1
 EF_VENV ?= build/venv
 EF_VENV_PY := $(EF_VENV)/bin/python
 BOARD_GPIO ?= 1
-BOARD_DIR := $(BUILD)/board/$(BOARD)-ns$(BOARD_NS)$(if $(filter 0,$(BOARD_GPIO)),-nogpio)
+BOARD_USB ?= 1
+BOARD_DIR := $(BUILD)/board/$(BOARD)-ns$(BOARD_NS)$(if $(filter 0,$(BOARD_GPIO)),-nogpio)$(if $(filter 0,$(BOARD_USB)),-nousb)
 BOARD_SIM_DIR := $(BUILD)/board/sim-ns$(BOARD_NS)
 BOARD_SOC_SRC := board/soc/soc.py board/soc/ef_periph.py board/soc/ef_gpio.py board/soc/ef_usb.py board/soc/usb_core.py board/soc/ef_gate_ecp5.v board/soc/ef_gate_sim.v \
                  $(wildcard rtl/*.v) $(wildcard rtl/*.vh)
@@ -40,7 +42,7 @@ include board/firmware/firmware.mk
 $(BUILD)/board/%/software/include/generated/csr.h: $(BOARD_SOC_SRC) $(BOARD_TOOLS)
 	@mkdir -p $(BUILD)/board
 	$(EF_VENV_PY) board/soc/soc.py --target $(if $(filter sim-%,$*),sim,$(BOARD)) --ns $(BOARD_NS) \
-	    $(if $(findstring -nogpio,$*),--no-gpio) --out $(BUILD)/board/$* --headers-only >$(BUILD)/board/$*.headers.log 2>&1 || \
+	    $(if $(findstring -nogpio,$*),--no-gpio) $(if $(findstring -nousb,$*),--no-usb) --out $(BUILD)/board/$* --headers-only >$(BUILD)/board/$*.headers.log 2>&1 || \
 	    { tail -n 20 $(BUILD)/board/$*.headers.log; exit 1; }
 
 firmware: $(BOARD_TOOLS)
@@ -48,7 +50,7 @@ firmware: $(BOARD_TOOLS)
 
 bitstream: $(BOARD_TOOLS)
 	$(MAKE) --no-print-directory $(BOARD_DIR)/firmware.bin FW_SOC=$(BOARD_DIR)
-	EF_SOC_FLAGS="$(if $(filter 0,$(BOARD_GPIO)),--no-gpio)" bash board/soc/bitstream.sh $(BOARD) $(BOARD_NS) \
+	EF_SOC_FLAGS="$(if $(filter 0,$(BOARD_GPIO)),--no-gpio) $(if $(filter 0,$(BOARD_USB)),--no-usb)" bash board/soc/bitstream.sh $(BOARD) $(BOARD_NS) \
 	    $(BOARD_DIR) $(BOARD_SEED)
 
 # The simulated board: the SoC's Verilog for the sim target with the firmware in its ROM, and

@@ -12,7 +12,8 @@
  *
  * IN bursts end with a short packet or a zero-length packet (section 4): the
  * last byte of what the engine offers is held back until the next call, and
- * sent marked "last" when the engine has nothing more.
+ * sent marked "last" when the engine has nothing more; a burst also ends
+ * after BURST_MAX bytes, so the host gets the ACKs among streaming results.
  */
 #include "link.h"
 
@@ -24,11 +25,16 @@
 #define ST_CODE_SHIFT 3
 #define IN_LAST 0x100u
 #define MB_STATUS 64u
+/* A burst ends after this many bytes even when the engine has more: while results stream, the
+ * host's IN transfers (64 KiB) would otherwise complete only when full, holding back the ACKs
+ * among the results; 1 KiB at full speed is under 1 ms of the bus. */
+#define BURST_MAX 1024u
 
 static int identified; /* the mailbox holds identify and the board is on the bus */
 static uint32_t acked; /* the request toggle last served */
 static uint32_t seen;  /* the toggle of the request being served */
 static int held = -1;  /* the byte held back, or -1 */
+static unsigned burst; /* IN bytes since the last burst ended */
 
 static void usb_mailbox(unsigned at, const uint8_t *buf, size_t len)
 {
@@ -46,17 +52,25 @@ static size_t usb_rx(uint8_t *buf, size_t cap)
     return n;
 }
 
+/* One IN byte; "last" ends the burst (a short packet, or a ZLP after a full one). */
+static void put(uint32_t b, int last)
+{
+    last |= burst + 1 >= BURST_MAX;
+    usb_in_data_write(b | (last ? IN_LAST : 0u));
+    burst = last ? 0 : burst + 1;
+}
+
 static size_t usb_tx(const uint8_t *buf, size_t len)
 {
     size_t n = 0;
     if (held >= 0) {
         if (!(usb_status_read() & ST_IN_ROOM))
             return 0;
-        usb_in_data_write((uint32_t)held | (len ? 0 : IN_LAST)); /* nothing more: the burst ends */
+        put((uint32_t)held, len == 0); /* nothing more: the burst ends */
         held = -1;
     }
     while (n + 1 < len && (usb_status_read() & ST_IN_ROOM))
-        usb_in_data_write(buf[n++]);
+        put(buf[n++], 0);
     if (n + 1 == len) /* the last byte offered: held until we know whether more follows */
         held = buf[n++];
     return n;

@@ -139,6 +139,9 @@ struct UsbLink {
 
     // figures
     uint64_t transactions = 0, naks = 0, timeouts = 0, bytes_out = 0, bytes_in = 0, sofs = 0, transfers = 0;
+    uint64_t data_out = 0, data_in = 0;       // bulk data packets the device ACKed / the host took
+    uint64_t zlps = 0, shorts = 0;            // bulk IN: zero-length and other short packets
+    uint64_t first_data = 0, last_data = 0;   // usb cycles of the first and last bulk data packet
 
     void send_msg(uint32_t op, uint32_t id, uint32_t a, uint32_t b, const uint8_t *data, uint32_t len)
     {
@@ -354,6 +357,7 @@ struct UsbLink {
         if (x.type == USBW_BULK) {
             const size_t n = std::min<size_t>(MPS, x.out.size() - x.done);
             x.done += n, bytes_out += n, tog_out = !tog_out;
+            note_data(data_out);
             if (x.done == x.out.size())
                 finish(USBW_OK);
             return;
@@ -421,6 +425,11 @@ struct UsbLink {
             const size_t room = x.in_len - x.in.size(), take = std::min(n, room);
             x.in.insert(x.in.end(), d, d + take);
             bytes_in += take;
+            note_data(data_in);
+            if (n == 0)
+                zlps++;
+            else if (n < (size_t)MPS)
+                shorts++;
             if (n < (size_t)MPS || x.in.size() == x.in_len || take < n)
                 finish(take < n ? USBW_EPROTO : USBW_OK);   // babble when the packet overflows
             return;
@@ -439,6 +448,13 @@ struct UsbLink {
         control_done(x);
     }
     void kind_done() { kind = NONE; }
+    void note_data(uint64_t &count)
+    {
+        count++;
+        if (!first_data)
+            first_data = cycle;
+        last_data = cycle;
+    }
 
     // Picks the next transaction, or nothing (the wire stays idle).
     void schedule()
@@ -624,6 +640,18 @@ bool usb_link_frozen(const UsbLink *u) { return u->frozen; }
 
 void usb_link_report(const UsbLink *u, double sim_s, double wall_s)
 {
+    // the bulk data packets alone, from the first to the last (12 MHz usb cycles)
+    const double span = (double)(u->last_data - u->first_data) / 12e6;
+    if (u->data_out + u->data_in)
+        std::fprintf(stderr,
+                     "board_sim: usb: %llu bulk OUT and %llu bulk IN data packets in %.4f s of board time from the "
+                     "first to the last (%.0f packets, %.0f bytes per simulated s; %.1f packets per wall s); IN bursts "
+                     "ended by %llu short and %llu zero-length packets\n",
+                     (unsigned long long)u->data_out, (unsigned long long)u->data_in, span,
+                     span > 0 ? (u->data_out + u->data_in) / span : 0.0,
+                     span > 0 ? (u->bytes_out + u->bytes_in) / span : 0.0,
+                     wall_s > 0 ? (u->data_out + u->data_in) / wall_s : 0.0, (unsigned long long)u->shorts,
+                     (unsigned long long)u->zlps);
     std::fprintf(
         stderr,
         "board_sim: usb: %llu transfers, %llu transactions (%.0f per simulated s, %.0f per wall s), %llu NAKed, "

@@ -100,7 +100,7 @@ class VendorRequests(USBRequestHandler):
         self.ident = [Signal(8, name=f"ident_{i}") for i in range(IDENTIFY_LEN)]
         self.status = [Signal(8, name=f"status_{i}") for i in range(STATUS_LEN)]
         self.req = Signal()       # toggles when a request needs the firmware
-        self.code = Signal(2)     # 1 STATUS, 2 RESET
+        self.code = Signal(2)     # 1 STATUS, 2 RESET, 3 a bus reset
         self.ack = Signal()       # the firmware's toggle (synchronised)
         self.resetting = Signal()  # a RESET or a bus reset waits for the firmware
         self.bus_reset = Signal()  # in: a USB bus reset (plug-in, re-enumeration)
