@@ -379,8 +379,16 @@ for which, name in ((1, "rtl-test"), (2, "+regression")):
         m = sum(d) / nh
         v += Nh * Nh * (1 - nh / Nh) * sum((x - m) ** 2 for x in d) / (nh - 1) / nh
     se = math.sqrt(v) / X
-    print("estimate over all %d mutants (%s): %.1f %% of non-equivalent killed, 95 %% interval [%.1f, %.1f] %%"
-          % (sum(pop.values()), name, 100 * R, 100 * max(0, R - 1.96 * se), 100 * min(1, R + 1.96 * se)))
+    if se > 0:
+        ci = "95 %% interval [%.1f, %.1f] %%" % (100 * max(0, R - 1.96 * se), 100 * min(1, R + 1.96 * se))
+    else:
+        # every sampled mutant killed (or none): the normal interval collapses; the Wilson interval
+        # of the pooled sample stands instead
+        k = sum(sum(r[which] for r in rs) for rs in per.values())
+        n = sum(sum(r[0] for r in rs) for rs in per.values())
+        ci = "Wilson 95 %% of the pooled sample %s" % wilson(k, n)
+    print("estimate over all %d mutants (%s): %.1f %% of non-equivalent killed, %s"
+          % (sum(pop.values()), name, 100 * R, ci))
 for f in sorted(per):
     rs = per[f]
     print("  %-14s sample %3d of %3d; rtl-test killed %3d of %3d non-equivalent, Wilson 95 %% %s"
