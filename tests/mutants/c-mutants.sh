@@ -37,6 +37,10 @@ b=$work/b
 mkdir -p "$b"
 (cd "$build" && tar --exclude=./venv -cf - .) | (cd "$b" && tar -xf -)
 cd "$root" || exit 1
+# the copy is relinked with the tree's make rules: a tree that changes under the run (a merge)
+# would rebuild the copy from other sources and "kill" every mutant; the run stops instead
+treestate() { { git -C "$root" rev-parse HEAD; git -C "$root" status --porcelain --untracked-files=no; } 2>/dev/null | cksum; }
+tree0=$(treestate)
 relink() { make --no-print-directory -s BUILD="$b" "$b/edgeflag-host" "$b/tests/host/sockboard" >"$work/link.log" 2>&1; }
 # the second oracle, for a mutant that tests/host/run.sh does not kill: tests/board/probe.py (the
 # engine's answers to what no correct host sends, make test-host-socket) against the copy's
@@ -84,6 +88,10 @@ print("\n".join(rows))
 EOF
     echo "c-mutants: $f: $(grep -c . "$work/sel.tsv") of $(grep -c . "$work/all.tsv") mutants drawn (seed $seed)"
     while IFS=$'\t' read -r id line op old new; do
+        if [ "$(treestate)" != "$tree0" ]; then
+            echo "FAIL c-mutants: the tree changed under the run (a commit or an edit): its verdicts would not be of one build"
+            echo "1 passed, 1 failed"; exit 1
+        fi
         mdir=$work/src/$(dirname "$f"); mkdir -p "$mdir"
         python3 "$root/tests/mutants/c_mutate.py" write "$f" "$id" "$mdir/$(basename "$f")"
         mcmd=${cmd/ -c $f / -iquote $(dirname "$f") -c $mdir/$(basename "$f") }
