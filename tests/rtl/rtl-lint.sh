@@ -131,7 +131,7 @@ linted=()
 # vl NAME ARGS...: verilator --lint-only -Wall with the waivers must print nothing
 vl() {
     local name=$1 out a; shift
-    out=$(verilator --lint-only -Wall --timing -I"$R" "$W" "$@" 2>&1)
+    out=$(verilator --lint-only -Wall --timing -I"$R" -Idv/tb "$W" "$@" 2>&1)
     for a in "$@"; do case $a in *.v | *.sv | *.vh) linted+=("$a") ;; esac; done
     if [ -n "$out" ]; then bad "verilator -Wall $name is not silent" "$out"; return 1; fi
     return 0
@@ -163,6 +163,8 @@ for t in ef_slb_fill_skip ef_spanq; do
 done
 # the includes, as the RTL's own files (linted through every module above)
 linted+=("$R/ef_ifaces.vh" "$R/ef_ns.vh" "$R/ef_rooks.vh")
+# the block benches' file helpers, linted through every bench that includes them
+linted+=(dv/tb/tb_files.vh)
 TB=dv/tb
 # shellcheck disable=SC2086
 {
@@ -170,6 +172,7 @@ vl tb_raster --top-module tb_raster $TB/tb_raster.v $RTL || l_ok=0
 vl "tb_raster (ef_raster_fast)" -DEF_FAST --top-module tb_raster $TB/tb_raster.v $FAST || l_ok=0
 vl "tb_raster (a user DUT)" -DEF_TB_USER_DUT --top-module tb_raster $TB/tb_raster.v $RTL || l_ok=0
 vl tb_dec --top-module tb_dec $TB/tb_dec.v $R/ef_dec.v || l_ok=0
+vl tb_err --top-module tb_err $TB/tb_err.v $RTL || l_ok=0
 vl tb_setup --top-module tb_setup $TB/tb_setup.v $R/ef_setup.v $R/ef_div.v $R/ef_slb_ram.v || l_ok=0
 vl tb_etm --top-module tb_etm $TB/tb_etm.v $R/ef_etm.v $R/ef_slb_ram.v || l_ok=0
 vl tb_slb_fill --top-module tb_slb_fill $TB/tb_slb_fill.v $R/ef_slb_fill.v $R/ef_slb_ram.v || l_ok=0
