@@ -8,6 +8,8 @@
 #   make firmware [BOARD=...]   the firmware alone (its size printed)
 #   make board-sim              the simulated board (build/board/sim-ns8/obj/board_sim)
 #   make board-sim-test         verify through the simulated board (tests/board/soc_sim.sh)
+#   make board-sim-faults       the same with the whole fault set (EF_SOCSIM_FULL=1: digest mode's
+#                               faults, an open shape refused, the bounded result queue on the SoC)
 #   EF_BOARD_SERIAL=...         the serial number identify reports (default EFULX3S-0001)
 BOARD ?= ulx3s-25f
 BOARD_NS ?= 8
@@ -20,7 +22,7 @@ BOARD_SOC_SRC := board/soc/soc.py board/soc/ef_periph.py board/soc/ef_gate_ecp5.
                  $(wildcard rtl/*.v) $(wildcard rtl/*.vh)
 BOARD_TOOLS := $(EF_VENV)/.installed-soc build/fpga-bin/nextpnr-ecp5
 
-.PHONY: board-tools firmware bitstream board-sim board-sim-test
+.PHONY: board-tools firmware bitstream board-sim board-sim-test board-sim-faults
 
 # the tools: Debian's cross compiler and picolibc, the pinned PyPI groups, the PATH shims
 $(BOARD_TOOLS): tools/requirements/soc.txt tools/requirements/fpga.txt tools/install-fpga.sh
@@ -60,7 +62,7 @@ $(BOARD_SIM_DIR)/gateware/sim.v: $(BOARD_SOC_SRC) | $(BOARD_SIM_DIR)/firmware.bi
 $(BOARD_SIM_DIR)/obj/board_sim: $(BOARD_SIM_DIR)/gateware/sim.v board/sim/board_sim.cpp
 	verilator $(BOARD_SIM_VFLAGS) -Mdir $(BOARD_SIM_DIR)/obj -o board_sim \
 	    $$(cat $(BOARD_SIM_DIR)/gateware/sources.txt) $(BOARD_SIM_DIR)/gateware/sim.v \
-	    $(abspath board/sim/board_sim.cpp) -CFLAGS -O2 >$(BOARD_SIM_DIR)/verilate.log 2>&1 || \
+	    $(abspath board/sim/board_sim.cpp) -CFLAGS -O2 -LDFLAGS -lz >$(BOARD_SIM_DIR)/verilate.log 2>&1 || \
 	    { tail -n 30 $(BOARD_SIM_DIR)/verilate.log; exit 1; }
 $(BOARD_SIM_DIR)/gateware/sim_rom.init: $(BOARD_SIM_DIR)/firmware.bin $(BOARD_SIM_DIR)/gateware/sim.v
 	od -An -v -tx4 -w4 $< | tr -d ' ' >$@.tmp && mv $@.tmp $@
@@ -71,3 +73,5 @@ board-sim: $(BOARD_TOOLS)
 
 board-sim-test: all board-sim $(PTYBOARD)
 	bash tests/board/soc_sim.sh $(BOARD_SIM_DIR)
+board-sim-faults: all board-sim $(PTYBOARD)
+	EF_SOCSIM_FULL=1 bash tests/board/soc_sim.sh $(BOARD_SIM_DIR)

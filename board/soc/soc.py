@@ -142,8 +142,8 @@ def main():
     ap.add_argument("--rom", help="firmware image for the ROM")
     ap.add_argument("--headers-only", action="store_true")
     ap.add_argument("--sys-clk", type=float, default=None,
-                    help="sys clock (a multiple of 3 MHz): default 30 MHz on a ULX3S (the 60 MHz placement "
-                         "reached 44.68 MHz, docs/board-ulx3s.md), 60 MHz in the simulation")
+                    help="sys clock (a multiple of 3 MHz): default 30 MHz (the 60 MHz placement reached "
+                         "44.68 MHz, docs/board-ulx3s.md), in the simulation too (board_sim --sys-clk)")
     ap.add_argument("--ef-clk", type=float, default=15e6)
     ap.add_argument("--main-ram", type=lambda s: int(s, 0), default=None,
                     help="block RAM main RAM bytes (sim default 4 MiB; the board: 0, the heap in SRAM)")
@@ -153,7 +153,7 @@ def main():
     ap.add_argument("--seed", type=int, default=1, help="nextpnr's placement seed")
     a = ap.parse_args()
     if a.sys_clk is None:
-        a.sys_clk = 60e6 if a.target == "sim" else 30e6
+        a.sys_clk = 30e6
     if a.sys_clk % 3e6:
         sys.exit("soc.py: --sys-clk must be a multiple of 3 MHz (the UART's 3 Mbaud divides it exactly)")
     rom = get_mem_data(a.rom, endianness="little") if a.rom else []
@@ -178,8 +178,10 @@ def main():
         builder.build(run=False, build_name="sim")
         # the Verilog the harness compiles, in order (the CPU's, the RTL's, the SoC's)
         with open(os.path.join(a.out, "gateware", "sources.txt"), "w") as f:
+            top = os.path.abspath(os.path.join(a.out, "gateware", "sim.v"))  # the harness names it last
             for src in soc.platform.sources:
-                f.write(os.path.abspath(src[0]) + "\n")
+                if os.path.abspath(src[0]) != top:
+                    f.write(os.path.abspath(src[0]) + "\n")
 
 
 if __name__ == "__main__":
