@@ -42,7 +42,8 @@
 // --probe-status CYCLES: every CYCLES sys cycles, between two of the host's
 // frames, the harness sends the board a status request of its own (a tag the
 // host never uses: the host drops its reply) and keeps the most result
-// frames the board held unacknowledged (made less acknowledged).
+// frames the board held unacknowledged (made less acknowledged); a probe waits
+// for the last one's reply.
 // On SIGTERM or SIGINT, or after --max-seconds of wall time, it prints the
 // cycles simulated, the bytes moved, the faults played, the simulated time
 // from the host's first byte to the board's last, and the most result
@@ -81,6 +82,7 @@ static const uint32_t PROBE_TAG = 0x51515151u;   // the host drops replies with 
 struct Kept {
     uint32_t most = 0;
     unsigned long long probes = 0;
+    bool asked = false;   // a probe is out: the next waits for its reply (a slow line is not flooded)
 };
 
 // Counts whole frames of one direction by their headers (magic, len), as tests/host/ptyboard does.
@@ -101,6 +103,7 @@ struct FrameCount {
             if (made - acked > kept->most && made >= acked)
                 kept->most = made - acked;
             kept->probes++;
+            kept->asked = false;
         }
     }
     void add(const uint8_t *p, size_t n)
@@ -378,7 +381,8 @@ int main(int argc, char **argv)
                 fd = accept4(lfd, nullptr, nullptr, SOCK_NONBLOCK);
                 in_len = in_pos = out_len = 0;
             }
-            if (probe && fd >= 0 && in_pos == in_len && !up.hdr_len && !up.body_left && bd.cyc >= next_probe) {
+            if (probe && fd >= 0 && in_pos == in_len && !up.hdr_len && !up.body_left && bd.cyc >= next_probe &&
+                !kept.asked) {
                 // (between two of the host's frames) the harness asks the board's status itself
                 uint8_t f[20] = { 'E', 'F', 'B', '1', 0x11, 0, 0, 0, 0x51, 0x51, 0x51, 0x51, 0, 0, 0, 0 };
                 const uint32_t c = (uint32_t)crc32(0, f, 16);
@@ -387,6 +391,7 @@ int main(int argc, char **argv)
                 std::memcpy(in, f, sizeof f);
                 in_len = inj_left = sizeof f, in_pos = 0;
                 next_probe = bd.cyc + probe;
+                kept.asked = true;
             }
             if (fd >= 0 && in_pos == in_len) {
                 ssize_t n = read(fd, in, sizeof in);

@@ -336,7 +336,7 @@ if [ "$full_set" = 1 ] && [ $mode = serial ]; then
     # (EF_BOARD_RESULT_QUEUE) and, to show the bound is what holds it, with none (0); run 2's
     # 15 KiB of full records (16 frames) on a line of 300,000 baud in simulated time (30 kB/s:
     # slower than the firmware makes results): PASS cycle-exact, results byte-identical, and the
-    # board's own status (asked by board_sim every 20,000 cycles between the host's frames) never
+    # board's own status (asked by board_sim every 200,000 cycles between the host's frames) never
     # says more than 4 result frames kept; unbounded it says more
     for q in 4 0; do
         qdir=$tmp/queue$q-gw
@@ -348,7 +348,7 @@ if [ "$full_set" = 1 ] && [ $mode = serial ]; then
             tail -n 20 "$tmp/queue-build.log"; bad "build the firmware with a result queue of $q"; continue
         fi
         od -An -v -tx4 -w4 "$tmp/queue$q.bin" | tr -d ' ' >"$qdir/sim_rom.init"
-        start_board "$qdir" --baud 300000 --probe-status 20000 ||
+        start_board "$qdir" --baud 300000 --probe-status 200000 ||
             { bad "the simulated board (result queue $q) did not come up"; continue; }
         "$H" verify "$tmp/v/vectors.bin" "${L[@]}" "${full[@]}" --results "$tmp/queue$q" >"$tmp/queue.out" 2>&1
         rc=$?
