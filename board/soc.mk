@@ -2,7 +2,7 @@
 # (board/firmware: board/ef_board.c unchanged) and the whole board under Verilator (board/sim).
 # Included by the Makefile.
 #
-#   make bitstream BOARD=ulx3s-25f|ulx3s-85f [BOARD_NS=8|16] [BOARD_SEED=N]
+#   make bitstream BOARD=ulx3s-25f|ulx3s-85f [BOARD_NS=8|16] [BOARD_SEED=N] [BOARD_GPIO=0]
 #        -> build/board/$(BOARD)-ns$(BOARD_NS)/gateware/radiona_ulx3s.bit, utilisation and Fmax
 #           printed; fails when timing is not met (nextpnr without --timing-allow-fail)
 #   make firmware [BOARD=...]   the firmware alone (its size printed)
@@ -10,19 +10,22 @@
 #   make board-sim-test         verify through the simulated board (tests/board/soc_sim.sh)
 #   make board-sim-faults       the same with the whole fault set (EF_SOCSIM_FULL=1: digest mode's
 #                               faults, an open shape refused, the bounded result queue on the SoC)
+#   make board-gpio-test        edgeflag-host over emulated GPIO into its gateware (tests/board/gpio_cosim.sh)
+#   BOARD_GPIO=0                the SoC without the GPIO bus slave (build/board/...-nogpio)
 #   EF_BOARD_SERIAL=...         the serial number identify reports (default EFULX3S-0001)
 BOARD ?= ulx3s-25f
 BOARD_NS ?= 8
 BOARD_SEED ?= 1
 EF_VENV ?= build/venv
 EF_VENV_PY := $(EF_VENV)/bin/python
-BOARD_DIR := $(BUILD)/board/$(BOARD)-ns$(BOARD_NS)
+BOARD_GPIO ?= 1
+BOARD_DIR := $(BUILD)/board/$(BOARD)-ns$(BOARD_NS)$(if $(filter 0,$(BOARD_GPIO)),-nogpio)
 BOARD_SIM_DIR := $(BUILD)/board/sim-ns$(BOARD_NS)
-BOARD_SOC_SRC := board/soc/soc.py board/soc/ef_periph.py board/soc/ef_gate_ecp5.v board/soc/ef_gate_sim.v \
+BOARD_SOC_SRC := board/soc/soc.py board/soc/ef_periph.py board/soc/ef_gpio.py board/soc/ef_gate_ecp5.v board/soc/ef_gate_sim.v \
                  $(wildcard rtl/*.v) $(wildcard rtl/*.vh)
 BOARD_TOOLS := $(EF_VENV)/.installed-soc build/fpga-bin/nextpnr-ecp5
 
-.PHONY: board-tools firmware bitstream board-sim board-sim-test board-sim-faults
+.PHONY: board-tools firmware bitstream board-sim board-sim-test board-sim-faults board-gpio-test
 
 # the tools: Debian's cross compiler and picolibc, the pinned PyPI groups, the PATH shims
 $(BOARD_TOOLS): tools/requirements/soc.txt tools/requirements/fpga.txt tools/install-fpga.sh
@@ -37,7 +40,7 @@ include board/firmware/firmware.mk
 $(BUILD)/board/%/software/include/generated/csr.h: $(BOARD_SOC_SRC) $(BOARD_TOOLS)
 	@mkdir -p $(BUILD)/board
 	$(EF_VENV_PY) board/soc/soc.py --target $(if $(filter sim-%,$*),sim,$(BOARD)) --ns $(BOARD_NS) \
-	    --out $(BUILD)/board/$* --headers-only >$(BUILD)/board/$*.headers.log 2>&1 || \
+	    $(if $(findstring -nogpio,$*),--no-gpio) --out $(BUILD)/board/$* --headers-only >$(BUILD)/board/$*.headers.log 2>&1 || \
 	    { tail -n 20 $(BUILD)/board/$*.headers.log; exit 1; }
 
 firmware: $(BOARD_TOOLS)
@@ -45,7 +48,8 @@ firmware: $(BOARD_TOOLS)
 
 bitstream: $(BOARD_TOOLS)
 	$(MAKE) --no-print-directory $(BOARD_DIR)/firmware.bin FW_SOC=$(BOARD_DIR)
-	bash board/soc/bitstream.sh $(BOARD) $(BOARD_NS) $(BOARD_DIR) $(BOARD_SEED)
+	EF_SOC_FLAGS="$(if $(filter 0,$(BOARD_GPIO)),--no-gpio)" bash board/soc/bitstream.sh $(BOARD) $(BOARD_NS) \
+	    $(BOARD_DIR) $(BOARD_SEED)
 
 # The simulated board: the SoC's Verilog for the sim target with the firmware in its ROM, and
 # the harness.  LiteX's generated Verilog and the VexRiscv core are third-party: their lint
@@ -59,10 +63,13 @@ $(BOARD_SIM_DIR)/gateware/sim.v: $(BOARD_SOC_SRC) | $(BOARD_SIM_DIR)/firmware.bi
 	$(EF_VENV_PY) board/soc/soc.py --target sim --ns $(BOARD_NS) --out $(BOARD_SIM_DIR) \
 	    --rom $(BOARD_SIM_DIR)/firmware.bin >$(BOARD_SIM_DIR)/gateware.log 2>&1 || \
 	    { tail -n 20 $(BOARD_SIM_DIR)/gateware.log; exit 1; }
-$(BOARD_SIM_DIR)/obj/board_sim: $(BOARD_SIM_DIR)/gateware/sim.v board/sim/board_sim.cpp
+# the harness's C++ files (gpio_link.cpp: the GPIO header's socket, docs/board-gpio.md section 8)
+BOARD_SIM_CPP := board/sim/board_sim.cpp board/sim/gpio_link.cpp
+$(BOARD_SIM_DIR)/obj/board_sim: $(BOARD_SIM_DIR)/gateware/sim.v $(BOARD_SIM_CPP) $(wildcard board/sim/*.h)
 	verilator $(BOARD_SIM_VFLAGS) -Mdir $(BOARD_SIM_DIR)/obj -o board_sim \
 	    $$(cat $(BOARD_SIM_DIR)/gateware/sources.txt) $(BOARD_SIM_DIR)/gateware/sim.v \
-	    $(abspath board/sim/board_sim.cpp) -CFLAGS -O2 -LDFLAGS -lz >$(BOARD_SIM_DIR)/verilate.log 2>&1 || \
+	    $(abspath $(BOARD_SIM_CPP)) -CFLAGS -O2 -CFLAGS -I$(abspath board/sim) -LDFLAGS -lz \
+	    >$(BOARD_SIM_DIR)/verilate.log 2>&1 || \
 	    { tail -n 30 $(BOARD_SIM_DIR)/verilate.log; exit 1; }
 $(BOARD_SIM_DIR)/gateware/sim_rom.init: $(BOARD_SIM_DIR)/firmware.bin $(BOARD_SIM_DIR)/gateware/sim.v
 	od -An -v -tx4 -w4 $< | tr -d ' ' >$@.tmp && mv $@.tmp $@
@@ -75,3 +82,7 @@ board-sim-test: all board-sim $(PTYBOARD)
 	bash tests/board/soc_sim.sh $(BOARD_SIM_DIR)
 board-sim-faults: all board-sim $(PTYBOARD)
 	EF_SOCSIM_FULL=1 bash tests/board/soc_sim.sh $(BOARD_SIM_DIR)
+
+# edgeflag-host over emulated GPIO into the simulated board's gateware (docs/board-gpio.md section 8)
+board-gpio-test: all board-sim gpio-cosim
+	bash tests/board/gpio_cosim.sh $(BOARD_SIM_DIR) $(BUILD)

@@ -89,6 +89,7 @@ typedef struct ef_cli_vectors_args {
     int rtl_headers;      /* --rtl-headers: only ef_ifaces.vh and ef_ifaces_pkg.sv, no INPUT */
     int32_t dut_w, dut_h; /* --dut-limits WxH: the DUT's largest canvas (0, 0: none given) */
     int32_t dut_e;        /* --dut-edges E: the most EDGE commands of a shape (0: none given) */
+    int schedule;         /* --schedule: ef_schedule (docs/microarch.md sections 4 and 6) */
 } ef_cli_vectors_args;
 int ef_cli_vectors_parse(int argc, char **argv, ef_cli_vectors_args *a);
 
@@ -123,7 +124,10 @@ enum {
     EF_OPT_DIFF_IMAGE,
     EF_OPT_EMIT_VERILOG,
     EF_OPT_DUT_LIMITS,
-    EF_OPT_DUT_EDGES
+    EF_OPT_DUT_EDGES,
+    EF_OPT_SCHEDULE,
+    EF_OPT_DUT_SAMPLES,
+    EF_OPT_DUT_FILE
 };
 enum { EF_CLI_MAX_OPTIONS = 24 }; /* entries of one command's table */
 

@@ -29,8 +29,9 @@ static void usage(FILE *f)
 {
     fprintf(f,
             "usage: edgeflag gen -o DIR [--seed N] [--level 1|2] [-n K] [--shard I/N]\n"
-            "                    [--samples 8|16|32] [--force]\n"
+            "                    [--samples 8|16|32] [--force] [DUT LIMITS]\n"
             "       edgeflag gen --list [--seed N] [--level 1|2] [-n K] [--shard I/N] [--samples N]\n"
+            "                    [DUT LIMITS]\n"
             "\n"
             "Writes seeded regression scenes for hardware implementations: first a table of\n"
             "directed corner cases, then random cases, as DIR/case_NNNNNN.scene (the .scene\n"
@@ -54,7 +55,18 @@ static void usage(FILE *f)
             "  --list            print the index on standard output instead of writing files\n"
             "  -h, --help        show this text\n"
             "\n"
-            "Prints one summary line on standard output.\n"
+            "DUT limits (docs/gen.md section 11): a case over them is fitted (the canvas\n"
+            "scaled by 1/2^k; a shape split into shapes of whole contours where the model\n"
+            "renders the same picture) or refused by name (not written; refused.tsv):\n"
+            "  --dut-limits WxH  the DUT's largest canvas (W_MAX x H_MAX)\n"
+            "  --dut-edges E     the most EDGE commands of one shape (E_MAX)\n"
+            "  --dut-samples L   the sample counts it takes, e.g. 8,16\n"
+            "  --dut-file FILE   read them from a board's 48-byte identify record\n"
+            "                    (docs/board.md 3.1) or from a Verilog or C file that\n"
+            "                    defines W_MAX, H_MAX, E_MAX, NS (`define, #define,\n"
+            "                    parameter; any prefix ending in _); a flag overrides it\n"
+            "\n"
+            "Prints one summary line on standard output, and one line per refused case.\n"
             "exit codes: 0 ok, 2 usage, 4 a file could not be written (or exists), 70 internal\n",
             EF_GEN_DEFAULT_SEED, EF_GEN_LEVEL1_RANDOM, EF_GEN_LEVEL2_RANDOM, EF_GEN_MAX_CASES);
 }
@@ -64,6 +76,8 @@ typedef struct gen_args {
     ef_gen_config cfg;
     uint32_t shard_i, shard_n;
     int force, list;
+    int fit;           /* any DUT limit given */
+    ef_gen_limits lim; /* the DUT's limits (0: none) */
 } gen_args;
 
 /* Strict unsigned 64-bit decimal: digits only, value <= 2^64 - 1. */
@@ -116,6 +130,10 @@ static const struct option OPTIONS[] = { { "", required_argument, NULL, EF_OPT_O
                                          { "samples", required_argument, NULL, EF_OPT_SAMPLES },
                                          { "force", no_argument, NULL, EF_OPT_FORCE },
                                          { "list", no_argument, NULL, EF_OPT_LIST },
+                                         { "dut-limits", required_argument, NULL, EF_OPT_DUT_LIMITS },
+                                         { "dut-edges", required_argument, NULL, EF_OPT_DUT_EDGES },
+                                         { "dut-samples", required_argument, NULL, EF_OPT_DUT_SAMPLES },
+                                         { "dut-file", required_argument, NULL, EF_OPT_DUT_FILE },
                                          { NULL, 0, NULL, 0 } };
 
 /* The line as read, before the level's configuration is built from it. */
@@ -124,7 +142,145 @@ typedef struct gen_line {
     int32_t level, samples, k;
     int seen_n;
     uint64_t seed;
+    int32_t dut_w, dut_h, dut_e; /* from the flags (0: not given) */
+    uint32_t dut_s;
+    const char *dut_file;
 } gen_line;
+
+/* "8,16" -> the identify record's bits (bit 3: 8, bit 4: 16, bit 5: 32). */
+static int parse_sample_list(const char *v, uint32_t *mask)
+{
+    static const char *const names[3] = { "8", "16", "32" };
+    uint32_t bits = 0;
+    if (!ef_cli_parse_list(CMD, "--dut-samples", v, names, 3, &bits))
+        return 0;
+    *mask = bits << 3;
+    return 1;
+}
+
+static uint32_t le32(const unsigned char *p)
+{
+    return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
+}
+
+/* A name that is KEY or ends in _KEY. */
+static int names(const char *name, size_t len, const char *key)
+{
+    const size_t k = strlen(key);
+    return (len == k || (len > k && name[len - k - 1] == '_')) && !memcmp(name + len - k, key, k);
+}
+
+/* --dut-file: a board's identify record (48 bytes from "EFB1", docs/board.md
+ * 3.1), or text defining W_MAX, H_MAX, E_MAX, NS (`define, #define,
+ * parameter or localparam; a name with any prefix ending in _).  Fills lim;
+ * -1 on success, else the usage error reported. */
+static int read_dut_file(const char *path, ef_gen_limits *lim)
+{
+    enum { MAX_BYTES = 1 << 20 };
+    unsigned char *raw;
+    size_t n;
+    int found = 0, rc = -1;
+    uint32_t got[4] = { 0, 0, 0, 0 }; /* W_MAX, H_MAX, E_MAX, NS */
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return ef_cli_usage_error(CMD, "--dut-file %s: %s", path, strerror(errno));
+    if (!(raw = malloc(MAX_BYTES + 1))) {
+        fclose(f);
+        return ef_cli_usage_error(CMD, "--dut-file %s: out of memory", path);
+    }
+    n = fread(raw, 1, MAX_BYTES + 1, f);
+    fclose(f);
+    if (n > MAX_BYTES) {
+        free(raw);
+        return ef_cli_usage_error(CMD, "--dut-file %s: larger than %d bytes", path, (int)MAX_BYTES);
+    }
+    raw[n] = '\0';
+    memset(lim, 0, sizeof *lim);
+    if (n == 48 && !memcmp(raw, "EFB1", 4)) {
+        const uint32_t sm = le32(raw + 16), w = le32(raw + 20), h = le32(raw + 24), e = le32(raw + 28);
+        if (!(sm & 0x38u) || w < 1 || w > EF_MAX_CANVAS || h < 1 || h > EF_MAX_CANVAS || e < 1 || e > INT32_MAX)
+            rc = ef_cli_usage_error(CMD,
+                                    "--dut-file %s: an identify record with samples 0x%" PRIx32 ", canvas %" PRIu32
+                                    "x%" PRIu32 ", edges %" PRIu32 ": out of range",
+                                    path, sm, w, h, e);
+        lim->samples_mask = sm & 0x38u;
+        lim->width = (int32_t)w;
+        lim->height = (int32_t)h;
+        lim->edges = e;
+        free(raw);
+        return rc;
+    }
+    for (char *line = (char *)raw, *next; line && *line && rc < 0; line = next) {
+        char *p = line, *name;
+        size_t len, k = 0;
+        int32_t val;
+        char num[16];
+        next = strchr(line, '\n');
+        if (next)
+            *next++ = '\0';
+        while (*p == ' ' || *p == '\t')
+            p++;
+        if (!strncmp(p, "`define", 7) || !strncmp(p, "#define", 7))
+            p += 7;
+        else if (!strncmp(p, "parameter", 9))
+            p += 9;
+        else if (!strncmp(p, "localparam", 10))
+            p += 10;
+        else
+            continue;
+        while (*p == ' ' || *p == '\t')
+            p++;
+        if (!strncmp(p, "integer ", 8))
+            p += 8;
+        while (*p == ' ' || *p == '\t')
+            p++;
+        name = p;
+        while ((*p >= 'A' && *p <= 'Z') || (*p >= 'a' && *p <= 'z') || (*p >= '0' && *p <= '9') || *p == '_')
+            p++;
+        len = (size_t)(p - name);
+        while (*p == ' ' || *p == '\t' || *p == '=')
+            p++;
+        while (k < sizeof num - 1 && *p >= '0' && *p <= '9')
+            num[k++] = *p++;
+        num[k] = '\0';
+        if (!len || !k || !ef_util_parse_int(num, 1, INT32_MAX, &val))
+            continue;
+        static const char *const keys[4] = { "W_MAX", "H_MAX", "E_MAX", "NS" };
+        int which = -1;
+        for (int q = 0; q < 4 && which < 0; q++)
+            if (names(name, len, keys[q]))
+                which = q;
+        if (which < 0)
+            continue;
+        if ((which < 2 && val > EF_MAX_CANVAS) || (which == 3 && val != 8 && val != 16 && val != 32)) {
+            rc =
+                ef_cli_usage_error(CMD, "--dut-file %s: %.*s = %" PRId32 " is out of range", path, (int)len, name, val);
+            break;
+        }
+        if (got[which] && got[which] != (uint32_t)val) {
+            rc = ef_cli_usage_error(CMD, "--dut-file %s: %s defined twice (%" PRIu32 ", %" PRId32 ")", path,
+                                    keys[which], got[which], val);
+            break;
+        }
+        got[which] = (uint32_t)val;
+        found++;
+    }
+    free(raw);
+    if (rc >= 0)
+        return rc;
+    lim->width = (int32_t)got[0];
+    lim->height = (int32_t)got[1];
+    lim->edges = got[2];
+    lim->samples_mask = got[3] ? 1u << (got[3] == 8 ? 3 : got[3] == 16 ? 4 : 5) : 0;
+    if (!found)
+        return ef_cli_usage_error(CMD,
+                                  "--dut-file %s: neither an identify record (48 bytes from \"EFB1\") nor a file "
+                                  "that defines W_MAX, H_MAX, E_MAX or NS",
+                                  path);
+    if ((lim->width == 0) != (lim->height == 0))
+        return ef_cli_usage_error(CMD, "--dut-file %s: defines only one of W_MAX and H_MAX", path);
+    return -1;
+}
 
 static int on_option(void *p, int val, const char *v)
 {
@@ -159,6 +315,23 @@ static int on_option(void *p, int val, const char *v)
         if (!parse_shard(v, &a->shard_i, &a->shard_n))
             return ef_cli_usage_error(CMD, "--shard must be I/N with 1 <= I <= N <= %u, not '%s'", EF_GEN_MAX_CASES, v);
         break;
+    case EF_OPT_DUT_LIMITS:
+        if (!ef_util_parse_size(v, EF_MAX_CANVAS, &l->dut_w, &l->dut_h))
+            return ef_cli_usage_error(CMD, "--dut-limits takes WxH (each 1..%d), not '%s'", EF_MAX_CANVAS, v);
+        break;
+    case EF_OPT_DUT_EDGES:
+        if (!ef_util_parse_int(v, 1, INT32_MAX, &l->dut_e))
+            return ef_cli_usage_error(CMD, "--dut-edges takes a positive number, not '%s'", v);
+        break;
+    case EF_OPT_DUT_SAMPLES:
+        if (!parse_sample_list(v, &l->dut_s))
+            return EF_CLI_EXIT_USAGE;
+        break;
+    case EF_OPT_DUT_FILE:
+        if (!*v)
+            return ef_cli_usage_error(CMD, "empty --dut-file name");
+        l->dut_file = v;
+        break;
     default: /* EF_OPT_SAMPLES */
         if (!ef_cli_parse_samples(CMD, v, &l->samples))
             return EF_CLI_EXIT_USAGE;
@@ -178,9 +351,27 @@ static int finish(void *p)
     if (a->list && a->force)
         return ef_cli_usage_error(CMD, "--list writes no files: --force makes no sense with it");
 
+    if (l->dut_file) {
+        int rc = read_dut_file(l->dut_file, &a->lim);
+        if (rc >= 0)
+            return rc;
+        a->fit = 1;
+    }
+    if (l->dut_w)
+        a->lim.width = l->dut_w, a->lim.height = l->dut_h, a->fit = 1;
+    if (l->dut_e)
+        a->lim.edges = (uint32_t)l->dut_e, a->fit = 1;
+    if (l->dut_s)
+        a->lim.samples_mask = l->dut_s, a->fit = 1;
     ef_gen_config_defaults(&a->cfg, l->level);
     a->cfg.seed = l->seed;
     a->cfg.grid = l->samples;
+    if (a->fit && l->samples && !ef_gen_limits_takes(&a->lim, l->samples))
+        return ef_cli_usage_error(CMD, "--samples %" PRId32 ": the DUT does not take %" PRId32 " samples per pixel",
+                                  l->samples, l->samples);
+    /* Level 1's grid cases are built on one grid: the DUT's, when it does not take the default 16. */
+    if (a->fit && !l->samples && l->level == 1 && !ef_gen_limits_takes(&a->lim, 16))
+        a->cfg.grid = ef_gen_limits_takes(&a->lim, 8) ? 8 : 32;
     if (l->seen_n) {
         if ((uint32_t)l->k < a->cfg.nrandom)
             return ef_cli_usage_error(CMD,
@@ -203,7 +394,11 @@ static const ef_cli_command COMMAND = { "gen",  OPTIONS, 0, usage, on_option, NU
 /* Returns -1 when the line parsed and the command should run, else the exit code. */
 static int parse(int argc, char **argv, gen_args *a)
 {
-    gen_line l = { a, 1, 0, 0, 0, EF_GEN_DEFAULT_SEED };
+    gen_line l;
+    memset(&l, 0, sizeof l);
+    l.a = a;
+    l.level = 1;
+    l.seed = EF_GEN_DEFAULT_SEED;
     memset(a, 0, sizeof *a);
     a->shard_i = a->shard_n = 1;
     return ef_cli_getopt(&COMMAND, argc, argv, &l);
@@ -222,6 +417,32 @@ static void index_name(const gen_args *a, char *buf, size_t size)
         snprintf(buf, size, "index.tsv");
     else
         snprintf(buf, size, "index_%" PRIu32 "_of_%" PRIu32 ".tsv", a->shard_i, a->shard_n);
+}
+
+/* The cases the DUT's limits refuse: refused.tsv (refused_I_of_N.tsv). */
+static void refused_name(const gen_args *a, char *buf, size_t size)
+{
+    if (a->shard_n == 1)
+        snprintf(buf, size, "refused.tsv");
+    else
+        snprintf(buf, size, "refused_%" PRIu32 "_of_%" PRIu32 ".tsv", a->shard_i, a->shard_n);
+}
+
+/* "W_MAX 2048, H_MAX 2048, E_MAX 8192, samples 8,16" (the limits given). */
+static void describe_limits(const ef_gen_limits *lim, char *buf, size_t size)
+{
+    size_t n = 0;
+    buf[0] = '\0';
+    if (lim->width)
+        n += (size_t)snprintf(buf + n, size - n, "W_MAX %" PRId32 ", H_MAX %" PRId32, lim->width, lim->height);
+    if (lim->edges && n < size)
+        n += (size_t)snprintf(buf + n, size - n, "%sE_MAX %" PRIu32, n ? ", " : "", lim->edges);
+    if (lim->samples_mask && n < size)
+        snprintf(buf + n, size - n, "%ssamples %s%s%s", n ? ", " : "", (lim->samples_mask & 8u) ? "8," : "",
+                 (lim->samples_mask & 16u) ? "16," : "", (lim->samples_mask & 32u) ? "32" : "");
+    n = strlen(buf);
+    if (n && buf[n - 1] == ',')
+        buf[n - 1] = '\0';
 }
 
 static int write_file(const char *path, const ef_gen_text *t)
@@ -265,8 +486,9 @@ int ef_cli_gen(int argc, char **argv)
     gen_args a;
     ef_gen_text text = { NULL, 0, 0 }, index = { NULL, 0, 0 };
     ef_gen_case gc;
-    char path[4096], name[64];
-    uint32_t total, written = 0;
+    ef_gen_text refused = { NULL, 0, 0 };
+    char path[4096], rpath[4096] = "", name[64], limits[128];
+    uint32_t total, written = 0, nfitted = 0, nrefused = 0;
     ef_status st;
     int rc = parse(argc, argv, &a);
 
@@ -289,7 +511,19 @@ int ef_cli_gen(int argc, char **argv)
             index_name(&a, name, sizeof name);
             if ((rc = refuse_existing(a.dir, name)) >= 0)
                 return rc;
+            refused_name(&a, name, sizeof name);
+            if (a.fit && (rc = refuse_existing(a.dir, name)) >= 0)
+                return rc;
         }
+    }
+    describe_limits(&a.lim, limits, sizeof limits);
+    refused.len = 0;
+    if (a.fit && ((st = ef_gen_text_append(&refused, "# edgeflag gen: cases the DUT's limits refuse (")) != EF_OK ||
+                  (st = ef_gen_text_append(&refused, limits)) != EF_OK ||
+                  (st = ef_gen_text_append(&refused, "; docs/gen.md section 11)\ncase\tname\treason\n")) != EF_OK)) {
+        ef_cli_error("out of memory");
+        rc = EF_CLI_EXIT_INTERNAL;
+        goto out;
     }
 
     if ((st = ef_gen_index_header(&a.cfg, a.shard_i, a.shard_n, &index)) != EF_OK) {
@@ -298,7 +532,29 @@ int ef_cli_gen(int argc, char **argv)
         goto out;
     }
     for (uint32_t k = a.shard_i - 1; k < total; k += a.shard_n) {
+        ef_gen_fit_result fr = EF_GEN_FIT_AS_IS;
         st = ef_gen_build(&a.cfg, k, &gc);
+        if (st == EF_OK && a.fit)
+            st = ef_gen_fit(&a.lim, &gc, &fr);
+        if (st == EF_OK && fr == EF_GEN_FIT_REFUSED) {
+            char row[600];
+            snprintf(row, sizeof row, "%" PRIu32 "\t%s%s\t%s\n", k, gc.name, gc.rules_swapped ? "/swapped" : "",
+                     gc.fit_note);
+            /* one line each; on stderr under --list, whose standard output is the index */
+            fprintf(a.list ? stderr : stdout, "edgeflag gen: case %" PRIu32 " (%s%s) refused by the DUT's limits: %s\n",
+                    k, gc.name, gc.rules_swapped ? "/swapped" : "", gc.fit_note);
+            st = ef_gen_text_append(&refused, row);
+            ef_gen_case_destroy(&gc);
+            if (st != EF_OK) {
+                ef_cli_error("out of memory");
+                rc = EF_CLI_EXIT_INTERNAL;
+                goto out;
+            }
+            nrefused++;
+            continue;
+        }
+        if (st == EF_OK && fr == EF_GEN_FIT_FITTED)
+            nfitted++;
         if (st == EF_OK)
             st = ef_gen_index_row(&gc, &index);
         if (st == EF_OK && !a.list)
@@ -330,6 +586,16 @@ int ef_cli_gen(int argc, char **argv)
         rc = EF_CLI_EXIT_OK;
         goto out;
     }
+    if (a.fit) {
+        refused_name(&a, name, sizeof name);
+        if (!join(path, sizeof path, a.dir, name)) {
+            rc = EF_CLI_EXIT_OUTPUT;
+            goto out;
+        }
+        if ((rc = write_file(path, &refused)) != EF_CLI_EXIT_OK)
+            goto out;
+        snprintf(rpath, sizeof rpath, "%s", path);
+    }
     index_name(&a, name, sizeof name);
     if (!join(path, sizeof path, a.dir, name)) {
         rc = EF_CLI_EXIT_OUTPUT;
@@ -338,12 +604,17 @@ int ef_cli_gen(int argc, char **argv)
     if ((rc = write_file(path, &index)) != EF_CLI_EXIT_OK)
         goto out;
     printf("edgeflag gen: wrote %" PRIu32 " of %" PRIu32 " cases (%" PRIu32 " directed, %" PRIu32
-           " random; seed %" PRIu64 ", level %d, shard %" PRIu32 "/%" PRIu32 ") to %s, index %s\n",
+           " random; seed %" PRIu64 ", level %d, shard %" PRIu32 "/%" PRIu32 ") to %s, index %s",
            written, total, ef_gen_directed_count(&a.cfg), a.cfg.nrandom, a.cfg.seed, a.cfg.level, a.shard_i, a.shard_n,
            a.dir, path);
+    if (a.fit)
+        printf("; the DUT's limits (%s): %" PRIu32 " fitted, %" PRIu32 " refused (%s)", limits, nfitted, nrefused,
+               rpath);
+    printf("\n");
     rc = fflush(stdout) == 0 ? EF_CLI_EXIT_OK : EF_CLI_EXIT_OUTPUT;
 out:
     ef_gen_text_destroy(&text);
     ef_gen_text_destroy(&index);
+    ef_gen_text_destroy(&refused);
     return rc;
 }

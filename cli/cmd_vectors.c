@@ -33,6 +33,7 @@ static void usage(FILE *f)
           "                        [--size WxH] [--formats hex,vcd,bin] [--interfaces LIST] [--force]\n"
           "                        [--dump] [--filter box|tent] [--subpixel none|rgb|bgr]\n"
           "                        [--dut-limits WxH] [--dut-edges E]\n"
+          "                        [--schedule reference|overlap]\n"
           "       edgeflag vectors --rtl-headers -o DIR [--force]\n"
           "\n"
           "Renders INPUT (.svg, .scene/.txt) with the timing model of the reference\n"
@@ -66,6 +67,10 @@ static void usage(FILE *f)
           "  --dut-edges E      the most EDGE commands one shape may have in the DUT (the\n"
           "                     RTL's E_MAX): a shape with more is refused the same way\n"
           "                     (needs cmd among --interfaces)\n"
+          "  --schedule S       reference (default: docs/microarch.md section 4) or\n"
+          "                     overlap (section 6, the fast RTL's): the same\n"
+          "                     transactions, stamped at the cycles of that schedule\n"
+          "                     (overlap takes neither --filter tent nor --subpixel)\n"
           "  --rtl-headers      write only ef_ifaces.vh (Verilog) and ef_ifaces_pkg.sv\n"
           "                     (SystemVerilog): every interface's widths, field offsets\n"
           "                     and the command codes, for testbenches (no INPUT)\n"
@@ -89,6 +94,7 @@ static const struct option OPTIONS[] = { { "", required_argument, NULL, EF_OPT_O
                                          { "rtl-headers", no_argument, NULL, EF_OPT_RTL_HEADERS },
                                          { "dut-limits", required_argument, NULL, EF_OPT_DUT_LIMITS },
                                          { "dut-edges", required_argument, NULL, EF_OPT_DUT_EDGES },
+                                         { "schedule", required_argument, NULL, EF_OPT_SCHEDULE },
                                          { NULL, 0, NULL, 0 } };
 
 /* The line as read: the request, and whether an option --rtl-headers does
@@ -126,6 +132,15 @@ static int on_option(void *p, int val, const char *v)
     case EF_OPT_DUT_EDGES:
         if (!ef_util_parse_int(v, 1, INT32_MAX, &a->dut_e))
             return ef_cli_usage_error(CMD, "--dut-edges takes a positive number, not '%s'", v);
+        l->scene_options = 1;
+        return -1;
+    case EF_OPT_SCHEDULE:
+        if (strcmp(v, "reference") == 0)
+            a->schedule = EF_SCHEDULE_REFERENCE;
+        else if (strcmp(v, "overlap") == 0)
+            a->schedule = EF_SCHEDULE_OVERLAP;
+        else
+            return ef_cli_usage_error(CMD, "--schedule takes reference or overlap, not '%s'", v);
         l->scene_options = 1;
         return -1;
     case EF_OPT_FORMATS: {
@@ -176,6 +191,9 @@ static int finish(void *p)
     }
     if (!a->dir)
         return ef_cli_usage_error(CMD, "no output directory (-o DIR)");
+    if (a->schedule == EF_SCHEDULE_OVERLAP && (a->filter != 0 || a->subpixel != 0))
+        return ef_cli_usage_error(CMD, "--schedule overlap covers the box filter without --subpixel "
+                                       "(docs/microarch.md section 6)");
     if (a->dut_e && !(a->ifaces & (1u << EF_IF_CMD)))
         return ef_cli_usage_error(CMD,
                                   "--dut-edges counts the cmd interface's EDGE commands: keep cmd in --interfaces");
@@ -281,6 +299,8 @@ static int trace_frame(const ef_cli_vectors_args *a, const ef_scene *scene, ef_c
 
     memset(img->px, 0, img->stride * (size_t)img->height); /* composited onto transparent black */
     st = ef_trace_enable(ctx, a->ifaces, ef_vec_collect_sink, c);
+    if (st == EF_OK)
+        st = ef_trace_set_schedule(ctx, (ef_schedule)a->schedule);
     if (st == EF_OK)
         st = ef_trace_frame_begin(ctx);
     if (st == EF_OK)

@@ -7,7 +7,7 @@
 # on the dumps against VECTORS_DIR.
 #
 # usage: dv/rtl-sim.sh VECTORS_DIR [--sim verilator|icarus] [--ns N]
-#            [--top FILE]... [--out DIR] [--w-max W] [--h-max H] [--e-max E]
+#            [--top FILE]... [--fast] [--out DIR] [--w-max W] [--h-max H] [--e-max E]
 #            [--transactions] [--edgeflag PATH] [--cache DIR]
 #   --sim       the simulator (default verilator)
 #   --ns        the build's samples per pixel (default: the vectors' own, from
@@ -16,6 +16,9 @@
 #               of them defines module ef_raster with ef_raster's ports and
 #               parameters NS, W_MAX, H_MAX, E_MAX; `include files are looked
 #               up beside each file and in rtl/)
+#   --fast      rtl/'s ef_raster_fast (the overlap schedule, docs/microarch.md
+#               section 6) instead of ef_raster: give it vectors written with
+#               `edgeflag vectors --schedule overlap` (or --transactions)
 #   --out DIR   where the dumps go (default CACHE/out/NAME, NAME the vectors'
 #               folder name); emptied of *.actual.hex first
 #   --w-max, --h-max, --e-max   the build's limits (default 2048, 2048, 8192:
@@ -38,13 +41,14 @@ usage() {
 }
 die() { echo "rtl-sim: $1" >&2; exit "${2:-2}"; }
 
-vec='' sim=verilator ns='' out='' wmax=2048 hmax=2048 emax=8192 mode=--cycles ef='' cache=$root/build/rtl-sim
+fast=0 vec='' sim=verilator ns='' out='' wmax=2048 hmax=2048 emax=8192 mode=--cycles ef='' cache=$root/build/rtl-sim
 tops=()
 while [ $# -gt 0 ]; do
     case $1 in
         --sim) sim=${2:-}; shift 2 || usage ;;
         --ns) ns=${2:-}; shift 2 || usage ;;
         --top) [ -n "${2:-}" ] || usage; tops+=("$2"); shift 2 ;;
+        --fast) fast=1; shift ;;
         --out) out=${2:-}; shift 2 || usage ;;
         --w-max) wmax=${2:-}; shift 2 || usage ;;
         --h-max) hmax=${2:-}; shift 2 || usage ;;
@@ -58,6 +62,7 @@ while [ $# -gt 0 ]; do
     esac
 done
 [ -n "$vec" ] || { echo "rtl-sim: no VECTORS_DIR" >&2; usage; }
+[ $fast = 0 ] || [ ${#tops[@]} = 0 ] || die "--fast and --top exclude each other"
 case $sim in verilator | icarus) ;; *) die "--sim is verilator or icarus, not '$sim'" ;; esac
 for v in "$wmax" "$hmax" "$emax" ${ns:+"$ns"}; do
     case $v in '' | *[!0-9]*) die "a limit or --ns is a number ('$v')" ;; esac
@@ -92,6 +97,10 @@ if [ ${#tops[@]} -gt 0 ]; then
         src+=("$f"); incs=(-I"$(dirname "$f")" "${incs[@]}")
     done
     defs=(-DEF_TB_USER_DUT)
+elif [ $fast = 1 ]; then
+    src=("$R"/ef_raster_fast.v "$R"/ef_dec.v "$R"/ef_setup.v "$R"/ef_div.v "$R"/ef_etm.v "$R"/ef_aet.v "$R"/ef_plot.v
+         "$R"/ef_slb_fill_skip.v "$R"/ef_slb_ram.v "$R"/ef_spanq.v "$R"/ef_cov.v)
+    defs=(-DEF_FAST)
 else
     src=("$R"/ef_raster.v "$R"/ef_dec.v "$R"/ef_setup.v "$R"/ef_div.v "$R"/ef_etm.v "$R"/ef_aet.v "$R"/ef_plot.v
          "$R"/ef_slb_fill.v "$R"/ef_slb_ram.v "$R"/ef_cov.v)
@@ -104,6 +113,7 @@ key=$( { echo "$sim ${params[*]} ${defs[*]}"; if [ "$sim" = verilator ]; then ve
          cat "$tb" "${src[@]}" "$R"/*.vh "$root/dv/lint/waivers.vlt"; for d in "${incs[@]}"; do cat "${d#-I}"/*.vh 2>/dev/null; done; } |
        sha256sum | cut -c1-16)
 cfg=$sim-ns$ns-w$wmax-h$hmax-e$emax${defs:+-user}-$key
+[ $fast = 0 ] || cfg=$sim-ns$ns-w$wmax-h$hmax-e$emax-fast-$key
 bdir=$cache/$cfg
 mkdir -p "$cache" || die "cannot make $cache" 5
 if [ -e "$bdir/ok" ]; then

@@ -378,16 +378,27 @@ static int64_t now_ms(void)
 }
 
 /* Waits for the board to raise sig; polls fast first, then backs off to 1 ms
- * so a stalled board does not cost a core. */
+ * so a stalled board does not cost a core.  A timeout is declared only on a
+ * sample taken after the deadline: a host paused past it (a sleep that
+ * overran, the scheduler) samples once more first, so a board that raised
+ * the line meanwhile is not called stalled. */
 static int wait_line(ef_link *l, int sig, int timeout_ms, int64_t *waited)
 {
     int64_t t0 = now_ms();
+    int late = 0; /* the last sample was taken after the deadline */
     for (unsigned spin = 0; !in_line(l, sig); spin++) {
         if (sig != SIG_ERR && in_line(l, SIG_ERR) && !l->ctl && !l->engine_failed)
             return EF_HOST_EIO; /* the caller asks why (err_line) */
-        if (now_ms() - t0 >= timeout_ms) {
+        if (late) {
             *waited = now_ms() - t0;
             return EF_HOST_ETIMEDOUT;
+        }
+        if (now_ms() - t0 >= timeout_ms) {
+            late = 1; /* one more sample, then the verdict */
+            int rc = sample(l);
+            if (rc)
+                return rc;
+            continue;
         }
         if (spin >= 64) {
             struct timespec ts = { 0, spin < 256 ? 100000 : 1000000 };

@@ -37,6 +37,14 @@ ef_status ef_trace_enable(ef_ctx *ctx, uint32_t iface_mask, ef_txn_fn sink, void
     return EF_OK;
 }
 
+ef_status ef_trace_set_schedule(ef_ctx *ctx, ef_schedule schedule)
+{
+    if (!ctx || !ctx->trace || (schedule != EF_SCHEDULE_REFERENCE && schedule != EF_SCHEDULE_OVERLAP))
+        return EF_ERR_ARG;
+    ctx->trace->schedule = schedule;
+    return EF_OK;
+}
+
 void ef_trace_emit(ef_trace *tr, int iface, uint64_t cycle, const uint64_t *v)
 {
     if (cycle + 1 > tr->end)
@@ -118,6 +126,8 @@ ef_status ef_trace_fill(ef_ctx *ctx, ef_image *img, const ef_polygon *poly, ef_r
     ef_trace *tr = ctx->trace;
     if (!poly || (rule != EF_RULE_NONZERO && rule != EF_RULE_EVENODD))
         return EF_ERR_ARG;
+    if (ctx->filt && tr->schedule != EF_SCHEDULE_REFERENCE)
+        return EF_ERR_UNSUPPORTED; /* section 6 covers the box filter alone */
     if (ctx->filt)
         return ef_trace_filter_fill(ctx, img, poly, rule, color); /* spec 10 (trace_filter.c) */
     /* Edge setup first: a polygon it refuses sends no command at all. */

@@ -25,6 +25,8 @@ typedef struct ef_trace {
     uint64_t cmd_next;                           /* earliest cycle of the next command */
     uint64_t end;                                /* one past the last transfer so far */
     uint16_t lsb[EF_IF_COUNT][EF_IF_MAX_FIELDS]; /* field positions */
+    ef_schedule schedule;                        /* docs/microarch.md section 4 or 6 */
+    uint8_t plotted[EF_MAX_CANVAS + 1];          /* overlap: the row's plotted cells (section 6) */
 } ef_trace;
 
 /* Reports one transfer of `iface` at `cycle` with field values v[] (in the

@@ -9,6 +9,10 @@
  * ones (plotter.c, fill_*.c, ef_blend_span), and tests/unit/test_trace.c
  * requires the two to agree on every pixel and diagnostic.  Only edge setup,
  * the edge table and ef_dda_start are shared.
+ *
+ * The overlap schedule (section 6) differs in two places only, each marked
+ * `overlap`: the scan visits the plotted cells alone, and COV takes spans
+ * through a queue of EF_SPANQ entries.
  */
 #include "trace.h"
 
@@ -25,6 +29,10 @@ typedef struct raster {
     uint8_t alpha;
     int pending; /* a plot waits for its `last` bit */
     uint64_t pend[5];
+    int overlap;               /* the schedule of section 6 */
+    uint8_t *plotted;          /* overlap: cells plotted in the row (SLB's bitmap) */
+    uint64_t qstart[EF_SPANQ]; /* overlap: the cycles COV started the last EF_SPANQ spans */
+    uint64_t nspan;            /* overlap: spans so far in the shape */
 } raster;
 
 static void transfer(raster *r, int iface, uint64_t cycle, const uint64_t *v)
@@ -83,6 +91,8 @@ static void plot_edge(raster *r, ef_edge *E, int32_t row, int s0, int s1, int32_
     for (int s = s0; s <= s1; s++) {
         const int32_t q = ef_clamp_i32(ef_asr_i32(E->x + ctx->off[s], EF_DEV_FRAC_BITS), 0, r->w);
         mark(r, q, s, E->dir);
+        if (r->overlap)
+            r->plotted[q] = 1;
         if (q < *xmin)
             *xmin = q;
         if (q > *xmax)
@@ -103,7 +113,15 @@ static void plot_edge(raster *r, ef_edge *E, int32_t row, int s0, int s1, int32_
  * cycle it transfers at (COV may still be busy with the previous span). */
 static uint64_t span_out(raster *r, int32_t y, int32_t x, int32_t len, uint32_t mask, uint64_t closed)
 {
-    const uint64_t a = closed + 1 > r->cov_free ? closed + 1 : r->cov_free;
+    uint64_t a = closed + 1 > r->cov_free ? closed + 1 : r->cov_free, b = a;
+    if (r->overlap) { /* section 6: into the queue once span k - EF_SPANQ has left it */
+        const uint64_t *old = &r->qstart[r->nspan % EF_SPANQ];
+        a = closed + 1;
+        if (r->nspan >= EF_SPANQ && *old > a)
+            a = *old;
+        b = a > r->cov_free ? a : r->cov_free; /* COV starts it */
+        r->qstart[r->nspan++ % EF_SPANQ] = b;
+    }
     const uint64_t vs[4] = { (uint64_t)y, (uint64_t)x, (uint64_t)len, mask };
     transfer(r, EF_IF_SPAN, a, vs);
     const uint8_t cov = ef_coverage_alpha(mask, r->ns); /* spec 7.3 */
@@ -117,9 +135,9 @@ static uint64_t span_out(raster *r, int32_t y, int32_t x, int32_t len, uint32_t 
             rgba = rgba << 8 | d[ch];
         }
         const uint64_t vp[4] = { (uint64_t)y, (uint64_t)(x + i), cov, rgba };
-        transfer(r, EF_IF_PIX, a + EF_L_COV + (uint64_t)i, vp);
+        transfer(r, EF_IF_PIX, b + EF_L_COV + (uint64_t)i, vp);
     }
-    r->cov_free = a + (uint64_t)len;
+    r->cov_free = b + (uint64_t)len;
     return a;
 }
 
@@ -160,6 +178,11 @@ static void scan(raster *r, int32_t y, int32_t xmin, int32_t xmax)
     int32_t start = xmin;
     uint64_t t = r->t;
     for (int32_t p = xmin; p <= xmax; p++) {
+        if (r->overlap) { /* section 6: the scan visits the plotted cells alone */
+            if (!r->plotted[p])
+                continue;
+            r->plotted[p] = 0;
+        }
         uint64_t next = t + 1;
         uint32_t m = mask;
         int marked;
@@ -193,6 +216,7 @@ static void scan(raster *r, int32_t y, int32_t xmin, int32_t xmax)
 uint64_t ef_trace_rows(ef_ctx *ctx, ef_image *img, ef_rule rule, const uint8_t premul[4], uint8_t alpha,
                        int32_t row_min, int32_t row_max, uint64_t t0)
 {
+    const int overlap = ctx->trace->schedule == EF_SCHEDULE_OVERLAP;
     raster r = { .ctx = ctx,
                  .tr = ctx->trace,
                  .img = img,
@@ -203,7 +227,10 @@ uint64_t ef_trace_rows(ef_ctx *ctx, ef_image *img, ef_rule rule, const uint8_t p
                  .cov_free = 0,
                  .drained = t0,
                  .premul = premul,
-                 .alpha = alpha };
+                 .alpha = alpha,
+                 .overlap = overlap,
+                 .plotted = ctx->trace->plotted,
+                 .nspan = 0 };
     const int32_t ns = ctx->samples, h = ctx->h, c = ctx->c, w256 = ctx->width * EF_DEV_ONE;
     for (int32_t row = row_min; row <= row_max; row++) {
         uint32_t nnew;
@@ -214,7 +241,7 @@ uint64_t ef_trace_rows(ef_ctx *ctx, ef_image *img, ef_rule rule, const uint8_t p
             const uint64_t v[2] = { (uint64_t)row, (uint64_t)(ctx->nedges - 1u - (uint32_t)idx) };
             transfer(&r, EF_IF_ET_RD, r.t++, v);
         }
-        r.t++; /* PLOT's output register (microarch 3.6): the first plot a cycle after the last et_rd */
+        r.t += EF_L_PLOT; /* PLOT's two registers (microarch 3.6): the first plot at t + n + L_PLOT */
         const int32_t base = row * ns, end = base + ns - 1;
         int32_t xmin = INT32_MAX, xmax = -1;
         uint32_t kept = 0;

@@ -40,7 +40,9 @@
 // forwarding register: the front read in the cycle an arrival is written
 // to that entry (two new edges and nothing older, or the first new edge
 // read right after the last old one) takes the written data.  An entry is
-// {x, e, qs, rs, dy, dir, r0, r1}, the et_wr fields (ef_ifaces.vh): 166 bits.
+// {x, e, qs, rs, dy, dir, s0, r1}, the et_wr fields (ef_ifaces.vh) but r0,
+// of which only s0 = r0's sample row within its pixel row is kept (0 for
+// a survivor): 152 bits at the widths of ef_ifaces.vh.
 //
 // Synthesizable Verilog-2005.
 `include "ef_ifaces.vh"
@@ -100,7 +102,7 @@ module ef_aet #(
     // a ring entry {x, e, qs, rs, dy, dir, r0, r1}: each field's position
     localparam O_R1   = 0;
     localparam O_R0   = O_R1 + `EF_ET_WR_R1_W;
-    localparam O_DIR  = O_R0 + `EF_ET_WR_R0_W;
+    localparam O_DIR  = O_R0 + `EF_PLOT_S_W;        // s0, not r0
     localparam O_DY   = O_DIR + `EF_ET_WR_DIR_W;
     localparam O_RS   = O_DY + `EF_ET_WR_DY_W;
     localparam O_QS   = O_RS + `EF_ET_WR_RS_W;
@@ -115,7 +117,8 @@ module ef_aet #(
     localparam [SRW-1:0] NSM1 = NSM1I[SRW-1:0];
     localparam [RA-1:0] RLAST = RLASTI[RA-1:0];
 
-    localparam [2:0] PH_IDLE = 3'd0, PH_RD = 3'd1, PH_P0 = 3'd2, PH_PL = 3'd3, PH_W1 = 3'd4, PH_W = 3'd5;
+    localparam [2:0] PH_IDLE = 3'd0, PH_RD = 3'd1, PH_P0 = 3'd2, PH_PL = 3'd3, PH_W1 = 3'd4, PH_W = 3'd5,
+                     PH_W2 = 3'd6;   // the row's last plot in stage p (EF_L_PLOT = 2)
 
     // ------------------------------------------------------------ state
     reg [2:0]       ph;
@@ -131,7 +134,14 @@ module ef_aet #(
     reg [RA:0]   n_old;           // edges active from earlier rows
     reg [RA:0]   aet_cnt;         // survivors pushed in this row
     reg [EA:0]   n_new;           // new edges of the row
-    reg [RA+1:0] k;               // edges of the row done so far
+    // the row's position (issue 25: registered, off the ring's read path):
+    reg [RA+1:0] rem;             // edges of the row after the one plotted
+    reg          rem_is0;         // rem == 0
+    reg          nn_nz;           // the row has new edges (n_new != 0)
+    reg [RA+1:0] fo_m1;           // n_old - 1: a row without new edges' first plot
+    reg          fo_is0, fo_is1;  // fo_m1 == 0, == 1
+    reg [RA+1:0] fb_m1;           // n_old + n_new - 1: after the row's et_rd
+    reg          fb_is0, fb_is1;  // fb_m1 == 0, == 1
     reg          arr_v, arr_last; // a record arrives this cycle
 
     reg          fresh;           // this plot starts an edge
@@ -163,8 +173,6 @@ module ef_aet #(
     // 25: it only enables).
     wire            in_w = (ph == PH_W);
     wire [ROWW-1:0] row_now = in_w ? nx_row : row;
-    wire [SRW-1:0]  base = {{(SRW-ROWW){1'b0}}, row_now} << LOG2NS;
-    wire [SRW-1:0]  rend = base + NSM1;
 
     // The least set bit of occ in log depth instead of a priority chain as
     // long as H_MAX (the critical path of the block in docs/synthesis.md),
@@ -233,52 +241,107 @@ module ef_aet #(
     assign rec_ra = et_rd_eid;
     wire [EA:0] n_new_now = in_w ? {(EA+1){1'b0}} : n_new;
     wire rd_end = rd_take && et_rd_last;
+    // n_all - 1 once this et_rd is taken (the row's edges: n_old and the new ones so far)
+    wire [RA+1:0] n_rd = {1'b0, n_old} + {{(RA+1-EA){1'b0}}, n_new_now};
 
     // ------------------------------------------------------------ plotting
     wire in_plot = (ph == PH_P0) || (ph == PH_PL) || (row_start && !nx_occ);
     wire first   = (ph != PH_PL);             // the row's first plot
     wire fr      = first || fresh;
     // edges of the row, and which come from the record port (the last new)
-    wire [EA:0]   nn = in_w ? {(EA+1){1'b0}} : n_new;   // new edges of the row
-    wire        rec_edge = (nn != 0);     // the last edge comes from rec_*
-    wire [RA+1:0] n_all = {1'b0, n_old} + {{(RA+1-EA){1'b0}}, nn};
-    wire [RA+1:0] k_now = first ? {(RA+2){1'b0}} : k;
-    wire        from_rec = fr && rec_edge && (k_now + 1'b1 == n_all);
+    // rem_now: the edges of the row after this one (n_all - 1 - k with n_all
+    // = n_old + the row's new edges, k the edges done), from registers: at
+    // the row's first plot the count set up in W1 (no new edges) or by the
+    // et_rd (with new edges), else the running count
+    wire        rec_edge = !in_w && nn_nz;     // the last edge comes from rec_*
+    wire [RA+1:0] rem_now = first ? (in_w ? fo_m1 : fb_m1) : rem;
+    wire        is0_now = first ? (in_w ? fo_is0 : fb_is0) : rem_is0;
+    wire        is1_now = first ? (in_w ? fo_is1 : fb_is1) : (rem == {{(RA+1){1'b0}}, 1'b1});
+    wire        from_rec = fr && rec_edge && is0_now;
 
-    wire [RW-1:0] src = from_rec ? {rec_x, rec_e, rec_qs, rec_rs, rec_dy, rec_dir, rec_r0, rec_r1} : ring_rd;
+    wire [`EF_PLOT_S_W-1:0] rec_s0 = rec_r0[`EF_PLOT_S_W-1:0] & NSM1[`EF_PLOT_S_W-1:0];   // a new edge: r0 in this row
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [`EF_ET_WR_R0_W-1:0] unused_rec_r0 = rec_r0;   // its pixel row is the row's (its slot)
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire [RW-1:0] src = from_rec ? {rec_x, rec_e, rec_qs, rec_rs, rec_dy, rec_dir, rec_s0, rec_r1} : ring_rd;
     wire signed [31:0] S_x = fr ? {{(32-`EF_ET_WR_X_W){src[RW-1]}}, src[O_X +: `EF_ET_WR_X_W]} : cur_x;
     wire [`EF_ET_WR_E_W-1:0]  S_e  = fr ? src[O_E +: `EF_ET_WR_E_W]   : cur_e;
     wire [`EF_ET_WR_QS_W-1:0] S_qs = fr ? src[O_QS +: `EF_ET_WR_QS_W] : cur_qs;
     wire [`EF_ET_WR_RS_W-1:0] S_rs = fr ? src[O_RS +: `EF_ET_WR_RS_W] : cur_rs;
     wire [`EF_ET_WR_DY_W-1:0] S_dy = fr ? src[O_DY +: `EF_ET_WR_DY_W] : cur_dy;
     wire        S_dir = fr ? src[O_DIR] : cur_dir;
-    wire [SRW-1:0] S_r0 = src[O_R0 +: SRW];
+    wire [`EF_PLOT_S_W-1:0] S_s0 = src[O_R0 +: `EF_PLOT_S_W];
     wire [SRW-1:0] S_r1 = fr ? src[O_R1 +: SRW] : cur_r1;
 
-    /* verilator lint_off UNUSEDSIGNAL */
-    wire [SRW-1:0] s0w = (S_r0 > base) ? (S_r0 - base) : {SRW{1'b0}};   // < NS
-    wire [SRW-1:0] slw = ((S_r1 < rend) ? S_r1 : rend) - base;         // < NS
-    /* verilator lint_on UNUSEDSIGNAL */
-    wire [`EF_PLOT_S_W-1:0] s_now = fr ? s0w[`EF_PLOT_S_W-1:0] : cur_s;
-    wire        edge_done = (s_now == slw[`EF_PLOT_S_W-1:0]);
-    wire        survive   = S_r1 > rend;
-    wire        row_last  = (k_now + 1'b1 == n_all);
+    // The edge's first and last sample rows in this row, and whether it
+    // survives it, without compares or subtractions against the row's
+    // first sample row (issue 25: they were on the ring's read path): an
+    // edge plotted in row j has r1 >= j*NS (a survivor of row j-1 has r1
+    // past that row's last sample row, a new edge r1 >= r0), and r0 either
+    // in row j (a new edge: its slot is r0's row) or 0 (a survivor, written
+    // so), so s0 = r0 - j*NS is r0's low bits (0 for a survivor: the ring
+    // keeps only these bits, s0, for every edge); the last
+    // sample row is r1 - j*NS if r1 is in row j, else NS-1; it survives iff
+    // r1 is past row j.
+    wire [SRW-1:0] row_sr = {{(SRW-ROWW){1'b0}}, row_now};
+    wire        r1_here = ((S_r1 >> LOG2NS) == row_sr);
+    wire [`EF_PLOT_S_W-1:0] s0w = S_s0;
+    wire [`EF_PLOT_S_W-1:0] slw = r1_here ? S_r1[`EF_PLOT_S_W-1:0] & NSM1[`EF_PLOT_S_W-1:0] : NSM1[`EF_PLOT_S_W-1:0];
+    wire [`EF_PLOT_S_W-1:0] s_now = fr ? s0w : cur_s;
+    wire        edge_done = (s_now == slw);
+    wire        survive   = !r1_here;
+    wire        row_last  = is0_now;
     // the next edge is in the ring (not the record port's)
-    wire        next_ring = !row_last && !(rec_edge && (k_now + {{RA{1'b0}}, 2'd2} == n_all));
+    wire        next_ring = !row_last && !(rec_edge && is1_now);
 
-    wire [`EF_PLOT_Q_W-1:0] q;
+    // PLOT's DDA step here, in the sequencer's cycle (its state feeds the
+    // next plot of the edge); its q is formed a cycle later (below).
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [`EF_PLOT_Q_W-1:0] q_unused;
+    /* verilator lint_on UNUSEDSIGNAL */
     wire signed [31:0] x_next;
     wire [`EF_ET_WR_E_W-1:0] e_next;
     ef_plot #(.NS(NS)) u_plot (
         .s(s_now), .x(S_x), .e(S_e), .qs(S_qs), .rs(S_rs), .dy(S_dy), .width(cfg_width),
-        .q(q), .x_next(x_next), .e_next(e_next)
+        .q(q_unused), .x_next(x_next), .e_next(e_next)
     );
 
-    // The plot register (issue 25): PLOT's result is presented on plot in
-    // the next cycle, so no combinational path runs from the ring, the
-    // record port and PLOT's carry chains into SLB.  SLB is ready for every
-    // plot of a row (it drops plot_ready only after taking the row's last),
-    // so the register never holds a plot that is not taken.
+    // The plot pipeline (issue 25), EF_L_PLOT = 2 registers deep: the
+    // sequencer's cycle registers the plot's sample row and x (stage a);
+    // the next cycle forms q (PLOT's offset add, shift and clamp: a second
+    // ef_plot whose DDA outputs are unused) and registers it with the rest
+    // of the plot (stage p, the plot outputs).  So no combinational path
+    // runs from the ring, the record port or PLOT's carry chains into SLB,
+    // nor from the ring's read port through PLOT's clamp.  SLB is ready for
+    // every plot of a row (it drops plot_ready only after taking the row's
+    // last), so the registers never hold a plot that is not taken.
+    reg        a_valid, a_last, a_dir;
+    reg [`EF_PLOT_ROW_W-1:0] a_row;
+    reg [`EF_PLOT_S_W-1:0]   a_s;
+    reg signed [31:0]        a_x;
+    always @(posedge clk) begin
+        if (rst)
+            a_valid <= 1'b0;
+        else
+            a_valid <= in_plot;
+        a_last <= in_plot && edge_done && row_last;
+        a_row  <= row_now;
+        a_s    <= s_now;
+        a_x    <= S_x;
+        a_dir  <= S_dir;
+    end
+
+    wire [`EF_PLOT_Q_W-1:0] q;
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire signed [31:0] a_x_unused;
+    wire [`EF_ET_WR_E_W-1:0] a_e_unused;
+    /* verilator lint_on UNUSEDSIGNAL */
+    ef_plot #(.NS(NS)) u_plot_q (
+        .s(a_s), .x(a_x), .e({`EF_ET_WR_E_W{1'b0}}), .qs({`EF_ET_WR_QS_W{1'b0}}),
+        .rs({`EF_ET_WR_RS_W{1'b0}}), .dy({`EF_ET_WR_DY_W{1'b0}}), .width(cfg_width),
+        .q(q), .x_next(a_x_unused), .e_next(a_e_unused)
+    );
+
     reg        p_valid, p_last, p_dir;
     reg [`EF_PLOT_ROW_W-1:0] p_row;
     reg [`EF_PLOT_S_W-1:0]   p_s;
@@ -287,12 +350,12 @@ module ef_aet #(
         if (rst)
             p_valid <= 1'b0;
         else
-            p_valid <= in_plot;
-        p_last <= in_plot && edge_done && row_last;
-        p_row  <= row_now;
-        p_s    <= s_now;
+            p_valid <= a_valid;
+        p_last <= a_last;
+        p_row  <= a_row;
+        p_s    <= a_s;
         p_q    <= q;
-        p_dir  <= S_dir;
+        p_dir  <= a_dir;
     end
     assign plot_valid = p_valid;
     assign plot_last  = p_last;
@@ -306,8 +369,8 @@ module ef_aet #(
     wire arrive = arr_v && !arr_last;            // t+1 .. t+n-1: no plot yet
     assign ring_we = push || arrive;
     // a survivor's r0 is 0: in later rows it starts at sample row 0
-    assign ring_wd = push ? {x_next[`EF_ET_WR_X_W-1:0], e_next, S_qs, S_rs, S_dy, S_dir, {SRW{1'b0}}, S_r1}
-                          : {rec_x, rec_e, rec_qs, rec_rs, rec_dy, rec_dir, rec_r0, rec_r1};
+    assign ring_wd = push ? {x_next[`EF_ET_WR_X_W-1:0], e_next, S_qs, S_rs, S_dy, S_dir, {`EF_PLOT_S_W{1'b0}}, S_r1}
+                          : {rec_x, rec_e, rec_qs, rec_rs, rec_dy, rec_dir, rec_s0, rec_r1};
     wire w1 = (ph == PH_W1);
     // reads: the next row's first edge (after the last plot), the first new
     // edge of a row without older ones (with the last et_rd), the next edge
@@ -334,7 +397,7 @@ module ef_aet #(
     assign row_req     = eos_go || (w1 && !shape_end && nx_occ_calc);
     assign row_req_row = eos_go ? rmin : nx_calc;
 
-    assign busy = (ph != PH_IDLE) || p_valid;
+    assign busy = (ph != PH_IDLE) || a_valid || p_valid;
 
     // et_rd's row field is not used here: the sequencer knows the row it
     // requested, and ETM presents that row's list.  The field is on the
@@ -402,11 +465,16 @@ module ef_aet #(
                 row <= nx_row;
                 occ[nx_row[HA-1:0]] <= 1'b0;
                 n_new <= {(EA+1){1'b0}};
+                nn_nz <= 1'b0;
                 if (nx_occ)
                     ph <= PH_RD;
             end
             if (rd_take) begin
                 n_new <= n_new_now + 1'b1;
+                nn_nz <= 1'b1;
+                fb_m1 <= n_rd;
+                fb_is0 <= (n_rd == {(RA+2){1'b0}});
+                fb_is1 <= (n_rd == {{(RA+1){1'b0}}, 1'b1});
                 if (rd_end)
                     ph <= PH_P0;
             end
@@ -415,7 +483,8 @@ module ef_aet #(
                 ph <= PH_PL;
                 if (edge_done) begin
                     fresh <= 1'b1;
-                    k <= k_now + 1'b1;
+                    rem <= rem_now - 1'b1;
+                    rem_is0 <= is1_now;
                     if (push)
                         aet_cnt <= aet_cnt + 1'b1;
                     if (row_last) begin
@@ -423,7 +492,8 @@ module ef_aet #(
                     end
                 end else begin
                     fresh <= 1'b0;
-                    k <= k_now;
+                    rem <= rem_now;
+                    rem_is0 <= is0_now;
                     cur_x <= x_next; cur_e <= e_next; cur_qs <= S_qs; cur_rs <= S_rs; cur_dy <= S_dy;
                     cur_dir <= S_dir; cur_r1 <= S_r1; cur_s <= s_now + 1'b1;
                 end
@@ -431,11 +501,18 @@ module ef_aet #(
 
             if (w1) begin
                 n_old <= aet_cnt;
+                fo_m1 <= {1'b0, aet_cnt} - 1'b1;
+                fo_is0 <= (aet_cnt == {{RA{1'b0}}, 1'b1});
+                fo_is1 <= (aet_cnt == {{(RA-1){1'b0}}, 2'd2});
                 aet_cnt <= {(RA+1){1'b0}};
                 nx_row <= nx_calc;
                 nx_occ <= nx_occ_calc;
-                ph <= shape_end ? PH_IDLE : PH_W;
+                ph <= shape_end ? PH_IDLE : PH_W2;
             end
+            // one cycle more: SLB takes the row's last plot now (it left
+            // the sequencer two cycles ago), so its plot_ready is still high
+            if (ph == PH_W2)
+                ph <= PH_W;
         end
     end
 endmodule

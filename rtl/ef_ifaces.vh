@@ -9,6 +9,8 @@
 `define EF_L_DEC 1
 `define EF_L_SETUP 33
 `define EF_L_COV 3
+`define EF_L_PLOT 2
+`define EF_SPANQ 16
 
 // commands: the op field of cmd (docs/microarch.md 3.1)
 `define EF_OP_FRAME 1

@@ -127,8 +127,9 @@ typedef struct ef_gen_case {
     int rules_swapped;  /* a level-2 rule-swapped variant */
     uint64_t case_seed; /* random cases */
     ef_gen_expect expect;
-    char desc[768]; /* one line, no tabs */
-    ef_scene scene; /* the drawing */
+    char desc[768];     /* one line, no tabs */
+    ef_scene scene;     /* the drawing */
+    char fit_note[400]; /* ef_gen_fit: what was done to fit the DUT, or why it was refused; "" */
 } ef_gen_case;
 
 /* Builds case k (0 <= k < ef_gen_total(c)) into *out (initialised here; free
@@ -137,12 +138,38 @@ typedef struct ef_gen_case {
 EF_API ef_status ef_gen_build(const ef_gen_config *c, uint32_t k, ef_gen_case *out);
 EF_API void ef_gen_case_destroy(ef_gen_case *gc);
 
+/* ------------------------------------------------------ the DUT's limits */
+/* A DUT's limits as a board's identify states them (docs/board.md 3.1);
+ * 0 in a field: no limit. */
+typedef struct ef_gen_limits {
+    int32_t width, height; /* the largest canvas, W_MAX x H_MAX */
+    uint32_t edges;        /* the most EDGE commands of one shape, E_MAX */
+    uint32_t samples_mask; /* bit 3: 8, bit 4: 16, bit 5: 32 samples per pixel */
+} ef_gen_limits;
+typedef enum ef_gen_fit_result {
+    EF_GEN_FIT_AS_IS = 0, /* the case fits: unchanged */
+    EF_GEN_FIT_FITTED,    /* changed to fit (gc->fit_note says how) */
+    EF_GEN_FIT_REFUSED    /* cannot be fitted (gc->fit_note says why) */
+} ef_gen_fit_result;
+/* 1 if the DUT takes this sample count. */
+EF_API int ef_gen_limits_takes(const ef_gen_limits *lim, int samples);
+/* Fits case gc (from ef_gen_build) to the DUT (docs/gen.md section 11): a
+ * grid case for a sample count it does not take is refused; a canvas over
+ * its largest is scaled by 1/2^k (expectations dropped); a shape over its
+ * edges is split into shapes of whole contours only when the model renders
+ * the same bytes at every sample count it takes and every rule setting,
+ * else refused.  *res says which; gc->fit_note says how or why.  EF_OK, or
+ * EF_ERR_NOMEM and the like from the model (then gc is unchanged or fitted). */
+EF_API ef_status ef_gen_fit(const ef_gen_limits *lim, ef_gen_case *gc, ef_gen_fit_result *res);
+
 /* ------------------------------------------------------------- text out */
 typedef struct ef_gen_text {
     char *data; /* NUL-terminated */
     size_t len, cap;
 } ef_gen_text;
 EF_API void ef_gen_text_destroy(ef_gen_text *t);
+/* Appends s to t (NUL-terminated after it).  EF_ERR_NOMEM. */
+EF_API ef_status ef_gen_text_append(ef_gen_text *t, const char *s);
 
 /* The case's file: header comments, then `scene W H`, shapes and contours
  * with exact Q16.8 decimals.  Replaces t's content.  EF_ERR_ARG if a contour

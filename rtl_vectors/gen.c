@@ -328,6 +328,8 @@ static ef_status put(ef_gen_text *t, const char *s, size_t n)
 
 static ef_status puts_(ef_gen_text *t, const char *s) { return put(t, s, strlen(s)); }
 
+ef_status ef_gen_text_append(ef_gen_text *t, const char *s) { return puts_(t, s); }
+
 #if defined(__GNUC__)
 __attribute__((format(printf, 2, 3)))
 #endif
@@ -440,6 +442,11 @@ static ef_status put_header(const ef_gen_config *c, const ef_gen_case *gc, ef_ge
     }
     if (!st)
         st = put_wrapped(t, gc->desc);
+    if (!st && gc->fit_note[0]) {
+        char note[sizeof gc->fit_note + 32];
+        snprintf(note, sizeof note, "Fitted to the DUT's limits: %s.", gc->fit_note);
+        st = put_wrapped(t, note);
+    }
     if (!st)
         st = put_expect(t, &gc->expect);
     if (!st && gc->grid)
@@ -521,6 +528,8 @@ ef_status ef_gen_index_row(const ef_gen_case *gc, ef_gen_text *t)
         snprintf(seed, sizeof seed, "0x%016" PRIx64, gc->case_seed);
     st = putf(t, "%" PRIu32 "\t%s\t%s\t%s\t%s%s\t%d\t%s\t", gc->number, file, gc->directed ? "directed" : "random",
               ef_gen_category_name(gc->category), gc->name, gc->rules_swapped ? "/swapped" : "", gc->grid, seed);
+    if (!st && gc->fit_note[0])
+        st = putf(t, "[fitted to the DUT's limits: %s] ", gc->fit_note);
     if (!st)
         st = puts_(t, gc->desc);
     if (!st)

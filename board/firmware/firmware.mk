@@ -1,5 +1,5 @@
 # board/firmware/firmware.mk - the ULX3S board's firmware: board/ef_board.c and
-# proto/ef_frame.c compiled unchanged, with main.c, dut_soc.c and crc32.c, by
+# proto/ef_frame.c compiled unchanged, with main.c (the engine), its links (link_*.c), dut_soc.c and crc32.c, by
 # Debian's riscv64-unknown-elf-gcc against picolibc, for the SoC's VexRiscv
 # (rv32i).  Included by the Makefile; FW_SOC names the SoC build folder whose
 # software/include/generated headers (csr.h, soc.h, mem.h, regions.ld) it
@@ -21,7 +21,9 @@ FW_CFLAGS = -march=$(FW_MARCH) -mabi=ilp32 --specs=picolibc.specs -Os -std=gnu11
             $(LAYER_INC_firmware) -I$(FW_SOC)/software/include -isystem $(FW_LITEX_INC) -isystem $(FW_LITEX_INC)/../../cores/cpu/vexriscv
 FW_OUT ?= $(FW_SOC)/firmware
 FW_EXTRA ?=
-FW_SRC = board/firmware/crt0.S board/firmware/main.c board/firmware/dut_soc.c board/firmware/crc32.c \
+# the links (board/firmware/link.h): each file compiles to nothing when the SoC lacks its core
+FW_LINKS = board/firmware/link_uart.c board/firmware/link_gpio.c
+FW_SRC = board/firmware/crt0.S board/firmware/main.c $(FW_LINKS) board/firmware/dut_soc.c board/firmware/crc32.c \
          board/ef_board.c proto/ef_frame.c
 
 $(FW_OUT).elf: $(FW_SRC) board/firmware/linker.ld board/firmware/*.h board/ef_board.h proto/ef_frame.h \

@@ -15,7 +15,7 @@
 //
 //   board_sim --dir GATEWARE_DIR [--pty-link FILE] [--link PATH] [--listen PATH] [--baud N]
 //             [--sys-clk HZ] [--ef-clk HZ] [--faults LIST] [--probe-status CYCLES]
-//             [--max-seconds S] [--quiet]
+//             [--max-seconds S] [--quiet] [--gpio-listen PATH [--gpio-step-cycles N] [--gpio-lockstep]]
 //
 // --dir: where the memory images (sim_rom.init, ...) are.  The board is
 // published only once it is up: the harness itself sends the firmware an
@@ -47,7 +47,9 @@
 // On SIGTERM or SIGINT, or after --max-seconds of wall time, it prints the
 // cycles simulated, the bytes moved, the faults played, the simulated time
 // from the host's first byte to the board's last, and the most result
-// frames kept, and exits 0.
+// frames kept, and exits 0.  --gpio-listen: the SoC's GPIO bus pins behind a
+// unix socket for the emulated gpiochip of the tests (gpio_link.cpp), served
+// once the board is up.
 #include <cerrno>
 #include <cmath>
 #include <csignal>
@@ -65,6 +67,7 @@
 #include <unistd.h>
 
 #include "Vsim.h"
+#include "gpio_link.h"
 #include "verilated.h"
 #include <zlib.h>
 
@@ -172,7 +175,7 @@ static void usage()
                  "usage: board_sim --dir GATEWARE_DIR [--pty-link FILE] [--link PATH] [--listen PATH] "
                  "[--baud N] [--sys-clk HZ] [--ef-clk HZ] [--faults stall=N,reset=N,unplug=N] [--probe-status CYCLES] "
                  "[--max-seconds S] "
-                 "[--quiet]\n");
+                 "[--quiet] [--gpio-listen PATH [--gpio-step-cycles N] [--gpio-lockstep]]\n");
     std::exit(2);
 }
 
@@ -181,6 +184,7 @@ struct Board {
     VerilatedContext ctx;
     Vsim top{ &ctx };
     uint64_t cyc = 0, byte_cycles = 0, next_rx = 0, next_tx = 0, ef_div = 2;
+    GpioLink *gpio = nullptr;   // the GPIO header's socket (gpio_link.cpp), served once the board is up
     void reset_pins()
     {
         top.sys_rst = 1;
@@ -195,6 +199,8 @@ struct Board {
         top.serial_sink_valid = in && cyc >= next_rx;
         top.serial_sink_data = in ? *in : 0;
         top.serial_source_ready = room && cyc >= next_tx;
+        if (gpio)
+            gpio_link_cycle(gpio, top, cyc);
         // sys falls, then rises; ef is high for sys cycles 0 and 1 of every 4, so it rises
         // with every fourth sys rise and falls two sys cycles later
         top.sys_clk = 0;
@@ -222,6 +228,9 @@ int main(int argc, char **argv)
     double baud = 3e6, max_seconds = 0, sys_clk = 30e6, ef_clk = 15e6;
     uint64_t probe = 0;
     int quiet = 0;
+    const char *gpio_path = nullptr;
+    unsigned gpio_step = 30;
+    bool gpio_lockstep = false;
     for (int i = 1; i < argc; i++) {
         std::string a = argv[i];
         if (a == "--dir" && i + 1 < argc)
@@ -261,11 +270,20 @@ int main(int argc, char **argv)
             }
         } else if (a == "--quiet")
             quiet = 1;
+        else if (a == "--gpio-listen" && i + 1 < argc)
+            gpio_path = argv[++i];
+        else if (a == "--gpio-step-cycles" && i + 1 < argc)
+            gpio_step = (unsigned)std::atoi(argv[++i]);
+        else if (a == "--gpio-lockstep")
+            gpio_lockstep = true;
         else
             usage();
     }
     if (!dir || (listen_path && (pty_link || link)))
         usage();
+    GpioLink *gpio = gpio_path ? gpio_link_open(gpio_path, gpio_step, gpio_lockstep) : nullptr;
+    if (gpio_path && !gpio)
+        return 1;
     if (chdir(dir) != 0) {   // the $readmemh images are named relative to the gateware folder
         std::perror("board_sim: --dir");
         return 1;
@@ -325,6 +343,7 @@ int main(int argc, char **argv)
         in_len = in_pos = 0;
     }
     const double t_ready = now_s();
+    bd.gpio = gpio;   // (not while the harness's own identify runs: a lockstep GPIO host would hold it)
     const uint64_t cyc_ready = bd.cyc;
 
     // the host's end: a pseudo-terminal (default) or a unix socket
@@ -466,6 +485,8 @@ int main(int argc, char **argv)
                      (unsigned long long)bytes_out, last_out > first_in ? (last_out - first_in) / (double)sys_hz : 0.0,
                      (unsigned)kept.most, kept.probes, played[F_STALL] ? ", stalled" : "",
                      played[F_RESET] ? ", reset" : "", played[F_UNPLUG] ? ", unplugged" : "");
+    if (gpio)
+        gpio_link_close(gpio, (double)sys_hz);
     bd.top.final();
     if (link)
         unlink(link);

@@ -13,8 +13,10 @@ py=${EF_VENV:-build/venv}/bin/python
 log=$dir/bitstream.log
 start=$(date +%s)
 echo "bitstream: $board, ef_raster NS $ns, seed $seed (Yosys, nextpnr-ecp5 and ecppack from PyPI: slow on a busy machine)"
+# EF_SOC_FLAGS: more soc.py options (`make bitstream BOARD_GPIO=0` gives --no-gpio)
+# shellcheck disable=SC2086
 if ! "$py" board/soc/soc.py --target "$board" --ns "$ns" --out "$dir" --rom "$dir/firmware.bin" --seed "$seed" \
-        >"$log" 2>&1; then
+        ${EF_SOC_FLAGS:-} >"$log" 2>&1; then
     grep -E "ERROR|Error|error:|FAIL" "$log" | tail -n 20
     tail -n 20 "$log"
     echo "bitstream: FAILED (log: $log)" >&2

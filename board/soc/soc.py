@@ -3,7 +3,8 @@
 
 A VexRiscv (lite: rv32im with small caches) runs the firmware (board/firmware: the board engine
 board/ef_board.c) from the integrated ROM; ef_raster is the peripheral of
-ef_periph.py on its own clock `ef`; the UART is LiteX's, at 3 Mbaud.
+ef_periph.py on its own clock `ef`; the UART is LiteX's, at 3 Mbaud; the GPIO bus slave of
+ef_gpio.py on the header (docs/board-gpio.md; --no-gpio leaves it out).
 
     soc.py --target ulx3s-25f|ulx3s-85f|sim --out DIR [--ns 8|16] [--rom FIRMWARE.bin]
            [--headers-only] [--sys-clk HZ] [--ef-clk HZ]
@@ -29,6 +30,7 @@ from litex.soc.integration.soc_core import SoCCore
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from ef_periph import EFRaster  # noqa: E402
+from ef_gpio import BOARD_SIGNALS, HOST_SIGNALS, EFGpioBus  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
@@ -61,7 +63,36 @@ class _CRGULX3S(Module):
         self.comb += platform.request("wifi_gpio0").eq(1)
 
 
+# The GPIO bus (docs/board-gpio.md, "The ULX3S"): the host's 12 lines on J1 (GP0-GP5, GN0-GN5), the
+# board's 12 on J2 (GP18-GP23, GN18-GN23); LVCMOS33 both ways.  Header lines shared with the ESP32
+# (GP11-GP13) and the ADC (GP14-GP17) are left alone.
+GPIO_PINS = {
+    "d": "gp0 gn0 gp1 gn1 gp2 gn2 gp3 gn3", "clk": "gp4", "valid": "gn4", "take": "gp5", "ctl": "gn5",
+    "q": "gp18 gn18 gp19 gn19 gp20 gn20 gp21 gn21", "ready": "gp22", "avail": "gn22", "done": "gp23",
+    "err": "gn23",
+}
+# the ECP5 balls of the ULX3S v2/v3 header lines used (the board's constraint file, ulx3s_v20.lpf)
+ULX3S_BALLS = {
+    "gp0": "B11", "gn0": "C11", "gp1": "A10", "gn1": "A11", "gp2": "A9", "gn2": "B10", "gp3": "B9",
+    "gn3": "C10", "gp4": "A7", "gn4": "A8", "gp5": "C8", "gn5": "B8",
+    "gp18": "H18", "gn18": "H17", "gp19": "F17", "gn19": "G18", "gp20": "D18", "gn20": "E17", "gp21": "C18",
+    "gn21": "D17", "gp22": "B15", "gn22": "C15", "gp23": "B17", "gn23": "C17",
+}
+
+
+def _gpio_ulx3s_io():
+    from litex.build.generic_platform import IOStandard, Misc
+    subs = []
+    for name, _ in HOST_SIGNALS + BOARD_SIGNALS:
+        balls = " ".join(ULX3S_BALLS[p] for p in GPIO_PINS[name].split())
+        # the host's lines pulled down (an unwired header is an idle bus), the board's driven
+        extra = [Misc("PULLMODE=DOWN")] if name in dict(HOST_SIGNALS) else [Misc("DRIVE=4")]
+        subs.append(Subsignal(name, Pins(balls), IOStandard("LVCMOS33"), *extra))
+    return [("ef_gpio", 0, *subs)]
+
+
 _sim_io = [
+    ("ef_gpio", 0, *[Subsignal(n, Pins(w)) for n, w in HOST_SIGNALS + BOARD_SIGNALS]),
     ("sys_clk", 0, Pins(1)),
     ("ef_clk", 0, Pins(1)),
     ("sys_rst", 0, Pins(1)),
@@ -87,7 +118,8 @@ class _CRGSim(Module):
 
 
 class EdgeflagSoC(SoCCore):
-    def __init__(self, target, ns, rom_init, sys_clk, ef_clk, main_ram, cpu_variant="lite", e_max=E_MAX):
+    def __init__(self, target, ns, rom_init, sys_clk, ef_clk, main_ram, cpu_variant="lite", e_max=E_MAX,
+                 gpio=True):
         if target == "sim":
             from litex.build.sim import SimPlatform
             platform = SimPlatform("SIM", _sim_io)
@@ -114,6 +146,11 @@ class EdgeflagSoC(SoCCore):
                          uart_name=uart, uart_baudrate=BAUD, uart_fifo_depth=64,
                          with_timer=True, with_ctrl=False)
         self.submodules.crg = crg
+        if gpio:
+            # the GPIO bus slave (board/soc/ef_gpio.py); the firmware's link_gpio.c drives it
+            if target != "sim":
+                platform.add_extension(_gpio_ulx3s_io())
+            self.gpiobus = EFGpioBus(platform.request("ef_gpio"))
         self.ef = EFRaster(ns=ns, w_max=W_MAX, h_max=H_MAX, e_max=e_max)
         for name, value in [("EF_NS", ns), ("EF_W_MAX", W_MAX), ("EF_H_MAX", H_MAX), ("EF_E_MAX", e_max),
                             ("EF_SYS_CLK", int(sys_clk)), ("EF_EF_CLK", int(ef_clk)), ("EF_BAUD", BAUD)]:
@@ -151,6 +188,7 @@ def main():
                     help="VexRiscv variant: lite (rv32im, 2 KiB instruction and data caches: the default) or minimal (rv32i)")
     ap.add_argument("--e-max", type=int, default=E_MAX, help="ef_raster's E_MAX (edges per shape)")
     ap.add_argument("--seed", type=int, default=1, help="nextpnr's placement seed")
+    ap.add_argument("--no-gpio", action="store_true", help="leave the GPIO bus slave out (docs/board-gpio.md)")
     a = ap.parse_args()
     if a.sys_clk is None:
         a.sys_clk = 30e6
@@ -158,7 +196,8 @@ def main():
         sys.exit("soc.py: --sys-clk must be a multiple of 3 MHz (the UART's 3 Mbaud divides it exactly)")
     rom = get_mem_data(a.rom, endianness="little") if a.rom else []
     main_ram = a.main_ram if a.main_ram is not None else (0x400000 if a.target == "sim" else 0)
-    soc = EdgeflagSoC(a.target, a.ns, rom, a.sys_clk, a.ef_clk, main_ram, a.cpu_variant, a.e_max)
+    soc = EdgeflagSoC(a.target, a.ns, rom, a.sys_clk, a.ef_clk, main_ram, a.cpu_variant, a.e_max,
+                      gpio=not a.no_gpio)
     if a.target == "sim":
         # Only the Verilog and the memory images: board/sim has its own Verilator harness, so
         # LiteX's simulator (its C modules, its tap/ethernet data package) is not used.

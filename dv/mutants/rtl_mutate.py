@@ -20,9 +20,11 @@ Operators (docs/testing.md, "RTL mutants"):
   hold   a register that never loads (q <= d becomes q <= q): the update of a
          pipeline register dropped
 
-Code inside `ifdef EF_FAULT_*` (the fault variants) is left alone, as are
-initial blocks, for headers, parameters, and functions that a parameter
-calls (they must stay constant expressions).
+Initial blocks, for headers, parameters, and functions that a parameter
+calls (they must stay constant expressions) are left alone.  The planted
+faults are not in rtl/ (they are sed scripts, dv/faults/*.sed, that
+dv/rtl-variant.sh applies to a copy); should an `ifdef EF_FAULT_*` branch
+ever appear, its code is skipped too.
 
 usage: rtl_mutate.py OUT_DIR FILE.v|FILE.vh...    (prints the number of mutants; a .vh file is
        a fragment included in a module's body, whose ef_mut it uses)
@@ -67,7 +69,7 @@ def tokenize(src):
             toks.append(Tok(kind, m.group(), pos, line))
         line += m.group().count("\n")
         pos = m.end()
-    # dead code: the fault variants' branches
+    # dead code: an `ifdef EF_FAULT_* branch, should one appear (rtl/ has none)
     stack = []
     i = 0
     while i < len(toks):

@@ -5,8 +5,8 @@
 // row the reference schedule rasterizes it raises row_req in the cycle
 // before the row's first cycle, which is the cycle of the row's first
 // et_rd (et_rd.expected.hex) or, for a row whose slot is empty (an AET that
-// is not), of its first plot (plot.expected.hex: a row's plots end with
-// last = 1).  et_rd_ready is always high (the reference AET).  Every et_rd
+// is not), L_PLOT cycles before its first plot (plot.expected.hex: a row's
+// plots end with last = 1).  et_rd_ready is always high (the reference AET).  Every et_rd
 // transfer is recorded with its cycle as et_rd.actual.hex for
 // `edgeflag check et_rd.expected.hex et_rd.actual.hex --cycles`, so a list
 // in the wrong order, a slot not cleared when taken (an edge again in a
@@ -114,11 +114,14 @@ module tb_etm #(
                         end
                         a = a + 1;
                     end
-                    if (!(a > 0 && rd_mem[a-1][RWD-1 -: 48] + 1 == pl_mem[p][PWD-1 -: 48] &&
+                    // a row with et_rd has its first plot L_PLOT cycles after the
+                    // cycle that follows its last et_rd (docs/microarch.md section 4,
+                    // item 4); one without starts L_PLOT cycles before its first plot
+                    if (!(a > 0 && rd_mem[a-1][RWD-1 -: 48] + 1 + `EF_L_PLOT == pl_mem[p][PWD-1 -: 48] &&
                           rd_mem[a-1][`EF_ET_RD_ROW_MSB:`EF_ET_RD_ROW_LSB] ==
                           pl_mem[p][`EF_PLOT_ROW_MSB:`EF_PLOT_ROW_LSB])) begin
                         rq_row[nreq] = pl_mem[p][`EF_PLOT_ROW_MSB:`EF_PLOT_ROW_LSB];
-                        rq_cyc[nreq] = pl_mem[p][PWD-1 -: 48];
+                        rq_cyc[nreq] = pl_mem[p][PWD-1 -: 48] - `EF_L_PLOT;
                         nreq = nreq + 1;
                     end
                 end

@@ -40,10 +40,18 @@ typedef enum ef_iface {
 #define EF_TXN_WORDS 4   /* payload up to 256 bits */
 #define EF_CYCLE_BITS 48 /* cycle stamps are < 2^48 */
 
-/* Reference schedule latencies (docs/microarch.md section 4). */
+/* Schedule latencies (docs/microarch.md sections 4 and 6): the one source of
+ * each, shared by both schedules. */
 #define EF_L_DEC 1    /* cmd -> seg */
 #define EF_L_SETUP 33 /* seg -> et_wr: 2 + 30 divider stages + 1 */
-#define EF_L_COV 3    /* span accepted -> first pix */
+#define EF_L_COV 3    /* span accepted (overlap: started) -> first pix */
+#define EF_L_PLOT 2   /* a row's last et_rd cycle (or its start, without one) -> its first plot: PLOT's two registers */
+#define EF_SPANQ 16   /* overlap schedule: spans COV's queue holds (section 6) */
+
+/* The schedule the trace stamps: the reference one (docs/microarch.md
+ * section 4, the default) or the overlapped one (section 6): the same
+ * transactions in the same order per interface, at other cycles. */
+typedef enum ef_schedule { EF_SCHEDULE_REFERENCE = 0, EF_SCHEDULE_OVERLAP = 1 } ef_schedule;
 
 /* Commands (the `op` field of cmd). */
 enum { EF_OP_FRAME = 1, EF_OP_SHAPE = 2, EF_OP_EDGE = 3, EF_OP_SHAPE_END = 4, EF_OP_FRAME_END = 5 };
@@ -92,6 +100,11 @@ typedef void (*ef_txn_fn)(void *user, const ef_txn *t);
 /* Enables tracing of the interfaces in iface_mask (bit i = ef_iface i) to
  * sink, or disables it (sink NULL).  EF_ERR_ARG for a bad mask. */
 EF_API ef_status ef_trace_enable(ef_ctx *ctx, uint32_t iface_mask, ef_txn_fn sink, void *user);
+/* Chooses the schedule of the frames traced from now on (kept until changed).
+ * EF_ERR_ARG with tracing off or for another value.  The overlap schedule
+ * covers the box filter without subpixel offsets: a traced ef_fill with the
+ * spec 10 options on under it returns EF_ERR_UNSUPPORTED. */
+EF_API ef_status ef_trace_set_schedule(ef_ctx *ctx, ef_schedule schedule);
 /* Starts a frame: the FRAME command at cycle 0 (the clock restarts). */
 EF_API ef_status ef_trace_frame_begin(ef_ctx *ctx);
 /* Ends it: the FRAME_END command; *cycles (if not NULL) receives the

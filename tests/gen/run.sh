@@ -14,6 +14,7 @@ set -u
 export LC_ALL=C   # sort order and messages
 
 build=${1:?usage: tests/gen/run.sh BUILD_DIR}
+root=$(cd "$(dirname "$0")/../.." && pwd)
 case $build in /*) ;; *) build=$PWD/$build ;; esac
 EF=$build/edgeflag
 JOBS=${EF_GEN_JOBS:-4}
@@ -23,7 +24,13 @@ if [ ! -x "$EF" ]; then
     exit 1
 fi
 
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/edgeflag-gen.XXXXXX") || exit 1
+# Every file is written atomically with fsync: a RAM disk keeps that cheap.
+tmpbase=${TMPDIR:-}
+if [ -z "$tmpbase" ]; then
+    tmpbase=/tmp
+    [ -d /dev/shm ] && [ -w /dev/shm ] && tmpbase=/dev/shm
+fi
+tmp=$(mktemp -d "$tmpbase/edgeflag-gen.XXXXXX") || exit 1
 cleanup() { chmod -R u+w "$tmp" 2>/dev/null; rm -rf "$tmp"; }
 trap cleanup EXIT
 cd "$tmp" || exit 1
@@ -253,6 +260,105 @@ else
 fi
 run gen --list
 if [ $rc -eq 0 ] && cmp -s out l1/index.tsv; then ok "--list prints exactly index.tsv"; else bad "--list" "rc=$rc"; fi
+
+# ------------------------------------------------------ the DUT's limits (docs/gen.md 11)
+# scenedims DIR: "FILE W H" per case file; maxedges FILE: the most points of one shape
+scenedims() { (cd "$1" && awk '/^scene / { print FILENAME, $2, $3 }' case_*.scene); }
+maxedges() { awk '/^shape/ { s++ } /^contour/ { n[s] += (NF - 1) / 2 } END { m = 0; for (i in n) if (n[i] > m) m = n[i]; print m }' "$1"; }
+# 1. canvas: every case over 2048x2048 is scaled by the smallest 1/2^k, every vertex as the rule says
+run gen -o dl1 --dut-limits 2048x2048 --dut-edges 8192
+want=$(scenedims l1 | awk '$2 > 2048 || $3 > 2048' | wc -l)
+nfit=$(sed -n 's/.*: \([0-9]*\) fitted, \([0-9]*\) refused.*/\1 \2/p' out)
+scaled_ok=1 nsc=0 same_ok=1
+while read -r f w h; do
+    if [ "$w" -le 2048 ] && [ "$h" -le 2048 ]; then cmp -s "l1/$f" "dl1/$f" || same_ok=0; continue; fi
+    nsc=$((nsc + 1))
+    # independent: the smallest k, the canvas, and every vertex floor((256 v + 2^(k-1)) / 2^k)
+    awk -v w="$w" -v h="$h" 'function fl(x) { return x >= 0 ? int(x) : (int(x) == x ? x : int(x) - 1) }
+        BEGIN { k = 0; W = w; H = h; while (W > 2048 || H > 2048) { k++; d = 2 ^ k; W = int((w + d - 1) / d); H = int((h + d - 1) / d) } }
+        FNR == 1 { f++ } /^#/ { next }
+        f == 1 && /^contour/ { for (i = 2; i <= NF; i++) want[++n] = fl((256 * $i + d / 2) / d) }
+        f == 2 && /^scene/ { if ($2 != W || $3 != H) bad = "canvas " $2 "x" $3 ", want " W "x" H }
+        f == 2 && /^contour/ { for (i = 2; i <= NF; i++) if (256 * $i != want[++m]) bad = bad " vertex " m }
+        END { if (m != n) bad = bad " counts " m "/" n; if (bad != "") { print FILENAME ": " bad; exit 1 } }' \
+        "l1/$f" "dl1/$f" || scaled_ok=0
+    grep -q "^# Fitted to the DUT's limits: canvas ${w}x$h scaled by 1/" "dl1/$f" || scaled_ok=0
+done < <(scenedims l1)
+if [ $rc -eq 0 ] && [ "$nfit" = "$want 0" ] && [ "$nsc" = "$want" ] && [ "$want" -gt 0 ] && [ $scaled_ok = 1 ] &&
+   [ $same_ok = 1 ] && [ "$(rows dl1/refused.tsv | wc -l)" = 0 ]; then
+    ok "--dut-limits 2048x2048: the $want canvases over it scaled by 1/2^k (canvas and every vertex as an awk computation says), every other case byte-identical, none refused"
+else
+    bad "--dut-limits 2048x2048 fitting" "rc=$rc fitted/refused='$nfit' want $want scaled=$nsc ok=$scaled_ok same=$same_ok"
+fi
+run gen -o dl0 --dut-limits 16384x16384 --dut-edges 8192 --dut-samples 8,16,32
+if [ $rc -eq 0 ] && grep -q ': 0 fitted, 0 refused' out && diff -r -x refused.tsv l1 dl0 >/dev/null; then
+    ok "the regression's build (16384x16384, 8192 edges, 8/16/32 samples): level 1 fits as it is, the same bytes"
+else bad "level 1 against 16384x16384/8192" "rc=$rc $(cat out)"; fi
+# 2. edges: shapes split only where the picture stays; the rest refused, listed, not written
+run gen -o dl2 --dut-limits 64x64 --dut-edges 40
+lim_ok=1 split_ok=1 nsplit=0
+for f in dl2/case_*.scene; do
+    [ "$(maxedges "$f")" -le 40 ] || lim_ok=0
+    awk '/^scene/ { exit !($2 <= 64 && $3 <= 64) }' "$f" || lim_ok=0
+done
+for f in $(rows dl2/index.tsv | awk -F'\t' '$8 ~ /split into/ && $8 !~ /scaled/ { print $2 }'); do
+    nsplit=$((nsplit + 1))
+    for ns in 8 16 32; do
+        for r in "" "--rule nonzero" "--rule evenodd"; do
+            # shellcheck disable=SC2086 # the rule option splits on purpose
+            "$EF" render "l1/$f" -o a.pam --samples $ns $r 2>/dev/null && "$EF" render "dl2/$f" -o b.pam --samples $ns $r 2>/dev/null &&
+                cmp -s a.pam b.pam || { split_ok=0; echo "       $f at $ns $r: not the same picture"; }
+        done
+    done
+    [ "$(maxedges "l1/$f")" -gt 40 ] || split_ok=0
+done
+nref=$(rows dl2/refused.tsv | wc -l); nlines=$(grep -c 'refused by the DUT.s limits: ' out)
+ref_ok=1
+while IFS=$'\t' read -r k _ why; do
+    f=$(printf 'case_%06d.scene' "$k")
+    [ ! -e "dl2/$f" ] && [ "$(maxedges "l1/$f")" -gt 40 ] && [ -n "$why" ] || ref_ok=0
+done < <(rows dl2/refused.tsv)
+nw=$(find dl2 -name 'case_*.scene' | wc -l)
+if [ $rc -eq 0 ] && [ $lim_ok = 1 ] && [ $split_ok = 1 ] && [ $nsplit -gt 0 ] && [ $ref_ok = 1 ] && [ "$nref" -gt 0 ] &&
+   [ "$nref" = "$nlines" ] && [ $((nw + nref)) = "$total" ] && grep -q "zigzag-4096.*contour 0 alone has 4096" dl2/refused.tsv &&
+   grep -q "changes the picture" dl2/refused.tsv; then
+    ok "--dut-limits 64x64 --dut-edges 40: every written case within them; $nsplit split cases render the same bytes as unsplit (8/16/32 x 3 rule settings, edgeflag render); $nref refused (over 40 edges by an awk count, not written, one line each, refused.tsv)"
+else
+    bad "--dut-edges 40 fit/refuse" "rc=$rc lim=$lim_ok split=$split_ok ($nsplit) ref=$ref_ok nref=$nref lines=$nlines written=$nw total=$total"
+fi
+# 3. sample counts: level 1's grid follows the DUT; level 2's other grids are refused
+run gen --list --dut-samples 8
+g_ok=$(tail -n +3 out | awk -F'\t' '$6 != 0 && $6 != 8 { n++ } $6 == 8 { m++ } END { print (n == 0 && m > 0) }')
+run gen --list --level 2 --dut-samples 8,32
+g2=$(grep -c 'built for the 16-sample grid, the DUT takes 8,32 samples per pixel' err)
+if [ "$g_ok" = 1 ] && [ "$g2" -gt 0 ] && [ "$(tail -n +3 out | awk -F'\t' '$6 == 16' | wc -l)" = 0 ]; then
+    ok "--dut-samples: level 1's grid cases built on the DUT's 8 grid; level 2's 16-grid cases refused ($g2, on stderr under --list)"
+else bad "--dut-samples" "g_ok=$g_ok g2=$g2"; fi
+# 4. --dut-file: an identify record (docs/board.md 3.1), a C header, the RTL's own parameters
+le32() { printf '%b' "\\x$(printf %02x $(($1 & 255)))\\x$(printf %02x $((($1 >> 8) & 255)))\\x$(printf %02x $((($1 >> 16) & 255)))\\x$(printf %02x $((($1 >> 24) & 255)))"; }
+{ printf 'EFB1\001\000\004\000'; le32 15; le32 127; le32 $((8 | 16)); le32 100; le32 50; le32 64; printf 'serial-0123456789' | head -c 16; } >ident.bin
+printf '#define MY_W_MAX 100\n#define MY_H_MAX 50\n#define MY_E_MAX 64\n#define MY_NS 16\n' >dut.h
+run gen --list --dut-file ident.bin; a1=$(tail -n +3 out | md5sum); e1=$(md5sum <err)
+run gen --list --dut-limits 100x50 --dut-edges 64 --dut-samples 8,16; a2=$(tail -n +3 out | md5sum); e2=$(md5sum <err)
+run gen --list --dut-file dut.h --dut-samples 8,16; a3=$(tail -n +3 out | md5sum)
+run gen -o dl4 --dut-file "$root/rtl/ef_raster.v"; r4=$rc; o4=$(cat out)
+rtl_params=$(sed -n 's/^ *parameter \(NS\|W_MAX\|H_MAX\|E_MAX\) *= *\([0-9]*\).*/\1=\2/p' "$root/rtl/ef_raster.v" | tr '\n' ' ')
+want4=$(echo "$rtl_params" | awk '{ for (i = 1; i <= NF; i++) { split($i, kv, "="); v[kv[1]] = kv[2] } printf "W_MAX %s, H_MAX %s, E_MAX %s, samples %s", v["W_MAX"], v["H_MAX"], v["E_MAX"], v["NS"] }')
+if [ "$a1" = "$a2" ] && [ "$e1" = "$e2" ] && [ "$a1" = "$a3" ] && [ "$(wc -c <ident.bin)" = 48 ] && [ $r4 = 0 ] &&
+   printf '%s\n' "$o4" | grep -qF "the DUT's limits ($want4)"; then
+    ok "--dut-file: a 48-byte identify record and a C header give what the flags give; rtl/ef_raster.v's parameters read ($want4)"
+else bad "--dut-file" "a1=$a1 a2=$a2 a3=$a3 r4=$r4 want '$want4': $o4"; fi
+du_ok=1
+printf 'nothing here\n' >none.h
+# shellcheck disable=SC2016 # the backquotes are Verilog's `define
+printf '`define W_MAX 10\n`define W_MAX 20\n`define H_MAX 5\n' >twice.vh
+for args in "--dut-limits 0x5" "--dut-limits 5" "--dut-edges 0" "--dut-samples 12" "--dut-file none.h" "--dut-file twice.vh" \
+            "--dut-file no-such.h" "--samples 16 --dut-samples 8"; do
+    # shellcheck disable=SC2086
+    run gen -o du $args
+    [ $rc -eq 2 ] && [ ! -e du ] || { du_ok=0; bad "gen $args: rc=$rc, expected 2 and nothing created"; }
+done
+[ $du_ok = 1 ] && ok "DUT-limit usage errors (bad sizes, 0 edges, 12 samples, a file defining nothing or W_MAX twice, a missing file, --samples the DUT does not take): exit 2, nothing created"
 
 # ----------------------------------------------------------------- help
 for args in "gen --help" "gen -h" "help gen" "gen -o x --level 9 --help"; do

@@ -32,3 +32,27 @@ $(GPIO_EMU_V2): $(GPIO_EMU_OBJ) $(BUILD)/host/transport_gpio.o $(BUILD)/gpiod2/g
 gpio-emu-v2: $(GPIO_EMU_V2)
 test-host-gpio: $(GPIO_EMU) cli host
 	@bash tests/host/gpio.sh $(BUILD)
+
+# The co-simulation with the simulated board's gateware (docs/board-gpio.md section 8): gpio_cosim
+# runs edgeflag-host (host/main.c compiled unchanged, its main renamed) on the emulated chip whose
+# lines lead to board_sim's GPIO header.  Run by tests/board/gpio_cosim.sh.
+GPIO_COSIM := $(BUILD)/tests/host/gpio_cosim
+GPIO_COSIM_V2 := $(BUILD)/tests/host/gpio_cosim_v2
+GPIO_COSIM_HOST := $(filter-out $(BUILD)/host/main.o $(HOST_GPIO_OBJS),$(HOST_OBJ))
+$(BUILD)/tests/host/gpio_cosim.o: tests/host/gpio_cosim.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) -Ihost -Iboard -Iproto -Iutil -Itests/host $(CFLAGS_ALL) $(GPIO_UMOCKDEV_CFLAGS) -c $< -o $@
+$(BUILD)/tests/host/host_main_cosim.o: host/main.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(LAYER_INC_host) $(CFLAGS_ALL) -Dmain=edgeflag_host_main -c $< -o $@
+GPIO_COSIM_OBJ := $(BUILD)/tests/host/gpio_cosim.o $(BUILD)/tests/host/gpio_chip.o $(BUILD)/tests/host/host_main_cosim.o \
+                  $(GPIO_COSIM_HOST) $(HOST_BOARD_OBJ) $(UTIL_OBJ) $(VEC_A) $(LIB_A)
+GPIO_COSIM_LIBS := $(HOST_USB_LIBS) $(GPIO_UMOCKDEV_LIBS) $(PNG_LIBS) $(EXPAT_LIBS) $(VEC_LIBS) -lz
+$(GPIO_COSIM): $(GPIO_COSIM_OBJ) $(HOST_GPIO_OBJS)
+	$(CC) $(LDFLAGS_ALL) -o $@ $^ $(HOST_GPIO_LIBS) $(GPIO_COSIM_LIBS)
+$(GPIO_COSIM_V2): $(GPIO_COSIM_OBJ) $(BUILD)/host/transport_gpio.o $(BUILD)/gpiod2/gpio_v2.o
+	$(CC) $(LDFLAGS_ALL) -o $@ $^ -L$(GPIOD2_PREFIX)/lib -Wl,-rpath,$(abspath $(GPIOD2_PREFIX)/lib) -lgpiod \
+	    $(GPIO_COSIM_LIBS)
+.PHONY: gpio-cosim gpio-cosim-v2
+gpio-cosim: $(GPIO_COSIM)
+gpio-cosim-v2: $(GPIO_COSIM_V2)

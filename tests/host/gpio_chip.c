@@ -13,6 +13,12 @@
  * level on the clk line is an edge for ef_gpio_bus_edge(); every get-values
  * call reads ef_gpio_bus_outputs().  Both uAPI versions are answered, so one
  * emulator serves libgpiod 1.6 and 2.x.
+ *
+ * The second back end (emu_chip_new_sim): the lines lead to the simulated
+ * board's GPIO header instead (board/sim/gpio_link.cpp: the SoC's gateware
+ * slave, board/soc/ef_gpio.py, and its firmware), one socket round trip per
+ * set-values or get-values call: the levels the host drives go out, the
+ * board's lines come back after at least one host step of its time.
  */
 #include "gpio_chip.h"
 
@@ -22,6 +28,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/socket.h>
+#include <sys/un.h>
 #include <umockdev.h>
 #include <unistd.h>
 
@@ -48,7 +56,11 @@ typedef struct emu_state {
     int nreqs;
     uint64_t step, change_step, edge_step; /* line ioctls, and when data changed / clk rose */
     int edge_since_change;
-    uint32_t data; /* d | valid << 8 | take << 9 | ctl << 10 as last written */
+    uint32_t data;     /* d | valid << 8 | take << 9 | ctl << 10 as last written */
+    int sim_fd;        /* >= 0: the simulated board's GPIO header (gpio_link.cpp) */
+    unsigned sim_out;  /* its lines as last answered: q | ready << 8 | avail << 9 | done << 10 | err << 11 */
+    uint32_t sim_rx;   /* stream bytes the host clocked in while ready was shown, since the last RESET */
+    int data_prev_ctl; /* ctl at the last edge */
 } emu_state;
 
 static const char *line_name(const emu_state *s, unsigned off)
@@ -68,17 +80,59 @@ static const char *line_name(const emu_state *s, unsigned off)
 static int req_alive(const emu_req *r) { return r && r->client && umockdev_ioctl_client_get_connected(r->client); }
 
 /* The board's outputs onto the line levels. */
+/* The simulated board: one host step (the levels the host drives now), its lines back. */
+static void sim_step(emu_state *s)
+{
+    const unsigned *w = s->pub.wiring;
+    unsigned host = s->pub.stuck_d;
+    for (int i = 0; i < 12; i++)
+        host |= (unsigned)s->level[w[i]] << i;
+    uint8_t m[2] = { (uint8_t)host, (uint8_t)(host >> 8) }, r[2];
+    if (s->sim_fd < 0 || send(s->sim_fd, m, 2, MSG_NOSIGNAL) != 2 || recv(s->sim_fd, r, 2, MSG_WAITALL) != 2) {
+        if (s->sim_fd >= 0) {
+            fprintf(stderr, "gpio_chip: the simulated board went away\n");
+            close(s->sim_fd);
+        }
+        s->sim_fd = -1;
+        s->sim_out = 0; /* nothing on the lines */
+        return;
+    }
+    s->sim_out = (unsigned)r[0] | (unsigned)r[1] << 8;
+}
+
+static uint32_t bus_received(const emu_state *s) { return s->pub.bus ? ef_gpio_bus_rx_count(s->pub.bus) : s->sim_rx; }
+
 static void board_drive(emu_state *s)
 {
     ef_gpio_bus_lines o;
-    ef_gpio_bus_outputs(s->pub.bus, &o);
+    if (s->pub.bus) {
+        ef_gpio_bus_outputs(s->pub.bus, &o);
+    } else {
+        if (s->pub.unplug_after && s->sim_rx >= s->pub.unplug_after && s->sim_fd >= 0) {
+            fprintf(stderr, "gpio_chip: unplugged after %u bytes\n", (unsigned)s->sim_rx);
+            close(s->sim_fd); /* the board's header sees its pull-downs, the host nothing */
+            s->sim_fd = -1, s->sim_out = 0;
+        }
+        sim_step(s);
+        o.q = (uint8_t)s->sim_out, o.ready = s->sim_out >> 8 & 1, o.avail = s->sim_out >> 9 & 1;
+        o.done = s->sim_out >> 10 & 1, o.err = s->sim_out >> 11 & 1;
+    }
     int f = s->pub.faults;
-    if ((f & EMU_FAULT_STALL) || (s->pub.stall_after && ef_gpio_bus_rx_count(s->pub.bus) >= s->pub.stall_after))
+    if ((f & EMU_FAULT_STALL) || (s->pub.stall_after && bus_received(s) >= s->pub.stall_after))
         o.ready = 0;
     if (f & EMU_FAULT_LIE_READY)
         o.ready = 1;
     if (f & EMU_FAULT_MUTE)
         o.avail = 0;
+    if (f & EMU_FAULT_LIE_AVAIL)
+        o.avail = 1;
+    if (s->pub.hide_avail_reads) {
+        o.avail = 0;
+        if (--s->pub.hide_avail_reads == 0 && s->pub.pause_ms) {
+            g_usleep((gulong)s->pub.pause_ms * 1000);
+            s->pub.pause_ms = 0;
+        }
+    }
     if ((f & EMU_FAULT_FOREIGN) && s->level[s->pub.wiring[S_CTL]])
         o.q ^= 0x5a;
     for (int i = 0; i < 8; i++)
@@ -110,6 +164,19 @@ static void host_drive(emu_state *s, const emu_req *r, uint64_t bits, uint64_t m
         if (s->step - s->change_step < s->pub.min_setup)
             s->pub.min_setup = s->step - s->change_step;
         s->edge_step = s->step, s->edge_since_change = 1;
+    }
+    if (!s->pub.bus) { /* the simulated board samples the lines itself */
+        if (!clk_before && s->level[w[S_CLK]]) {
+            s->pub.edges++;
+            const int ctl = s->level[w[S_CTL]], valid = s->level[w[S_VALID]];
+            if (!ctl && valid && (s->sim_out >> 8 & 1) && !(s->data_prev_ctl))
+                s->sim_rx++;
+            if (ctl && valid && (((data | s->pub.stuck_d) & 0xFF) == EF_GB_REQ_RESET))
+                s->sim_rx = 0;
+            s->data_prev_ctl = ctl;
+        }
+        sim_step(s);
+        return;
     }
     if (!clk_before && s->level[w[S_CLK]]) {
         uint8_t d = s->pub.stuck_d;
@@ -357,7 +424,8 @@ emu_chip *emu_chip_new(ef_board *board, const unsigned wiring[EMU_SIGNALS])
         return NULL;
     g_mutex_init(&s->lock);
     s->pub.board = board;
-    s->pub.bus = ef_gpio_bus_new(board);
+    s->pub.bus = board ? ef_gpio_bus_new(board) : NULL;
+    s->sim_fd = -1;
     memcpy(s->pub.wiring, wiring, sizeof s->pub.wiring);
     s->pub.min_setup = s->pub.min_hold = UINT64_MAX;
     s->tb = umockdev_testbed_new();
@@ -385,6 +453,34 @@ emu_chip *emu_chip_new(ef_board *board, const unsigned wiring[EMU_SIGNALS])
     return &s->pub;
 }
 
+emu_chip *emu_chip_new_sim(const char *socket_path, const unsigned wiring[EMU_SIGNALS])
+{
+    struct sockaddr_un sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sun_family = AF_UNIX;
+    if (strlen(socket_path) >= sizeof sa.sun_path) {
+        fprintf(stderr, "gpio_chip: socket path too long: %s\n", socket_path);
+        return NULL;
+    }
+    strcpy(sa.sun_path, socket_path);
+    int fd = socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
+    if (fd < 0 || connect(fd, (struct sockaddr *)&sa, sizeof sa) != 0) {
+        fprintf(stderr, "gpio_chip: cannot reach the simulated board at %s\n", socket_path);
+        if (fd >= 0)
+            close(fd);
+        return NULL;
+    }
+    emu_chip *e = emu_chip_new(NULL, wiring);
+    if (!e) {
+        close(fd);
+        return NULL;
+    }
+    emu_state *s = (emu_state *)e;
+    s->sim_fd = fd;
+    sim_step(s); /* the board's lines as they are */
+    return e;
+}
+
 void emu_chip_set_faults(emu_chip *e, int faults)
 {
     emu_state *s = (emu_state *)e;
@@ -401,11 +497,19 @@ void emu_chip_set_byte_faults(emu_chip *e, uint32_t stall_after, uint32_t fail_a
     g_mutex_unlock(&s->lock);
 }
 
+void emu_chip_set_pause(emu_chip *e, unsigned reads, unsigned ms)
+{
+    emu_state *s = (emu_state *)e;
+    g_mutex_lock(&s->lock);
+    e->hide_avail_reads = reads, e->pause_ms = ms;
+    g_mutex_unlock(&s->lock);
+}
+
 uint32_t emu_chip_received(emu_chip *e)
 {
     emu_state *s = (emu_state *)e;
     g_mutex_lock(&s->lock);
-    uint32_t n = ef_gpio_bus_rx_count(e->bus);
+    uint32_t n = bus_received(s);
     g_mutex_unlock(&s->lock);
     return n;
 }

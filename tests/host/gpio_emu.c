@@ -430,6 +430,30 @@ static void test_mute(emu_chip *e)
     ef_transport_gpio.close(l);
 }
 
+/* The host paused past its deadline while the board raised avail: the read
+ * that returns after the pause still shows avail low, the board's reply is
+ * there by then, and the host must sample once more before calling it a
+ * timeout (host/transport_gpio.c, wait_line). */
+static void test_late_sample(emu_chip *e)
+{
+    char err[256];
+    int rc;
+    ef_link *l = open_link(LINES, 300, &rc, err, sizeof err);
+    check(l != NULL, "open for the late sample: rc %d: %s", rc, err);
+    if (!l)
+        return;
+    /* read 1 ends the request's cycle, read 2 is the wait's first, paused 400 ms past the 300 */
+    emu_chip_set_pause(e, 2, 400);
+    uint8_t id[EF_PROTO_IDENTIFY_LEN];
+    double t0 = now_s();
+    rc = ef_transport_gpio.identify(l, id);
+    double dt = now_s() - t0;
+    emu_chip_set_pause(e, 0, 0);
+    check(rc == 0 && dt >= 0.39, "a host paused past its deadline: identify rc %d after %.2f s (%s)", rc, dt,
+          ef_gpio_link_detail(l));
+    ef_transport_gpio.close(l);
+}
+
 /* ---- the board's side alone (board/gpio_bus.c against docs/board-gpio.md 4-5) ---- */
 
 static void bus_edge(ef_gpio_bus *g, uint8_t d, unsigned ctrl, ef_gpio_bus_lines *o)
@@ -588,6 +612,7 @@ int main(int argc, char **argv)
 
     ef_transport_gpio.close(l);
     test_mute(e);
+    test_late_sample(e);
 out:
     printf("gpio-emu: %d checks, %d failed\n", checks, failed);
     return failed ? 1 : 0;

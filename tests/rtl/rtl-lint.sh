@@ -44,6 +44,8 @@ bad() { fail=$((fail + 1)); echo "FAIL $1"; [ -n "${2:-}" ] && printf '%s\n' "$2
 
 R=rtl
 RTL="$R/ef_raster.v $R/ef_dec.v $R/ef_setup.v $R/ef_div.v $R/ef_etm.v $R/ef_aet.v $R/ef_plot.v $R/ef_slb_fill.v $R/ef_slb_ram.v $R/ef_cov.v"
+# the overlap schedule's top (docs/microarch.md section 6)
+FAST="$R/ef_raster_fast.v $R/ef_dec.v $R/ef_setup.v $R/ef_div.v $R/ef_etm.v $R/ef_aet.v $R/ef_plot.v $R/ef_slb_fill_skip.v $R/ef_slb_ram.v $R/ef_spanq.v $R/ef_cov.v"
 W=dv/lint/waivers.vlt
 
 # ---------------------------------------------------------------- 1. generated
@@ -111,6 +113,10 @@ for f in dv/faults/*.sed; do
     if ! out=$(iverilog -g2005 -I"$d" -s ef_raster -o /dev/null ${RTL//$R\//$d\/} 2>&1); then
         v_ok=0; bad "the variant $n does not compile" "$out"; continue
     fi
+    # shellcheck disable=SC2086
+    if ! out=$(iverilog -g2005 -I"$d" -s ef_raster_fast -o /dev/null ${FAST//$R\//$d\/} 2>&1); then
+        v_ok=0; bad "the variant $n does not compile in the fast top" "$out"; continue
+    fi
     cmp -s "$d/$(sed -n 's/^# file: *//p' "$f")" "$R/$(sed -n 's/^# file: *//p' "$f")" && { v_ok=0; bad "the variant $n equals rtl/"; }
     nv=$((nv + 1))
 done
@@ -136,11 +142,24 @@ for ns in 8 16 32; do
     vl "ef_raster NS=$ns" -GNS=$ns --top-module ef_raster $RTL || l_ok=0
     # shellcheck disable=SC2086
     vl "ef_raster NS=$ns small" -GNS=$ns -GW_MAX=320 -GH_MAX=240 -GE_MAX=512 --top-module ef_raster $RTL || l_ok=0
-    n=$((n + 2))
+    # shellcheck disable=SC2086
+    vl "ef_raster_fast NS=$ns" -GNS=$ns --top-module ef_raster_fast $FAST || l_ok=0
+    # shellcheck disable=SC2086
+    vl "ef_raster_fast NS=$ns small" -GNS=$ns -GW_MAX=320 -GH_MAX=240 -GE_MAX=512 --top-module ef_raster_fast $FAST || l_ok=0
+    # shellcheck disable=SC2086
+    vl "ef_raster_fast NS=$ns tiny" -GNS=$ns -GW_MAX=40 -GH_MAX=30 -GE_MAX=64 --top-module ef_raster_fast $FAST || l_ok=0
+    # shellcheck disable=SC2086
+    out=$(iverilog -g2005 -Wall -I"$R" -Pef_raster_fast.NS=$ns -s ef_raster_fast -o /dev/null $FAST 2>&1)
+    [ -z "$out" ] || { l_ok=0; bad "iverilog -g2005 -Wall of ef_raster_fast NS=$ns is not silent" "$out"; }
+    n=$((n + 5))
 done
 for t in ef_dec ef_setup ef_div ef_etm ef_aet ef_plot ef_slb_fill ef_slb_ram ef_cov; do
     # shellcheck disable=SC2086
     vl "$t" --top-module $t $RTL || l_ok=0; n=$((n + 1))
+done
+for t in ef_slb_fill_skip ef_spanq; do
+    # shellcheck disable=SC2086
+    vl "$t" --top-module $t $FAST || l_ok=0; n=$((n + 1))
 done
 # the includes, as the RTL's own files (linted through every module above)
 linted+=("$R/ef_ifaces.vh" "$R/ef_ns.vh" "$R/ef_rooks.vh")
@@ -148,6 +167,7 @@ TB=dv/tb
 # shellcheck disable=SC2086
 {
 vl tb_raster --top-module tb_raster $TB/tb_raster.v $RTL || l_ok=0
+vl "tb_raster (ef_raster_fast)" -DEF_FAST --top-module tb_raster $TB/tb_raster.v $FAST || l_ok=0
 vl "tb_raster (a user DUT)" -DEF_TB_USER_DUT --top-module tb_raster $TB/tb_raster.v $RTL || l_ok=0
 vl tb_dec --top-module tb_dec $TB/tb_dec.v $R/ef_dec.v || l_ok=0
 vl tb_setup --top-module tb_setup $TB/tb_setup.v $R/ef_setup.v $R/ef_div.v $R/ef_slb_ram.v || l_ok=0
@@ -163,7 +183,7 @@ vl "tb_lockstep (ef_raster)" --top-module tb_lockstep $R/ef_ifaces_pkg.sv dv/dpi
 vl "tb_lockstep (ef_slb_fill)" -DEF_TB_DUT_SLB --top-module tb_lockstep $R/ef_ifaces_pkg.sv dv/dpi/ef_model_pkg.sv dv/dpi/tb_lockstep.sv $RTL || l_ok=0
 vl "ef_ifaces_pkg.sv (lint wrapper)" --top-module ef_ifaces_pkg_lint $R/ef_ifaces_pkg.sv dv/lint/ef_ifaces_pkg_lint.sv || l_ok=0
 }
-n=$((n + 15))
+n=$((n + 16))
 out=$(iverilog -g2012 -Wall -o /dev/null $R/ef_ifaces_pkg.sv dv/lint/ef_ifaces_pkg_lint.sv 2>&1)
 [ -z "$out" ] || { l_ok=0; bad "iverilog -g2012 -Wall of ef_ifaces_pkg.sv + its lint wrapper is not silent" "$out"; }
 # every Verilog file of rtl/ and dv/ is in some lint

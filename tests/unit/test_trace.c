@@ -9,7 +9,11 @@
  *   per interface per cycle, in cycle order; a shape's commands back to back;
  *   DEC and SETUP latencies; `last` on exactly each row's final plot; one pix
  *   per span pixel, L_COV after the span at the earliest, with the span's
- *   alpha; every transfer inside the frame's length.
+ *   alpha; every transfer inside the frame's length;
+ * - the overlap schedule (docs/microarch.md section 6) gives the same
+ *   transactions in the same order per interface (a hash of each interface's
+ *   payloads, cycles left out), the same image, the same invariants, and a
+ *   frame no longer than the reference one.
  */
 #include <dirent.h>
 #include <setjmp.h>
@@ -22,6 +26,7 @@
 
 #include <cmocka.h>
 
+#include "ef_filter.h"
 #include "ef_scene.h"
 #include "ef_trace.h"
 
@@ -37,6 +42,7 @@ typedef struct stats {
     uint64_t edge_cmd_cycle, edge_ok;
     uint64_t plots_since_last;
     int samples;
+    uint64_t hash[EF_IF_COUNT]; /* FNV-1a of the payloads in order, cycles left out */
 } stats;
 
 static void sink(void *user, const ef_txn *t)
@@ -47,6 +53,9 @@ static void sink(void *user, const ef_txn *t)
         s->ordered = 0;
     s->n[i]++;
     s->last_cycle[i] = t->cycle;
+    for (int w = 0; w < EF_TXN_WORDS; w++)
+        for (int b = 0; b < 64; b += 8)
+            s->hash[i] = (s->hash[i] ^ ((t->w[w] >> b) & 0xFFu)) * UINT64_C(0x100000001B3);
     if (t->cycle > s->max_cycle)
         s->max_cycle = t->cycle;
     switch (i) {
@@ -91,6 +100,8 @@ typedef struct frame {
     uint64_t cycles;
 } frame;
 
+static ef_schedule schedule; /* of the traced renders */
+
 static void render(const ef_scene *sc, int samples, int rule, stats *st, frame *out)
 {
     ef_ctx *ctx;
@@ -103,6 +114,7 @@ static void render(const ef_scene *sc, int samples, int rule, stats *st, frame *
         st->edge_ok = 1;
         st->samples = samples;
         assert_int_equal(ef_trace_enable(ctx, EF_IF_ALL, sink, st), EF_OK);
+        assert_int_equal(ef_trace_set_schedule(ctx, schedule), EF_OK);
         assert_int_equal(ef_trace_frame_begin(ctx), EF_OK);
     }
     assert_int_equal(ef_scene_render(ctx, sc, rule, &img), EF_OK);
@@ -119,30 +131,44 @@ static void render(const ef_scene *sc, int samples, int rule, stats *st, frame *
 static void check_scene(const char *name, const ef_scene *sc)
 {
     static const int rules[3] = { -1, EF_RULE_NONZERO, EF_RULE_EVENODD };
-    static stats st;
+    static stats st, ref;
     for (int si = 0; si < 3; si++) {
         const int samples = 8 << si;
-        for (int ri = 0; ri < 3; ri++) {
-            frame plain, traced;
-            render(sc, samples, rules[ri], NULL, &plain);
-            render(sc, samples, rules[ri], &st, &traced);
-            if (memcmp(plain.px, traced.px, plain.bytes) != 0 ||
-                memcmp(&plain.diag, &traced.diag, sizeof plain.diag) != 0)
-                fail_msg("%s at %d samples, rule %d: the traced render differs", name, samples, rules[ri]);
-            assert_true(st.ordered);
-            assert_true(st.pix_ok);
-            assert_true(st.edge_ok);
-            assert_int_equal(st.pix_left, 0);
-            assert_int_equal(st.span_pixels, st.n[EF_IF_PIX]);
-            assert_int_equal(st.plots_since_last, 0); /* the final plot carried `last` */
-            assert_true(traced.cycles == st.max_cycle + 1);
-            /* FRAME + per shape SHAPE, EDGEs, SHAPE_END + FRAME_END */
-            assert_int_equal(st.n[EF_IF_CMD], 2 + 2 * (uint64_t)sc->nshapes + traced.diag.edges_in);
-            assert_int_equal(st.n[EF_IF_SEG], sc->nshapes + traced.diag.edges_in);
-            assert_int_equal(st.n[EF_IF_ET_WR], sc->nshapes + traced.diag.edges_in - traced.diag.edges_dropped);
-            free(plain.px);
-            free(traced.px);
-        }
+        for (int ri = 0; ri < 3; ri++)
+            for (int sched = 0; sched < 2; sched++) {
+                frame plain, traced;
+                schedule = sched ? EF_SCHEDULE_OVERLAP : EF_SCHEDULE_REFERENCE;
+                render(sc, samples, rules[ri], NULL, &plain);
+                render(sc, samples, rules[ri], &st, &traced);
+                if (memcmp(plain.px, traced.px, plain.bytes) != 0 ||
+                    memcmp(&plain.diag, &traced.diag, sizeof plain.diag) != 0)
+                    fail_msg("%s at %d samples, rule %d: the traced render differs", name, samples, rules[ri]);
+                assert_true(st.ordered);
+                assert_true(st.pix_ok);
+                assert_true(st.edge_ok);
+                assert_int_equal(st.pix_left, 0);
+                assert_int_equal(st.span_pixels, st.n[EF_IF_PIX]);
+                assert_int_equal(st.plots_since_last, 0); /* the final plot carried `last` */
+                assert_true(traced.cycles == st.max_cycle + 1);
+                /* FRAME + per shape SHAPE, EDGEs, SHAPE_END + FRAME_END */
+                assert_int_equal(st.n[EF_IF_CMD], 2 + 2 * (uint64_t)sc->nshapes + traced.diag.edges_in);
+                assert_int_equal(st.n[EF_IF_SEG], sc->nshapes + traced.diag.edges_in);
+                assert_int_equal(st.n[EF_IF_ET_WR], sc->nshapes + traced.diag.edges_in - traced.diag.edges_dropped);
+                if (!sched) {
+                    ref = st;
+                    ref.max_cycle = traced.cycles;
+                } else {
+                    for (int i = 0; i < EF_IF_COUNT; i++)
+                        if (st.n[i] != ref.n[i] || st.hash[i] != ref.hash[i])
+                            fail_msg("%s at %d samples, rule %d: interface %d differs under the overlap schedule", name,
+                                     samples, rules[ri], i);
+                    if (traced.cycles > ref.max_cycle)
+                        fail_msg("%s at %d samples, rule %d: overlap frame %llu cycles, reference %llu", name, samples,
+                                 rules[ri], (unsigned long long)traced.cycles, (unsigned long long)ref.max_cycle);
+                }
+                free(plain.px);
+                free(traced.px);
+            }
     }
 }
 
@@ -232,6 +258,30 @@ static void disable(void **state)
     ef_ctx_destroy(ctx);
 }
 
+/* The schedule's setter refuses what it must; the overlap schedule refuses
+ * the spec 10 options (docs/microarch.md section 6). */
+static void schedule_api(void **state)
+{
+    (void)state;
+    ef_ctx *ctx;
+    stats st;
+    memset(&st, 0, sizeof st);
+    assert_int_equal(ef_ctx_create(&ctx, 8, 8, 8), EF_OK);
+    assert_int_equal(ef_trace_set_schedule(ctx, EF_SCHEDULE_OVERLAP), EF_ERR_ARG); /* tracing off */
+    assert_int_equal(ef_trace_enable(ctx, EF_IF_ALL, sink, &st), EF_OK);
+    assert_int_equal(ef_trace_set_schedule(ctx, (ef_schedule)2), EF_ERR_ARG);
+    assert_int_equal(ef_trace_set_schedule(ctx, EF_SCHEDULE_OVERLAP), EF_OK);
+    assert_int_equal(ef_ctx_set_filter(ctx, EF_FILTER_TENT, EF_SUBPIXEL_NONE), EF_OK);
+    ef_image img;
+    assert_int_equal(ef_image_create(&img, 8, 8), EF_OK);
+    const ef_point p[3] = { { 0, 0 }, { PX(8), 0 }, { 0, PX(8) } };
+    const uint32_t start[2] = { 0, 3 };
+    ef_polygon poly = { p, start, 1 };
+    assert_int_equal(ef_fill(ctx, &img, &poly, EF_RULE_NONZERO, (ef_rgba8){ 1, 2, 3, 255 }), EF_ERR_UNSUPPORTED);
+    ef_image_destroy(&img);
+    ef_ctx_destroy(ctx);
+}
+
 /* Field packing round trip at every field of every interface. */
 static void fields(void **state)
 {
@@ -305,8 +355,8 @@ static void names_not_keywords(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(fields),     cmocka_unit_test(names_not_keywords), cmocka_unit_test(disable),
-        cmocka_unit_test(edge_cases), cmocka_unit_test(shared_svgs),
+        cmocka_unit_test(fields),       cmocka_unit_test(names_not_keywords), cmocka_unit_test(disable),
+        cmocka_unit_test(schedule_api), cmocka_unit_test(edge_cases),         cmocka_unit_test(shared_svgs),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,0 +1,330 @@
+// ef_slb_fill_skip: the scanline buffer (SLB) + filler (FILL) of the
+// overlap schedule (docs/microarch.md section 6): ef_slb_fill (the
+// reference block, whose comments below still hold) with one change, the
+// scan visits only the cells plotted in the row instead of every cell of
+// xmin .. xmax.
+//
+// Plotted cells.  A bit per cell, in NG = (W_MAX+1)/64 words of 64 bits
+// (flip-flops), and a bit per word that says it is non-zero: a plot sets its
+// cell's bit and its word's bit in its stage 1; a scan step clears its
+// cell's bit (and the word's when the word becomes zero) in its stage 1, and
+// in the same cycle finds the next plotted cell: the least set bit of the
+// rest of the word, else of the least non-zero other word.  Cells are
+// visited in increasing order and cleared as they go, so "the next one" is
+// "the least set bit left".  Plots and scan steps never share a cycle
+// (plot_ready is low while scanning), so the bitmap has one writer at a
+// time; the reset sweep clears it with the cells.
+//
+// Spans are unchanged: a cell never plotted is empty, so stepping over it
+// changes no mask, and a span closed at a visited cell p is start .. p-1.
+// The scan's first step is at xmin in the cycle after the row's last plot,
+// as in the reference; the flush step follows the last plotted cell.
+//
+`include "ef_ifaces.vh"
+
+module ef_slb_fill_skip #(
+    parameter NS    = 8,       // samples per pixel: 8, 16 or 32
+    parameter W_MAX = 16384    // largest canvas width (cells 0..W_MAX)
+) (
+    input  wire        clk,
+    input  wire        rst,
+    output reg         init_done,   // reset sweep finished
+
+    // Configuration registers (FRAME width, SHAPE rule): stable while a
+    // shape is rasterized.
+    input  wire [14:0] cfg_width,   // W, 1..W_MAX
+    input  wire        cfg_rule,    // SHAPE encoding: 0 non-zero, 1 even-odd
+
+    // plot: last[0] row[13:0] s[4:0] q[14:0] dir[0]
+    input  wire        plot_valid,
+    output wire        plot_ready,
+    input  wire        plot_last,
+    input  wire [`EF_PLOT_ROW_W-1:0] plot_row,
+    input  wire [`EF_PLOT_S_W-1:0] plot_s,
+    input  wire [`EF_PLOT_Q_W-1:0] plot_q,
+    input  wire        plot_dir,    // 0: +1 (downward edge), 1: -1
+
+    // span: y[13:0] x[13:0] len[14:0] mask[31:0]
+    output wire        span_valid,
+    input  wire        span_ready,
+    output wire [`EF_SPAN_Y_W-1:0] span_y,
+    output wire [`EF_SPAN_X_W-1:0] span_x,
+    output wire [`EF_SPAN_LEN_W-1:0] span_len,
+    output wire [`EF_SPAN_MASK_W-1:0] span_mask,
+
+    output wire        idle,        // nothing in flight (for testbenches)
+    output wire        scan_done    // no scan in progress: from the cycle after the
+                                    // flush step (its span, if any, transferring)
+);
+    `include "ef_ns.vh"
+    localparam CW = 7 * NS;                 // cell width
+    localparam AW = $clog2(W_MAX + 1);      // cell address width
+
+    localparam NG = (W_MAX + 1 + 63) / 64;  // words of the plotted-cell bitmap
+    localparam GW = (NG > 1) ? $clog2(NG) : 1;
+
+    localparam [1:0] OP_NONE  = 2'd0;
+    localparam [1:0] OP_PLOT  = 2'd1;
+    localparam [1:0] OP_CELL  = 2'd2;
+    localparam [1:0] OP_FLUSH = 2'd3;
+
+    // ---------------------------------------------------------------- state
+    reg [AW-1:0] sweep_addr;
+
+    // Edge tracking of the row being plotted.
+    reg          trk_any;
+    reg [14:0]   trk_xmin, trk_xmax;
+
+    // Filler: scan cursor and accumulator of the row being scanned.
+    reg          scanning;
+    reg [14:0]   ptr;          // next cell to issue (a plotted one)
+    reg          ptr_ok;       // ptr holds a plotted cell (else: the flush is next)
+
+    // Plotted cells of the row (see the head comment).
+    reg [63:0]   bm [0:NG-1];
+    reg [NG-1:0] gnz;          // word g of bm is non-zero
+    reg [14:0]   xend;         // xmax of the row
+    reg [14:0]   start;        // first cell of the open span
+    reg [13:0]   fy;           // row being scanned
+    reg          f_rule;
+    reg [14:0]   f_width;
+    reg [CW-1:0] acc;          // per-lane accumulated winding (7-bit lanes)
+    reg [NS-1:0] mask;         // coverage mask of the open span
+
+    // Stage 2.
+    reg [1:0]    s2_op;
+    reg [14:0]   s2_addr;
+    reg [4:0]    s2_s;
+    reg          s2_dir;
+    reg          s2_rule;
+
+    // Latest write, for forwarding.
+    reg          lw_valid;
+    reg [AW-1:0] lw_addr;
+    reg [CW-1:0] lw_data;
+
+    // ------------------------------------------------------------ the RAM
+    wire          ram_we;
+    wire [AW-1:0] ram_wa;
+    wire [CW-1:0] ram_wd;
+    wire          ram_re;
+    wire [AW-1:0] ram_ra;
+    wire [CW-1:0] ram_rd;
+
+    ef_slb_ram #(.AW(AW), .DW(CW), .DEPTH(W_MAX + 1)) u_ram (
+        .clk(clk), .we(ram_we), .wa(ram_wa), .wd(ram_wd),
+        .re(ram_re), .ra(ram_ra), .rd(ram_rd)
+    );
+
+    // ------------------------------------------------------------ stage 2
+    // cur: the cell as it is now: the RAM read missed a write made at the same
+    // edge (read first), so the latest write wins on an address match.
+    wire          fwd  = lw_valid && (lw_addr == s2_addr[AW-1:0]);
+    wire [CW-1:0] cur  = fwd ? lw_data : ram_rd;
+
+    wire [NS-1:0] s2_sel = {{(NS-1){1'b0}}, 1'b1} << s2_s;  // one-hot sample
+    wire [CW-1:0] plot_new;     // cell after the PLOT op
+    wire [CW-1:0] acc_next;     // accumulator after a CELL op
+    wire [NS-1:0] mask_next;
+
+    genvar l;
+    generate
+        for (l = 0; l < NS; l = l + 1) begin : lane
+            wire [6:0] c = cur[7*l +: 7];
+            wire [6:0] a = acc[7*l +: 7];
+            // spec 6.2: toggle bit s;  spec 6.3: lane add of +1 / -1 mod 128
+            wire [6:0] marked = s2_rule ? (c ^ 7'd1)
+                                        : (c + (s2_dir ? 7'h7f : 7'h01));
+            assign plot_new[7*l +: 7] = s2_sel[l] ? marked : c;
+            // spec 7.2: acc ^= cell (even-odd), lane-wise add mod 128 (non-zero)
+            wire [6:0] an = f_rule ? (a ^ c) : (a + c);
+            assign acc_next[7*l +: 7] = an;
+            // mask bit: parity (even-odd) or counter != 0 (non-zero)
+            assign mask_next[l] = f_rule ? an[0] : (|an);
+        end
+    endgenerate
+
+    wire cell_nz = |cur;       // "the scan reads a non-zero cell"
+    wire mask_nz = |mask;
+
+    // microarch 3.4: a span closes when the scan reads a non-zero cell while
+    // the mask is non-zero (it ends before that cell), or at the flush if
+    // the mask is non-zero and the span starts left of W (cut at W).
+    wire [15:0] xend1     = {1'b0, xend} + 16'd1;
+    wire [14:0] flush_end = (xend1 < {1'b0, f_width}) ? xend1[14:0] : f_width;
+    wire span_cell  = (s2_op == OP_CELL)  && cell_nz && mask_nz;
+    wire span_flush = (s2_op == OP_FLUSH) && mask_nz && (start < f_width);
+
+    assign span_valid = span_cell || span_flush;
+    assign span_y     = fy;
+    assign span_x     = start[13:0];   // start < W <= 16384 whenever valid
+    // span_end <= W <= 16384 and start < span_end whenever valid: 15 bits.
+    wire [14:0] span_end = (s2_op == OP_CELL) ? s2_addr : flush_end;
+    assign span_len   = span_end - start;
+    generate
+        if (NS < `EF_SPAN_MASK_W) begin : mask_pad
+            assign span_mask = {{(`EF_SPAN_MASK_W-NS){1'b0}}, mask};
+        end else begin : mask_full
+            assign span_mask = mask;
+        end
+    endgenerate
+
+    // Back-pressure: an offered span that COV does not take holds everything.
+    wire stall = span_valid && !span_ready;
+    wire s2_done = !stall;     // stage 2 completes at this edge
+
+    // ------------------------------------------------------------ stage 1
+    // No path from the cell RAM's output into AET/PLOT (issue 25): while
+    // no scan is in progress stage 2 holds no CELL op (a CELL op is issued
+    // only while scanning, and only the flush ends the scan), so the only
+    // span that can stall is the flush's, which depends on registers alone.
+    wire flush_stall = span_flush && !span_ready;
+    assign plot_ready = init_done && !scanning && !flush_stall;
+    wire take_plot  = plot_valid && plot_ready;
+    wire scan_go    = init_done && scanning && !stall;
+    wire scan_cell  = scan_go && ptr_ok;
+    wire scan_flush = scan_go && !ptr_ok;
+
+    // The next plotted cell after ptr (the scan step at ptr clears ptr's bit).
+    function [5:0] low64;           // index of the least set bit (0 if none)
+        input [63:0] v;
+        integer k;
+        begin
+            low64 = 6'd0;
+            for (k = 63; k >= 0; k = k - 1)
+                if (v[k]) low64 = k[5:0];
+        end
+    endfunction
+    function [GW-1:0] lowg;         // index of the least set bit (0 if none)
+        input [NG-1:0] v;
+        integer k;
+        begin
+            lowg = {GW{1'b0}};
+            for (k = NG - 1; k >= 0; k = k - 1)
+                if (v[k]) lowg = k[GW-1:0];
+        end
+    endfunction
+    wire [GW-1:0] pg     = ptr[6 +: GW];
+    wire [63:0]   pbit   = 64'd1 << ptr[5:0];
+    wire [63:0]   w_rest = bm[pg] & ~pbit;
+    wire [NG-1:0] g_rest = gnz & ~({{(NG-1){1'b0}}, 1'b1} << pg);
+    wire [GW-1:0] g2     = lowg(g_rest);
+    wire          nxt_ok = (|w_rest) || (|g_rest);
+    wire [GW-1:0] nxt_g  = (|w_rest) ? pg : g2;
+    wire [5:0]    nxt_b  = low64((|w_rest) ? w_rest : bm[g2]);
+    wire [14:0]   nxt    = {9'd0, nxt_b} | ({{(15-GW){1'b0}}, nxt_g} << 6);
+    wire [GW-1:0] qg     = plot_q[6 +: GW];
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [31:0]   sweep32 = {{(32-AW){1'b0}}, sweep_addr};
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire [GW-1:0] sweep_g = sweep32[6 +: GW];
+
+    assign ram_re = take_plot || scan_cell;
+    assign ram_ra = take_plot ? plot_q[AW-1:0] : ptr[AW-1:0];
+
+    // Write port: the reset sweep, else stage 2's write-back (the new cell of
+    // a PLOT, zero for a CELL: clear-on-read).
+    wire s2_writes = s2_done && ((s2_op == OP_PLOT) || (s2_op == OP_CELL));
+    assign ram_we = !init_done || s2_writes;
+    assign ram_wa = !init_done ? sweep_addr : s2_addr[AW-1:0];
+    assign ram_wd = (!init_done || (s2_op == OP_CELL)) ? {CW{1'b0}} : plot_new;
+
+    // Range of the row including the plot being taken (exact tracking).
+    wire [14:0] new_xmin = (!trk_any || plot_q < trk_xmin) ? plot_q : trk_xmin;
+    wire [14:0] new_xmax = (!trk_any || plot_q > trk_xmax) ? plot_q : trk_xmax;
+
+    assign idle = init_done && !scanning && !trk_any && (s2_op == OP_NONE);
+    // The schedule's cursor after a row (item 5): the cycle after the flush
+    // step, or the flush span's transfer cycle.  The drain (item 6) counts it.
+    assign scan_done = init_done && !scanning && !trk_any
+                    && ((s2_op == OP_NONE) || ((s2_op == OP_FLUSH) && !flush_stall));
+
+    // ------------------------------------------------------------ registers
+    always @(posedge clk) begin
+        if (rst) begin
+            init_done  <= 1'b0;
+            sweep_addr <= {AW{1'b0}};
+            gnz        <= {NG{1'b0}};
+            ptr_ok     <= 1'b0;
+            trk_any    <= 1'b0;
+            scanning   <= 1'b0;
+            s2_op      <= OP_NONE;
+            lw_valid   <= 1'b0;
+        end else begin
+            if (!init_done) begin
+                bm[sweep_g] <= 64'd0;
+                sweep_addr <= sweep_addr + 1'b1;
+                if ({{(32-AW){1'b0}}, sweep_addr} == W_MAX)
+                    init_done <= 1'b1;
+            end
+
+            if (ram_we) begin
+                lw_valid <= 1'b1;
+                lw_addr  <= ram_wa;
+                lw_data  <= ram_wd;
+            end
+
+            // Stage 2 completes: the accumulator takes a non-zero cell, and
+            // a new span starts there (spec 7.2).
+            if (s2_done && (s2_op == OP_CELL) && cell_nz) begin
+                start <= s2_addr;
+                acc   <= acc_next;
+                mask  <= mask_next;
+            end
+
+            // Stage 1 -> stage 2.
+            if (s2_done) begin
+                if (take_plot) begin
+                    s2_op   <= OP_PLOT;
+                    s2_addr <= plot_q;
+                    s2_s    <= plot_s;
+                    s2_dir  <= plot_dir;
+                    s2_rule <= cfg_rule;
+                end else if (scan_cell) begin
+                    s2_op   <= OP_CELL;
+                    s2_addr <= ptr;
+                end else if (scan_flush) begin
+                    s2_op   <= OP_FLUSH;
+                end else begin
+                    s2_op   <= OP_NONE;
+                end
+            end
+
+            if (scan_cell) begin
+                bm[pg]  <= w_rest;
+                gnz[pg] <= |w_rest;
+                ptr     <= nxt;
+                ptr_ok  <= nxt_ok;
+            end
+            if (scan_flush)
+                scanning <= 1'b0;
+
+            // Plots: track the row's range; the last one starts the scan.
+            // (No CELL op can complete at this edge: plots are taken only
+            // when the scan is over, so these writes never collide.)
+            if (take_plot) begin
+                bm[qg]  <= bm[qg] | (64'd1 << plot_q[5:0]);
+                gnz[qg] <= 1'b1;
+            end
+            if (take_plot) begin
+                if (plot_last) begin
+                    trk_any  <= 1'b0;
+                    scanning <= 1'b1;
+                    ptr      <= new_xmin;
+                    ptr_ok   <= 1'b1;
+                    xend     <= new_xmax;
+                    start    <= new_xmin;
+                    fy       <= plot_row;
+                    f_rule   <= cfg_rule;
+                    f_width  <= cfg_width;
+                    acc      <= {CW{1'b0}};
+                    mask     <= {NS{1'b0}};
+                end else begin
+                    trk_any  <= 1'b1;
+                    trk_xmin <= new_xmin;
+                    trk_xmax <= new_xmax;
+                end
+            end
+        end
+    end
+endmodule
