@@ -2,7 +2,7 @@
 # (board/firmware: board/ef_board.c unchanged) and the whole board under Verilator (board/sim).
 # Included by the Makefile.
 #
-#   make bitstream BOARD=ulx3s-25f|ulx3s-85f [BOARD_NS=8|16] [BOARD_SEED=N] [BOARD_GPIO=0]
+#   make bitstream BOARD=ulx3s-25f|ulx3s-85f [BOARD_NS=8|16] [BOARD_SEED=N] [BOARD_GPIO=0] [BOARD_USB=0]
 #        -> build/board/$(BOARD)-ns$(BOARD_NS)/gateware/radiona_ulx3s.bit, utilisation and Fmax
 #           printed; fails when timing is not met (nextpnr without --timing-allow-fail)
 #   make firmware [BOARD=...]   the firmware alone (its size printed)
@@ -12,6 +12,9 @@
 #                               faults, an open shape refused, the bounded result queue on the SoC)
 #   make board-gpio-test        edgeflag-host over emulated GPIO into its gateware (tests/board/gpio_cosim.sh)
 #   BOARD_GPIO=0                the SoC without the GPIO bus slave (build/board/...-nogpio)
+#   BOARD_USB=0                 the SoC without the USB device (build/board/...-nousb)
+#   make board-sim-usb-test     the same over USB: libusb, umockdev, the SoC's USB device
+#                               (tests/board/usb_sim.sh)
 #   EF_BOARD_SERIAL=...         the serial number identify reports (default EFULX3S-0001)
 BOARD ?= ulx3s-25f
 BOARD_NS ?= 8
@@ -19,16 +22,17 @@ BOARD_SEED ?= 1
 EF_VENV ?= build/venv
 EF_VENV_PY := $(EF_VENV)/bin/python
 BOARD_GPIO ?= 1
-BOARD_DIR := $(BUILD)/board/$(BOARD)-ns$(BOARD_NS)$(if $(filter 0,$(BOARD_GPIO)),-nogpio)
+BOARD_USB ?= 1
+BOARD_DIR := $(BUILD)/board/$(BOARD)-ns$(BOARD_NS)$(if $(filter 0,$(BOARD_GPIO)),-nogpio)$(if $(filter 0,$(BOARD_USB)),-nousb)
 BOARD_SIM_DIR := $(BUILD)/board/sim-ns$(BOARD_NS)
-BOARD_SOC_SRC := board/soc/soc.py board/soc/ef_periph.py board/soc/ef_gpio.py board/soc/ef_gate_ecp5.v board/soc/ef_gate_sim.v \
+BOARD_SOC_SRC := board/soc/soc.py board/soc/ef_periph.py board/soc/ef_gpio.py board/soc/ef_usb.py board/soc/usb_core.py board/soc/ef_gate_ecp5.v board/soc/ef_gate_sim.v \
                  $(wildcard rtl/*.v) $(wildcard rtl/*.vh)
 BOARD_TOOLS := $(EF_VENV)/.installed-soc build/fpga-bin/nextpnr-ecp5
 
-.PHONY: board-tools firmware bitstream board-sim board-sim-test board-sim-faults board-gpio-test
+.PHONY: board-tools firmware bitstream board-sim board-sim-test board-sim-faults board-gpio-test board-sim-usb-test
 
 # the tools: Debian's cross compiler and picolibc, the pinned PyPI groups, the PATH shims
-$(BOARD_TOOLS): tools/requirements/soc.txt tools/requirements/fpga.txt tools/install-fpga.sh
+$(BOARD_TOOLS): tools/requirements/soc.txt tools/requirements/fpga.txt tools/requirements/usb.txt tools/install-fpga.sh
 	bash tools/install-deps.sh board
 	bash tools/install-fpga.sh soc
 	touch $(BOARD_TOOLS)
@@ -40,7 +44,7 @@ include board/firmware/firmware.mk
 $(BUILD)/board/%/software/include/generated/csr.h: $(BOARD_SOC_SRC) $(BOARD_TOOLS)
 	@mkdir -p $(BUILD)/board
 	$(EF_VENV_PY) board/soc/soc.py --target $(if $(filter sim-%,$*),sim,$(BOARD)) --ns $(BOARD_NS) \
-	    $(if $(findstring -nogpio,$*),--no-gpio) --out $(BUILD)/board/$* --headers-only >$(BUILD)/board/$*.headers.log 2>&1 || \
+	    $(if $(findstring -nogpio,$*),--no-gpio) $(if $(findstring -nousb,$*),--no-usb) --out $(BUILD)/board/$* --headers-only >$(BUILD)/board/$*.headers.log 2>&1 || \
 	    { tail -n 20 $(BUILD)/board/$*.headers.log; exit 1; }
 
 firmware: $(BOARD_TOOLS)
@@ -48,7 +52,7 @@ firmware: $(BOARD_TOOLS)
 
 bitstream: $(BOARD_TOOLS)
 	$(MAKE) --no-print-directory $(BOARD_DIR)/firmware.bin FW_SOC=$(BOARD_DIR)
-	EF_SOC_FLAGS="$(if $(filter 0,$(BOARD_GPIO)),--no-gpio)" bash board/soc/bitstream.sh $(BOARD) $(BOARD_NS) \
+	EF_SOC_FLAGS="$(if $(filter 0,$(BOARD_GPIO)),--no-gpio) $(if $(filter 0,$(BOARD_USB)),--no-usb)" bash board/soc/bitstream.sh $(BOARD) $(BOARD_NS) \
 	    $(BOARD_DIR) $(BOARD_SEED)
 
 # The simulated board: the SoC's Verilog for the sim target with the firmware in its ROM, and
@@ -63,8 +67,9 @@ $(BOARD_SIM_DIR)/gateware/sim.v: $(BOARD_SOC_SRC) | $(BOARD_SIM_DIR)/firmware.bi
 	$(EF_VENV_PY) board/soc/soc.py --target sim --ns $(BOARD_NS) --out $(BOARD_SIM_DIR) \
 	    --rom $(BOARD_SIM_DIR)/firmware.bin >$(BOARD_SIM_DIR)/gateware.log 2>&1 || \
 	    { tail -n 20 $(BOARD_SIM_DIR)/gateware.log; exit 1; }
-# the harness's C++ files (gpio_link.cpp: the GPIO header's socket, docs/board-gpio.md section 8)
-BOARD_SIM_CPP := board/sim/board_sim.cpp board/sim/gpio_link.cpp
+# the harness's C++ files (gpio_link.cpp: the GPIO header's socket, docs/board-gpio.md section 8;
+# usb_link.cpp: the USB host controller, docs/board-ulx3s.md "USB in the simulation")
+BOARD_SIM_CPP := board/sim/board_sim.cpp board/sim/gpio_link.cpp board/sim/usb_link.cpp
 $(BOARD_SIM_DIR)/obj/board_sim: $(BOARD_SIM_DIR)/gateware/sim.v $(BOARD_SIM_CPP) $(wildcard board/sim/*.h)
 	verilator $(BOARD_SIM_VFLAGS) -Mdir $(BOARD_SIM_DIR)/obj -o board_sim \
 	    $$(cat $(BOARD_SIM_DIR)/gateware/sources.txt) $(BOARD_SIM_DIR)/gateware/sim.v \
@@ -86,3 +91,10 @@ board-sim-faults: all board-sim $(PTYBOARD)
 # edgeflag-host over emulated GPIO into the simulated board's gateware (docs/board-gpio.md section 8)
 board-gpio-test: all board-sim gpio-cosim
 	bash tests/board/gpio_cosim.sh $(BOARD_SIM_DIR) $(BUILD)
+
+# The simulated board over USB: the unmodified edgeflag-host and libusb under umockdev
+# (tests/host/usb_emu --soc) against the SoC's USB device (tests/board/usb_sim.sh)
+board-sim-usb-test: all board-sim
+	@bash tools/install-deps.sh test
+	@$(MAKE) --no-print-directory host-usb-emu
+	bash tests/board/usb_sim.sh $(BOARD_SIM_DIR)

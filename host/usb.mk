@@ -31,8 +31,9 @@ USB_EMU_BOARD_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(wildcard board/*.c proto/*.c)
 UMOCKDEV_CFLAGS = $(shell $(PKG_CONFIG) --cflags umockdev-1.0 2>/dev/null)
 UMOCKDEV_LIBS   = $(shell $(PKG_CONFIG) --libs umockdev-1.0 2>/dev/null || echo -lumockdev -lgobject-2.0 -lglib-2.0)
 # GLib's headers are not -Wstrict-prototypes clean.
-$(USB_EMU_OBJ): CPPFLAGS += -Ihost -Iboard -Iproto $(UMOCKDEV_CFLAGS)
+$(USB_EMU_OBJ): CPPFLAGS += -Ihost -Iboard -Iboard/sim -Iproto $(UMOCKDEV_CFLAGS)
 $(USB_EMU_OBJ): WARN += -Wno-strict-prototypes
+$(USB_EMU_OBJ): board/sim/usb_wire.h
 $(USB_EMU): $(USB_EMU_OBJ) $(USB_EMU_BOARD_OBJ) $(VEC_A) $(LIB_A)
 	$(CC) $(LDFLAGS_ALL) -o $@ $^ $(UMOCKDEV_LIBS) -lpthread $(PNG_LIBS) $(EXPAT_LIBS) $(VEC_LIBS) -lz
 

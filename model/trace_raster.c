@@ -241,7 +241,9 @@ uint64_t ef_trace_rows(ef_ctx *ctx, ef_image *img, ef_rule rule, const uint8_t p
             const uint64_t v[2] = { (uint64_t)row, (uint64_t)(ctx->nedges - 1u - (uint32_t)idx) };
             transfer(&r, EF_IF_ET_RD, r.t++, v);
         }
-        r.t += EF_L_PLOT; /* PLOT's two registers (microarch 3.6): the first plot at t + n + L_PLOT */
+        /* the first plot at t + n + L_PLOT, or t + n + L_REC + L_PLOT with new edges (microarch 3.6):
+         * the AET's record register, then PLOT's two registers */
+        r.t += EF_L_PLOT + (head >= 0 ? EF_L_REC : 0);
         const int32_t base = row * ns, end = base + ns - 1;
         int32_t xmin = INT32_MAX, xmax = -1;
         uint32_t kept = 0;

@@ -19,10 +19,12 @@
 //   t .. t+n-1  et_rd of the slot's n new edges (et_rd_ready high), each
 //               with a record read; the records arrive at t+1 .. t+n and
 //               all but the last are appended to the ring;
-//   t+n ..      one plot per cycle (computed here, presented on plot a cycle
-//               later by the output register: t+n+1 ..): the ring's edges in order (those active
-//               from earlier rows, then the new ones), the last new edge
-//               from the record port itself (it still holds it); each edge
+//   t+n         (n > 0 only) the last record into its register (EF_L_REC)
+//   t+n+r ..    one plot per cycle, r = EF_L_REC if n > 0 else 0 (computed
+//               here, presented on plot EF_L_PLOT = 2 cycles later by the
+//               plot pipeline: t+n+r+2 ..): the ring's edges in order (those
+//               active from earlier rows, then the new ones), the last new
+//               edge from the record register (rec_q); each edge
 //               goes back to the ring's tail after its last plot in the row
 //               if its last sample row is below the row.  So the ring is
 //               a FIFO whose order is the AET order of the schedule, and
@@ -104,7 +106,7 @@ module ef_aet #(
     localparam O_R0   = O_R1 + `EF_ET_WR_R1_W;
     localparam O_DIR  = O_R0 + `EF_PLOT_S_W;        // s0, not r0
     localparam O_DY   = O_DIR + `EF_ET_WR_DIR_W;
-    localparam O_RS   = O_DY + `EF_ET_WR_DY_W;
+    localparam O_RS   = O_DY + `EF_ET_WR_DY_W;      // O_DY: drs = dy - rs, not dy
     localparam O_QS   = O_RS + `EF_ET_WR_RS_W;
     localparam O_E    = O_QS + `EF_ET_WR_QS_W;
     localparam O_X    = O_E + `EF_ET_WR_E_W;
@@ -118,7 +120,8 @@ module ef_aet #(
     localparam [RA-1:0] RLAST = RLASTI[RA-1:0];
 
     localparam [2:0] PH_IDLE = 3'd0, PH_RD = 3'd1, PH_P0 = 3'd2, PH_PL = 3'd3, PH_W1 = 3'd4, PH_W = 3'd5,
-                     PH_W2 = 3'd6;   // the row's last plot in stage p (EF_L_PLOT = 2)
+                     PH_W2 = 3'd6,   // the row's last plot in stage p (EF_L_PLOT = 2)
+                     PH_RX = 3'd7;   // the last record into its register (EF_L_REC = 1)
 
     // ------------------------------------------------------------ state
     reg [2:0]       ph;
@@ -148,7 +151,7 @@ module ef_aet #(
     reg signed [31:0] cur_x;
     reg [`EF_ET_WR_E_W-1:0]  cur_e;
     reg [`EF_ET_WR_RS_W-1:0] cur_rs;
-    reg [`EF_ET_WR_DY_W-1:0] cur_dy;
+    reg [`EF_ET_WR_DY_W-1:0] cur_drs;
     reg [`EF_ET_WR_QS_W-1:0] cur_qs;
     reg          cur_dir;
     reg [SRW-1:0] cur_r1;
@@ -164,7 +167,8 @@ module ef_aet #(
     reg          lw_v;
     reg [RA-1:0] lw_addr, rq_addr;
     reg [RW-1:0] lw_data;
-    wire [RW-1:0] ring_rd = (lw_v && lw_addr == rq_addr) ? lw_data : ring_q;
+    // the front read in the cycle its entry was written: the written data
+    wire          fwd_hit = lw_v && (lw_addr == rq_addr);
 
     // ------------------------------------------------------------ row data
     wire        row_start = (ph == PH_W) && plot_ready;
@@ -259,19 +263,35 @@ module ef_aet #(
     wire        is1_now = first ? (in_w ? fo_is1 : fb_is1) : (rem == {{(RA+1){1'b0}}, 1'b1});
     wire        from_rec = fr && rec_edge && is0_now;
 
+    // The record port's entry (as the ring keeps it: s0 for r0, drs = dy -
+    // rs for dy), written to the ring on arrival and registered (rec_q):
+    // the last new edge is taken from that register, a cycle after it
+    // arrives (EF_L_REC = 1, the PH_RX cycle), not from ETM's memory port.
     wire [`EF_PLOT_S_W-1:0] rec_s0 = rec_r0[`EF_PLOT_S_W-1:0] & NSM1[`EF_PLOT_S_W-1:0];   // a new edge: r0 in this row
     /* verilator lint_off UNUSEDSIGNAL */
     wire [`EF_ET_WR_R0_W-1:0] unused_rec_r0 = rec_r0;   // its pixel row is the row's (its slot)
     /* verilator lint_on UNUSEDSIGNAL */
-    wire [RW-1:0] src = from_rec ? {rec_x, rec_e, rec_qs, rec_rs, rec_dy, rec_dir, rec_s0, rec_r1} : ring_rd;
-    wire signed [31:0] S_x = fr ? {{(32-`EF_ET_WR_X_W){src[RW-1]}}, src[O_X +: `EF_ET_WR_X_W]} : cur_x;
-    wire [`EF_ET_WR_E_W-1:0]  S_e  = fr ? src[O_E +: `EF_ET_WR_E_W]   : cur_e;
-    wire [`EF_ET_WR_QS_W-1:0] S_qs = fr ? src[O_QS +: `EF_ET_WR_QS_W] : cur_qs;
-    wire [`EF_ET_WR_RS_W-1:0] S_rs = fr ? src[O_RS +: `EF_ET_WR_RS_W] : cur_rs;
-    wire [`EF_ET_WR_DY_W-1:0] S_dy = fr ? src[O_DY +: `EF_ET_WR_DY_W] : cur_dy;
-    wire        S_dir = fr ? src[O_DIR] : cur_dir;
-    wire [`EF_PLOT_S_W-1:0] S_s0 = src[O_R0 +: `EF_PLOT_S_W];
-    wire [SRW-1:0] S_r1 = fr ? src[O_R1 +: SRW] : cur_r1;
+    wire [`EF_ET_WR_DY_W-1:0] rec_drs = rec_dy - rec_rs;
+    wire [RW-1:0] rec_ent = {rec_x, rec_e, rec_qs, rec_rs, rec_drs, rec_dir, rec_s0, rec_r1};
+    reg  [RW-1:0] rec_q;
+    // The edge's state: the ring's read port, else (decoded from registers
+    // alone, so the memory's output passes one multiplexer) the record
+    // register, the forwarded write or the edge's running state.
+    wire          use_ring = fr && !from_rec && !fwd_hit;
+    wire [RW-1:0] alt = from_rec ? rec_q : lw_data;
+    wire signed [31:0] S_x = use_ring ? {{(32-`EF_ET_WR_X_W){ring_q[RW-1]}}, ring_q[O_X +: `EF_ET_WR_X_W]}
+                           : fr ? {{(32-`EF_ET_WR_X_W){alt[RW-1]}}, alt[O_X +: `EF_ET_WR_X_W]} : cur_x;
+    wire [`EF_ET_WR_E_W-1:0]  S_e   = use_ring ? ring_q[O_E +: `EF_ET_WR_E_W]
+                                    : fr ? alt[O_E +: `EF_ET_WR_E_W] : cur_e;
+    wire [`EF_ET_WR_QS_W-1:0] S_qs  = use_ring ? ring_q[O_QS +: `EF_ET_WR_QS_W]
+                                    : fr ? alt[O_QS +: `EF_ET_WR_QS_W] : cur_qs;
+    wire [`EF_ET_WR_RS_W-1:0] S_rs  = use_ring ? ring_q[O_RS +: `EF_ET_WR_RS_W]
+                                    : fr ? alt[O_RS +: `EF_ET_WR_RS_W] : cur_rs;
+    wire [`EF_ET_WR_DY_W-1:0] S_drs = use_ring ? ring_q[O_DY +: `EF_ET_WR_DY_W]
+                                    : fr ? alt[O_DY +: `EF_ET_WR_DY_W] : cur_drs;
+    wire        S_dir = use_ring ? ring_q[O_DIR] : fr ? alt[O_DIR] : cur_dir;
+    wire [`EF_PLOT_S_W-1:0] S_s0 = use_ring ? ring_q[O_R0 +: `EF_PLOT_S_W] : alt[O_R0 +: `EF_PLOT_S_W];
+    wire [SRW-1:0] S_r1 = use_ring ? ring_q[O_R1 +: SRW] : fr ? alt[O_R1 +: SRW] : cur_r1;
 
     // The edge's first and last sample rows in this row, and whether it
     // survives it, without compares or subtractions against the row's
@@ -302,7 +322,7 @@ module ef_aet #(
     wire signed [31:0] x_next;
     wire [`EF_ET_WR_E_W-1:0] e_next;
     ef_plot #(.NS(NS)) u_plot (
-        .s(s_now), .x(S_x), .e(S_e), .qs(S_qs), .rs(S_rs), .dy(S_dy), .width(cfg_width),
+        .s(s_now), .x(S_x), .e(S_e), .qs(S_qs), .rs(S_rs), .drs(S_drs), .width(cfg_width),
         .q(q_unused), .x_next(x_next), .e_next(e_next)
     );
 
@@ -338,7 +358,7 @@ module ef_aet #(
     /* verilator lint_on UNUSEDSIGNAL */
     ef_plot #(.NS(NS)) u_plot_q (
         .s(a_s), .x(a_x), .e({`EF_ET_WR_E_W{1'b0}}), .qs({`EF_ET_WR_QS_W{1'b0}}),
-        .rs({`EF_ET_WR_RS_W{1'b0}}), .dy({`EF_ET_WR_DY_W{1'b0}}), .width(cfg_width),
+        .rs({`EF_ET_WR_RS_W{1'b0}}), .drs({`EF_ET_WR_DY_W{1'b0}}), .width(cfg_width),
         .q(q), .x_next(a_x_unused), .e_next(a_e_unused)
     );
 
@@ -369,8 +389,8 @@ module ef_aet #(
     wire arrive = arr_v && !arr_last;            // t+1 .. t+n-1: no plot yet
     assign ring_we = push || arrive;
     // a survivor's r0 is 0: in later rows it starts at sample row 0
-    assign ring_wd = push ? {x_next[`EF_ET_WR_X_W-1:0], e_next, S_qs, S_rs, S_dy, S_dir, {`EF_PLOT_S_W{1'b0}}, S_r1}
-                          : {rec_x, rec_e, rec_qs, rec_rs, rec_dy, rec_dir, rec_s0, rec_r1};
+    assign ring_wd = push ? {x_next[`EF_ET_WR_X_W-1:0], e_next, S_qs, S_rs, S_drs, S_dir, {`EF_PLOT_S_W{1'b0}}, S_r1}
+                          : rec_ent;
     wire w1 = (ph == PH_W1);
     // reads: the next row's first edge (after the last plot), the first new
     // edge of a row without older ones (with the last et_rd), the next edge
@@ -460,6 +480,8 @@ module ef_aet #(
 
             arr_v <= rd_take;
             arr_last <= rd_end;
+            if (arr_v)
+                rec_q <= rec_ent;
 
             if (row_start) begin
                 row <= nx_row;
@@ -476,7 +498,7 @@ module ef_aet #(
                 fb_is0 <= (n_rd == {(RA+2){1'b0}});
                 fb_is1 <= (n_rd == {{(RA+1){1'b0}}, 1'b1});
                 if (rd_end)
-                    ph <= PH_P0;
+                    ph <= PH_RX;
             end
 
             if (in_plot) begin
@@ -494,9 +516,11 @@ module ef_aet #(
                     fresh <= 1'b0;
                     rem <= rem_now;
                     rem_is0 <= is0_now;
-                    cur_x <= x_next; cur_e <= e_next; cur_qs <= S_qs; cur_rs <= S_rs; cur_dy <= S_dy;
-                    cur_dir <= S_dir; cur_r1 <= S_r1; cur_s <= s_now + 1'b1;
                 end
+                // the edge's running state, loaded whatever edge_done says
+                // (after an edge's last plot the next is fresh: unused)
+                cur_x <= x_next; cur_e <= e_next; cur_qs <= S_qs; cur_rs <= S_rs; cur_drs <= S_drs;
+                cur_dir <= S_dir; cur_r1 <= S_r1; cur_s <= s_now + 1'b1;
             end
 
             if (w1) begin
@@ -513,6 +537,8 @@ module ef_aet #(
             // the sequencer two cycles ago), so its plot_ready is still high
             if (ph == PH_W2)
                 ph <= PH_W;
+            if (ph == PH_RX)
+                ph <= PH_P0;
         end
     end
 endmodule

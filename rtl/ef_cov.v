@@ -154,15 +154,20 @@ module ef_cov #(
                 b_sa <= mul(cfg_alpha, a_cov);
                 a_x <= a_x + 14'd1;
             end
-            // A
-            if (take) begin
-                a_cnt <= span_len;
+            // A: the span's fields load whenever COV is ready, offered or
+            // not (issue 25: only a_cnt waits for span_valid, which comes
+            // from SLB's cell read); when nothing is taken they are unused
+            // (a_cnt is 0 after this edge, or was 1 and its last read
+            // issued with the old fields in this cycle)
+            if (span_ready) begin
                 a_y <= span_y;
                 a_x <= span_x;
                 a_cov <= cov;
-            end else if (issue) begin
-                a_cnt <= a_cnt - 15'd1;
             end
+            if (take)
+                a_cnt <= span_len;
+            else if (issue)
+                a_cnt <= a_cnt - 15'd1;
         end
     end
 endmodule

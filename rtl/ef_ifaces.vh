@@ -10,6 +10,7 @@
 `define EF_L_SETUP 33
 `define EF_L_COV 3
 `define EF_L_PLOT 2
+`define EF_L_REC 1
 `define EF_SPANQ 16
 
 // commands: the op field of cmd (docs/microarch.md 3.1)

@@ -10,6 +10,7 @@ package ef_ifaces_pkg;
   localparam int L_SETUP = 33;
   localparam int L_COV = 3;
   localparam int L_PLOT = 2;
+  localparam int L_REC = 1;
   localparam int SPANQ = 16;
 
   localparam logic [3:0] OP_FRAME = 4'd1;

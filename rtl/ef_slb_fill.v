@@ -127,6 +127,11 @@ module ef_slb_fill #(
     reg          s2_dir;
     reg          s2_rule;
 
+    // The cell of a stalled CELL op (issue 25): the RAM keeps reading while
+    // a span waits for COV, so stage 2 holds its cell here.
+    reg          hold_v;
+    reg [CW-1:0] hold_d;
+
     // Latest write, for forwarding.
     reg          lw_valid;
     reg [AW-1:0] lw_addr;
@@ -149,7 +154,7 @@ module ef_slb_fill #(
     // cur: the cell as it is now: the RAM read missed a write made at the same
     // edge (read first), so the latest write wins on an address match.
     wire          fwd  = lw_valid && (lw_addr == s2_addr[AW-1:0]);
-    wire [CW-1:0] cur  = fwd ? lw_data : ram_rd;
+    wire [CW-1:0] cur  = hold_v ? hold_d : fwd ? lw_data : ram_rd;
 
     wire [NS-1:0] s2_sel = {{(NS-1){1'b0}}, 1'b1} << s2_s;  // one-hot sample
     wire [CW-1:0] plot_new;     // cell after the PLOT op
@@ -214,12 +219,19 @@ module ef_slb_fill #(
     wire scan_cell  = scan_go && (ptr <= xend);
     wire scan_flush = scan_go && !(ptr <= xend);
 
-    assign ram_re = take_plot || scan_cell;
+    // The read and write enables do not wait for the stall (issue 25: the
+    // stall comes from the cell just read and from COV, and gating the
+    // memory's enables with it made the block's critical path): a stalled
+    // CELL op rewrites its cell's zero, the same write it makes when it
+    // completes, and the read of the next cell is issued again when the
+    // stall ends; stage 2 keeps its cell in hold_d meanwhile.
+    wire scan_rd    = init_done && scanning && (ptr <= xend);
+    assign ram_re = take_plot || scan_rd;
     assign ram_ra = take_plot ? plot_q[AW-1:0] : ptr[AW-1:0];
 
     // Write port: the reset sweep, else stage 2's write-back (the new cell of
     // a PLOT, zero for a CELL: clear-on-read).
-    wire s2_writes = s2_done && ((s2_op == OP_PLOT) || (s2_op == OP_CELL));
+    wire s2_writes = (s2_op == OP_PLOT) || (s2_op == OP_CELL);
     assign ram_we = !init_done || s2_writes;
     assign ram_wa = !init_done ? sweep_addr : s2_addr[AW-1:0];
     assign ram_wd = (!init_done || (s2_op == OP_CELL)) ? {CW{1'b0}} : plot_new;
@@ -243,12 +255,17 @@ module ef_slb_fill #(
             scanning   <= 1'b0;
             s2_op      <= OP_NONE;
             lw_valid   <= 1'b0;
+            hold_v     <= 1'b0;
         end else begin
             if (!init_done) begin
                 sweep_addr <= sweep_addr + 1'b1;
                 if ({{(32-AW){1'b0}}, sweep_addr} == W_MAX)
                     init_done <= 1'b1;
             end
+
+            hold_v <= stall;
+            if (stall)
+                hold_d <= cur;
 
             if (ram_we) begin
                 lw_valid <= 1'b1;

@@ -45,8 +45,8 @@ static void write_vh(FILE *f)
     fputs("`ifndef EF_IFACES_VH\n`define EF_IFACES_VH\n\n", f);
     fprintf(f,
             "`define EF_CYCLE_BITS %d\n`define EF_L_DEC %d\n`define EF_L_SETUP %d\n`define EF_L_COV %d\n"
-            "`define EF_L_PLOT %d\n`define EF_SPANQ %d\n\n",
-            EF_CYCLE_BITS, EF_L_DEC, EF_L_SETUP, EF_L_COV, EF_L_PLOT, EF_SPANQ);
+            "`define EF_L_PLOT %d\n`define EF_L_REC %d\n`define EF_SPANQ %d\n\n",
+            EF_CYCLE_BITS, EF_L_DEC, EF_L_SETUP, EF_L_COV, EF_L_PLOT, EF_L_REC, EF_SPANQ);
     fputs("// commands: the op field of cmd (docs/microarch.md 3.1)\n", f);
     for (int op = EF_OP_FRAME; op <= EF_OP_FRAME_END; op++)
         fprintf(f, "`define EF_OP_%s %d\n", ef_op_name(op), op);
@@ -82,8 +82,9 @@ static void write_sv(FILE *f)
           f);
     fprintf(f,
             "  localparam int CYCLE_BITS = %d;\n  localparam int L_DEC = %d;\n  localparam int L_SETUP = %d;\n"
-            "  localparam int L_COV = %d;\n  localparam int L_PLOT = %d;\n  localparam int SPANQ = %d;\n\n",
-            EF_CYCLE_BITS, EF_L_DEC, EF_L_SETUP, EF_L_COV, EF_L_PLOT, EF_SPANQ);
+            "  localparam int L_COV = %d;\n  localparam int L_PLOT = %d;\n  localparam int L_REC = %d;\n"
+            "  localparam int SPANQ = %d;\n\n",
+            EF_CYCLE_BITS, EF_L_DEC, EF_L_SETUP, EF_L_COV, EF_L_PLOT, EF_L_REC, EF_SPANQ);
     for (int op = EF_OP_FRAME; op <= EF_OP_FRAME_END; op++)
         fprintf(f, "  localparam logic [3:0] OP_%s = 4'd%d;\n", ef_op_name(op), op);
     fputc('\n', f);

@@ -5,15 +5,21 @@
 nextpnr makes every port of the top level a package pin, and a block of the
 reference RTL has hundreds.  The wrapper written here keeps three pins and
 clk: every input of the block but clk and rst comes from one shift register
-fed by the pin `din`, and every output is folded into one registered parity
-pin `dout`, so the block fits the package, nothing of it is optimised away
-and nextpnr reports its Fmax (the shift register's flip-flops are in the
-counts: the script says how many).  Same scheme as the hand-written
-ef_aet_pins.v it replaces.
+fed by the pin `din`, and every output bit is XORed into its own bit of a
+rotating register whose last bit is the pin `dout`, so the block fits the
+package, nothing of it is optimised away and nextpnr reports its Fmax (the
+flip-flops of both registers are in the counts: the script says how
+many).  Not a plain parity of the outputs, as before issue 25's second
+session: two outputs that are always equal (COV's pix_rgba and fb_wdata,
+pix_x and fb_wx, ...) cancel in a parity, and Yosys then removed most of
+COV's per-pixel blend, multipliers included, from the placed design; in
+the rotating register each bit of each output lands on a bit of its own,
+and every bit reaches the pin after a different number of cycles.
 
 usage: pins_wrap.py PORTS.json TOP 'NS=8 H_MAX=240 ...' > TOP_pins.v
 PORTS.json: Yosys `write_json` of TOP after `hierarchy -top TOP; proc`.
-Prints the shift register's length on stderr as "pins_wrap: TOP: N".
+Prints the input shift register's length and the output register's on
+stderr as "pins_wrap: TOP: N in, M out".
 """
 import json
 import sys
@@ -57,10 +63,17 @@ def main():
     lines.append(f"    {top} #({pv}) u (")
     lines.append("        " + ",\n        ".join(conns))
     lines.append("    );")
-    lines.append("    always @(posedge clk) dout <= ^{" + ", ".join(f"o_{n}" for n, _ in outs) + "};")
+    no = sum(w for _, w in outs)
+    cat = "{" + ", ".join(f"o_{n}" for n, _ in outs) + "}"
+    if no >= 2:
+        lines.append(f"    reg [{no - 1}:0] acc;")
+        lines.append(f"    always @(posedge clk) acc <= {{acc[{no - 2}:0], acc[{no - 1}]}} ^ {cat};")
+        lines.append(f"    always @(posedge clk) dout <= acc[{no - 1}];")
+    else:
+        lines.append(f"    always @(posedge clk) dout <= {cat};")
     lines.append("endmodule")
     print("\n".join(lines))
-    print(f"pins_wrap: {top}: {ni}", file=sys.stderr)
+    print(f"pins_wrap: {top}: {ni} in, {no} out", file=sys.stderr)
 
 
 if __name__ == "__main__":

@@ -13,7 +13,8 @@
 #   2. each of them that can fit the device (LUT4 and block RAM counts at
 #      most the device's) is placed and routed with nextpnr-ice40 through a
 #      generated pin-light wrapper (syn/pins_wrap.py: inputs from
-#      one shift register, outputs folded into one parity pin) and its Fmax
+#      one shift register, outputs XORed into a rotating register whose
+#      last bit is the one output pin) and its Fmax
 #      printed; one that cannot fit (by the counts, or by nextpnr's placer:
 #      "Failed to expand region ... of N ICESTORM_LCs") is reported as such,
 #      not as a failure (the counts of step 1 say what it needs); any other
@@ -117,7 +118,7 @@ ecp5() {
     path=$(awk '/Critical path report for clock/ { n++ } /Critical path report for cross-domain/ { n = 9 }
         n == 1 && / Source / && s == "" { s = $NF } n == 1 && / Sink / { k = $NF } n == 1 && /ns logic/ { t = $2 " ns logic, " $5 " ns routing" }
         END { print s " -> " k " (" t ")" }' "$out/$tag.pnr.log")
-    echo "rtl-synth: $tag placed and routed on the ECP5 $ecp5_dev ($ecp5_pkg, speed $ecp5_speed) with a $(sed 's/.*: //' "$out/$tag.wrap.txt")-bit input shift register: ${use#; }; $fmax; critical path $path ($((SECONDS - t0)) s)"
+    echo "rtl-synth: $tag placed and routed on the ECP5 $ecp5_dev ($ecp5_pkg, speed $ecp5_speed) with a wrapper of $(sed 's/.*: //' "$out/$tag.wrap.txt") register bits: ${use#; }; $fmax; critical path $path ($((SECONDS - t0)) s)"
     echo "    nextpnr-ecp5 --$ecp5_dev --package $ecp5_pkg --speed $ecp5_speed --json ${tag}_pins.json --freq 12 --seed 1"
 }
 
@@ -173,7 +174,7 @@ YS
     lc=$(grep -E 'ICESTORM_LC:' "$out/$tag.pnr.log" | tail -n 1 | tr -s ' \t' ' ' | sed 's/^Info: *//')
     bram=$(grep -E 'ICESTORM_RAM:' "$out/$tag.pnr.log" | tail -n 1 | tr -s ' \t' ' ' | sed 's/^Info: *//')
     fmax=$(grep -E 'Max frequency for clock' "$out/$tag.pnr.log" | tail -n 1 | sed 's/^Info: *//')
-    echo "rtl-synth: $tag placed and routed on the $dev ($pkg) with a $(sed 's/.*: //' "$out/$tag.wrap.txt")-bit input shift register: $lc; $bram; $fmax ($((SECONDS - t0)) s)"
+    echo "rtl-synth: $tag placed and routed on the $dev ($pkg) with a wrapper of $(sed 's/.*: //' "$out/$tag.wrap.txt") register bits: $lc; $bram; $fmax ($((SECONDS - t0)) s)"
 }
 
 ns0=${nss%% *}

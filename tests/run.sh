@@ -6,7 +6,7 @@ cd "$(dirname "$0")/.." || exit 1
 MAKE=${MAKE:-make}
 logs=build/test-logs
 mkdir -p "$logs"
-stages=(test-build test-format test-shellcheck test-unit test-oracle test-filter test-mutants test-cli test-gen test-vectors test-check test-regress test-host test-host-usb test-host-gpio test-host-socket test-host-serial test-host-rtl board-sim-test board-gpio-test test-rtl rtl-lint test-rtl-sim rtl-test test-rtl-mutants test-coverage test-fusesoc test-dpi test-python test-cocotb test-bad test-bitexact bench-quick test-sanitize test-integer test-fuzz-replay test-fuzz-smoke test-portability)
+stages=(test-build test-format test-shellcheck test-unit test-oracle test-filter test-mutants test-cli test-gen test-vectors test-check test-regress test-host test-host-usb test-host-gpio test-host-socket test-host-serial test-host-rtl board-sim-test board-gpio-test board-sim-usb-test test-rtl rtl-lint test-rtl-sim rtl-test test-rtl-mutants test-coverage test-fusesoc test-dpi test-python test-cocotb test-bad test-bitexact bench-quick test-sanitize test-integer test-fuzz-replay test-fuzz-smoke test-portability)
 [ -n "${EF_TEST_STAGES:-}" ] && read -r -a stages <<<"$EF_TEST_STAGES"
 pass=0 fail=0
 for s in "${stages[@]}"; do

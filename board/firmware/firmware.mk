@@ -22,7 +22,7 @@ FW_CFLAGS = -march=$(FW_MARCH) -mabi=ilp32 --specs=picolibc.specs -Os -std=gnu11
 FW_OUT ?= $(FW_SOC)/firmware
 FW_EXTRA ?=
 # the links (board/firmware/link.h): each file compiles to nothing when the SoC lacks its core
-FW_LINKS = board/firmware/link_uart.c board/firmware/link_gpio.c
+FW_LINKS = board/firmware/link_uart.c board/firmware/link_gpio.c board/firmware/link_usb.c
 FW_SRC = board/firmware/crt0.S board/firmware/main.c $(FW_LINKS) board/firmware/dut_soc.c board/firmware/crc32.c \
          board/ef_board.c proto/ef_frame.c
 

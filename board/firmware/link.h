@@ -20,7 +20,7 @@
 #include <generated/csr.h>
 
 /* Out-of-band control requests (docs/board.md 3.1). */
-enum { FW_REQ_NONE = 0, FW_REQ_IDENTIFY = 1, FW_REQ_STATUS = 2, FW_REQ_RESET = 3 };
+enum { FW_REQ_NONE = 0, FW_REQ_IDENTIFY = 1, FW_REQ_STATUS = 2, FW_REQ_RESET = 3, FW_REQ_LINK_LOST = 4 };
 
 typedef struct fw_link {
     const char *name;
@@ -35,7 +35,10 @@ typedef struct fw_link {
     int (*control)(void);
     /* The answer to the request control() returned: the reply's bytes
      * (identify, status), or len 0 for reset, which the engine has done
-     * (the link then drops the stream bytes it holds both ways). */
+     * (the link then drops the stream bytes it holds both ways), or len 0
+     * for link lost (the link's connection ended, e.g. a USB bus reset: the
+     * engine dropped a half frame and its unsent bytes, ef_board_link_lost;
+     * the run is kept). */
     void (*reply)(int req, const uint8_t *buf, size_t len);
     /* The engine's state for a link that shows it on lines (the GPIO bus's
      * done and err); may be NULL.  Called on every turn of the loop. */
@@ -45,6 +48,9 @@ typedef struct fw_link {
 extern const fw_link fw_link_uart;
 #ifdef CSR_GPIOBUS_BASE
 extern const fw_link fw_link_gpio;
+#endif
+#ifdef CSR_USB_BASE
+extern const fw_link fw_link_usb;
 #endif
 
 #endif /* EF_FW_LINK_H */

@@ -57,6 +57,9 @@ static const fw_link *const links[] = {
 #ifdef CSR_GPIOBUS_BASE
     &fw_link_gpio,
 #endif
+#ifdef CSR_USB_BASE
+    &fw_link_usb,
+#endif
 };
 #define NLINKS (sizeof links / sizeof links[0])
 
@@ -93,6 +96,13 @@ static void serve_control(engine *e, const fw_link *l, int req)
         e->tx_len = e->tx_pos = 0;
         e->rx_pending = 0;
         e->owner = NULL;
+        l->reply(req, NULL, 0);
+        break;
+    case FW_REQ_LINK_LOST:
+        if (e->owner == l) {
+            ef_board_link_lost(e->b);
+            e->tx_len = e->tx_pos = 0;
+        }
         l->reply(req, NULL, 0);
         break;
     default: break;

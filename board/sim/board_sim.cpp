@@ -1,21 +1,23 @@
 // board_sim.cpp - the whole ULX3S board in Verilator (docs/board-ulx3s.md,
 // "The board simulated"): the SoC's Verilog as LiteX writes it for the
 // simulation target of board/soc/soc.py (VexRiscv, the firmware in its ROM,
-// ef_raster and its frame memory, the UART), clocked as on the board (sys 30
-// MHz, ef 15 MHz: two sys cycles per ef cycle; --sys-clk and --ef-clk set
-// others, as soc.py --sys-clk built the SoC), its UART connected to a
+// ef_raster and its frame memory, the UART), ef at 15 MHz and sys at 60 MHz
+// (four sys cycles per ef cycle, the USB device's 12 MHz a fifth of sys);
+// --sys-clk 30e6 clocks it as the board is clocked (two sys cycles per ef
+// cycle) for a SoC built by soc.py --sys-clk 30e6; its UART connected to a
 // pseudo-terminal -- or a unix socket -- so that edgeflag-host drives it
 // through the same code a real board gets.
 //
 // The UART is joined at the UART core's PHY stream (LiteX's "sim" PHY: a
 // byte with valid/ready each way), not at the pins: the harness paces that
 // stream at the line rate (--baud, default 3,000,000: one byte every 10 bit
-// times of simulated time, 100 sys cycles at 3 Mbaud), so the firmware sees
+// times of simulated time, 200 sys cycles at 3 Mbaud and 60 MHz), so the firmware sees
 // bytes arrive and leave as fast as the FT231X would bring them.
 //
 //   board_sim --dir GATEWARE_DIR [--pty-link FILE] [--link PATH] [--listen PATH] [--baud N]
 //             [--sys-clk HZ] [--ef-clk HZ] [--faults LIST] [--probe-status CYCLES]
 //             [--max-seconds S] [--quiet] [--gpio-listen PATH [--gpio-step-cycles N] [--gpio-lockstep]]
+//             [--usb PATH]
 //
 // --dir: where the memory images (sim_rom.init, ...) are.  The board is
 // published only once it is up: the harness itself sends the firmware an
@@ -49,7 +51,9 @@
 // from the host's first byte to the board's last, and the most result
 // frames kept, and exits 0.  --gpio-listen: the SoC's GPIO bus pins behind a
 // unix socket for the emulated gpiochip of the tests (gpio_link.cpp), served
-// once the board is up.
+// once the board is up.  --usb PATH: the SoC's USB device on a unix socket for
+// tests/host/usb_emu.c (--soc), through the host controller of usb_link.cpp
+// (the usb clock is 12 MHz: one every 5 sys cycles, so sys must be 60 MHz).
 #include <cerrno>
 #include <cmath>
 #include <csignal>
@@ -68,6 +72,7 @@
 
 #include "Vsim.h"
 #include "gpio_link.h"
+#include "usb_link.h"
 #include "verilated.h"
 #include <zlib.h>
 
@@ -185,32 +190,43 @@ struct Board {
     Vsim top{ &ctx };
     uint64_t cyc = 0, byte_cycles = 0, next_rx = 0, next_tx = 0, ef_div = 2;
     GpioLink *gpio = nullptr;   // the GPIO header's socket (gpio_link.cpp), served once the board is up
+    UsbLink *usb = nullptr;     // the USB device's socket (usb_link.cpp)
     void reset_pins()
     {
         top.sys_rst = 1;
         top.serial_sink_valid = 0;
         top.serial_source_ready = 0;
         top.sim_trace = 0;
+        top.utmi_line_state = 2;   // J: an idle bus, no reset
     }
     // One sys cycle.  in: a byte for the board (or none); sets *took when the board took it, and
     // returns 1 with *out set when the board sent a byte (room: the caller can take one).
     int step(const uint8_t *in, bool *took, bool room, uint8_t *out)
     {
+        // usb rises with every fifth sys rise (12 MHz): its inputs before, its outputs between
+        const unsigned um = (unsigned)(cyc % 5);
+        const bool frozen = usb && usb_link_frozen(usb);
+        if (usb && um == 0)
+            usb_link_drive(usb);
         top.serial_sink_valid = in && cyc >= next_rx;
         top.serial_sink_data = in ? *in : 0;
         top.serial_source_ready = room && cyc >= next_tx;
         if (gpio)
             gpio_link_cycle(gpio, top, cyc);
-        // sys falls, then rises; ef is high for sys cycles 0 and 1 of every 4, so it rises
-        // with every fourth sys rise and falls two sys cycles later
+        // sys falls, then rises; ef is high for the first half of every ef_div sys cycles, so it
+        // rises with every ef_div-th sys rise and falls ef_div/2 sys cycles later
         top.sys_clk = 0;
-        top.ef_clk = (cyc - 1) % ef_div < ef_div / 2;
+        top.ef_clk = frozen ? 0 : (cyc - 1) % ef_div < ef_div / 2;
+        top.usb_clk = um == 1 || um == 2;
         top.eval();
+        if (usb && um == 0)
+            usb_link_sample(usb);
         const bool rx_take = top.serial_sink_valid && top.serial_sink_ready;
         const bool tx_take = top.serial_source_valid && top.serial_source_ready;
         const uint8_t tx_byte = top.serial_source_data;
-        top.sys_clk = 1;
-        top.ef_clk = cyc % ef_div < ef_div / 2;
+        top.sys_clk = !frozen;   // a frozen board: its CPU and ef_raster stand still (usb_wire.h)
+        top.ef_clk = frozen ? 0 : cyc % ef_div < ef_div / 2;
+        top.usb_clk = um <= 2;
         top.eval();
         if (rx_take)
             next_rx = cyc + byte_cycles;
@@ -225,11 +241,12 @@ struct Board {
 int main(int argc, char **argv)
 {
     const char *dir = nullptr, *pty_link = nullptr, *link = nullptr, *listen_path = nullptr;
-    double baud = 3e6, max_seconds = 0, sys_clk = 30e6, ef_clk = 15e6;
+    double baud = 3e6, max_seconds = 0, sys_clk = 60e6, ef_clk = 15e6;
+    const char *usb_path = nullptr;
     uint64_t probe = 0;
     int quiet = 0;
     const char *gpio_path = nullptr;
-    unsigned gpio_step = 30;
+    unsigned gpio_step = 60;
     bool gpio_lockstep = false;
     for (int i = 1; i < argc; i++) {
         std::string a = argv[i];
@@ -276,6 +293,8 @@ int main(int argc, char **argv)
             gpio_step = (unsigned)std::atoi(argv[++i]);
         else if (a == "--gpio-lockstep")
             gpio_lockstep = true;
+        else if (a == "--usb" && i + 1 < argc)
+            usb_path = argv[++i];
         else
             usage();
     }
@@ -300,9 +319,23 @@ int main(int argc, char **argv)
         std::fprintf(stderr, "board_sim: --sys-clk must be an even multiple of --ef-clk\n");
         return 2;
     }
+    if (usb_path && sys_clk != 60e6) {
+        std::fprintf(stderr, "board_sim: --usb needs --sys-clk 60000000 (the usb clock is a fifth of it)\n");
+        return 2;
+    }
     bd.byte_cycles = baud > 0 ? (uint64_t)(sys_hz * 10 / baud) : 0;   // 10 bits a byte (8N1)
     const double t0 = now_s();
     bd.reset_pins();
+    if (usb_path) {   // served from the start: the device enumerates once its firmware is up
+        bd.usb =
+            usb_link_new(usb_path, UtmiPins{ &bd.top.utmi_rx_data, &bd.top.utmi_rx_valid, &bd.top.utmi_rx_active,
+                                             &bd.top.utmi_rx_error, &bd.top.utmi_tx_ready, &bd.top.utmi_line_state,
+                                             &bd.top.utmi_tx_data, &bd.top.utmi_tx_valid, &bd.top.utmi_term_select });
+        if (!bd.usb)
+            return 1;
+        std::printf("board_sim: usb on %s\n", usb_path);
+        std::fflush(stdout);
+    }
 
     // Readiness: the firmware answers an identify control frame (docs/board.md 5.5) before
     // the host's end exists, so a host never talks to a board still booting.
@@ -344,6 +377,7 @@ int main(int argc, char **argv)
     }
     const double t_ready = now_s();
     bd.gpio = gpio;   // (not while the harness's own identify runs: a lockstep GPIO host would hold it)
+
     const uint64_t cyc_ready = bd.cyc;
 
     // the host's end: a pseudo-terminal (default) or a unix socket
@@ -394,7 +428,7 @@ int main(int argc, char **argv)
     while (!stop_now) {
         if (bd.cyc == rst_until)
             bd.top.sys_rst = 0;
-        // host bytes in, board bytes out: every 256 cycles (a 3 Mbaud byte is 100)
+        // host bytes in, board bytes out: every 256 cycles (a 3 Mbaud byte is 200 at 60 MHz)
         if ((bd.cyc & 255) == 0) {
             if (listen_path && fd < 0) {
                 fd = accept4(lfd, nullptr, nullptr, SOCK_NONBLOCK);
@@ -461,6 +495,8 @@ int main(int argc, char **argv)
             }
             if ((bd.cyc & ((1u << 22) - 1)) == 0 && max_seconds > 0 && now_s() - t0 > max_seconds)
                 break;
+            if (bd.usb)
+                usb_link_poll(bd.usb);
         }
         bool took = false;
         uint8_t b = 0;
@@ -487,6 +523,11 @@ int main(int argc, char **argv)
                      played[F_RESET] ? ", reset" : "", played[F_UNPLUG] ? ", unplugged" : "");
     if (gpio)
         gpio_link_close(gpio, (double)sys_hz);
+    if (bd.usb) {
+        if (!quiet)
+            usb_link_report(bd.usb, bd.cyc / (double)sys_hz, dt);
+        usb_link_free(bd.usb);
+    }
     bd.top.final();
     if (link)
         unlink(link);

@@ -6,7 +6,7 @@
 // 8 clk, 9 valid, 10 take, 11 ctl: the levels the host drives after this call), the board applies
 // them to the SoC's pins, lets at least step_cycles sys cycles pass, samples its own pins and
 // answers 2 bytes (bits 7:0 q0..q7, 8 ready, 9 avail, 10 done, 11 err).  So each host step lasts
-// at least step_cycles of the board's time (default 30: 1 us at the simulation's 30 MHz, a fast
+// at least step_cycles of the board's time (default 60: 1 us at the simulation's 60 MHz, a fast
 // single-board computer's GPIO call), whatever the wall-clock speed of either side; the board's
 // clock runs on between steps as a real board's does (with lockstep it does not: the board's time
 // then advances only by steps, so throughput in board time is that of a host stepping every
@@ -26,7 +26,7 @@
 
 struct GpioLink {
     int lfd = -1, fd = -1;
-    unsigned step_cycles = 30;
+    unsigned step_cycles = 60;
     bool lockstep = false;
     bool serving = false;   // a step is under way: reply at reply_at
     uint64_t reply_at = 0;

@@ -29,7 +29,9 @@ bit=$dir/gateware/radiona_ulx3s.bit
 util=$(awk '/Device utilisation:/{buf=""; on=1; next} on && /^Info:[ \t]*[A-Z_0-9]+: /{buf=buf $0 "\n"; next} on{on=0} END{printf "%s", buf}' "$log")
 cell() { printf '%s\n' "$util" | awk -v c="$1" '$2 == c":" {print $3 $4}'; }
 lut4=$(awk '$2 == "LUT4" {v=$1} END{print v}' "$dir/gateware/radiona_ulx3s.rpt" 2>/dev/null)
-fmax=$(grep -E "Max frequency for clock" "$log" | tail -n 3)
+# (nextpnr prints them after placement and after routing: the last line of each clock)
+nclk=$(grep -E "Max frequency for clock" "$log" | sed "s/.*for clock *'\{0,1\}//; s/'\{0,1\}: .*//" | sort -u | wc -l)
+fmax=$(grep -E "Max frequency for clock" "$log" | tail -n "$nclk")
 if [ -z "$util" ] || [ -z "$fmax" ]; then
     echo "bitstream: no utilisation or Fmax in $log" >&2
     exit 1

@@ -4,10 +4,12 @@
 A VexRiscv (lite: rv32im with small caches) runs the firmware (board/firmware: the board engine
 board/ef_board.c) from the integrated ROM; ef_raster is the peripheral of
 ef_periph.py on its own clock `ef`; the UART is LiteX's, at 3 Mbaud; the GPIO bus slave of
-ef_gpio.py on the header (docs/board-gpio.md; --no-gpio leaves it out).
+ef_gpio.py on the header (docs/board-gpio.md; --no-gpio leaves it out); the USB
+device of ef_usb.py (LUNA, usb_core.py) on its clocks `usb` (12 MHz) and, on
+a ULX3S, `usb_io` (48 MHz), unless --no-usb.
 
     soc.py --target ulx3s-25f|ulx3s-85f|sim --out DIR [--ns 8|16] [--rom FIRMWARE.bin]
-           [--headers-only] [--sys-clk HZ] [--ef-clk HZ]
+           [--headers-only] [--sys-clk HZ] [--ef-clk HZ] [--no-usb] [--usb-vid-pid V:P]
 
 --headers-only writes the software headers (DIR/software/include/generated:
 csr.h, soc.h, mem.h) and stops: the firmware is built against them, then a
@@ -18,6 +20,7 @@ on PATH, build/fpga-bin's shims of the yowasp tools).
 
 import argparse
 import os
+import subprocess
 import sys
 
 from migen import *
@@ -31,6 +34,7 @@ from litex.soc.integration.soc_core import SoCCore
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from ef_periph import EFRaster  # noqa: E402
 from ef_gpio import BOARD_SIGNALS, HOST_SIGNALS, EFGpioBus  # noqa: E402
+from ef_usb import UTMI_PORTS, EFUSB  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
@@ -59,6 +63,17 @@ class _CRGULX3S(Module):
         pll.register_clkin(clk25, 25e6)
         pll.create_clkout(self.cd_sys, sys_clk, margin=0)
         pll.create_clkout(self.cd_ef, ef_clk, margin=0)
+        # the USB device's clocks (US2): 12 MHz, and 48 MHz for LUNA's gateware PHY, phase related,
+        # from a second PLL (the first has no output left)
+        self.clock_domains.cd_usb = ClockDomain()
+        self.clock_domains.cd_usb_io = ClockDomain()
+        self.submodules.usb_pll = usb_pll = ECP5PLL()
+        self.comb += usb_pll.reset.eq(rst)
+        usb_pll.register_clkin(clk25, 25e6)
+        # 48 MHz is not reachable exactly from 25 MHz within the PLL's PFD and VCO ranges: the
+        # nearest is 47.917 MHz (VCO 575 MHz / 12), -0.17 %, inside full speed's +-0.25 %
+        usb_pll.create_clkout(self.cd_usb_io, 48e6, margin=2e-3)
+        usb_pll.create_clkout(self.cd_usb, 12e6, margin=2e-3)
         # keep the ESP32 from resetting the FPGA (as litex_boards' target does)
         self.comb += platform.request("wifi_gpio0").eq(1)
 
@@ -103,6 +118,9 @@ _sim_io = [
         Subsignal("sink_valid", Pins(1)),
         Subsignal("sink_ready", Pins(1)),
         Subsignal("sink_data", Pins(8))),
+    # the USB device's clock (12 MHz) and its core's UTMI side (board/sim/usb_link.cpp drives it)
+    ("usb_clk", 0, Pins(1)),
+    ("utmi", 0, *[Subsignal(n, Pins(w)) for n, w, _ in UTMI_PORTS]),
 ]
 
 
@@ -110,16 +128,18 @@ class _CRGSim(Module):
     def __init__(self, platform):
         self.clock_domains.cd_sys = ClockDomain()
         self.clock_domains.cd_ef = ClockDomain()
+        self.clock_domains.cd_usb = ClockDomain()
         rst = platform.request("sys_rst")
         self.comb += [
             self.cd_sys.clk.eq(platform.request("sys_clk")), self.cd_sys.rst.eq(rst),
             self.cd_ef.clk.eq(platform.request("ef_clk")), self.cd_ef.rst.eq(rst),
+            self.cd_usb.clk.eq(platform.request("usb_clk")), self.cd_usb.rst.eq(rst),
         ]
 
 
 class EdgeflagSoC(SoCCore):
     def __init__(self, target, ns, rom_init, sys_clk, ef_clk, main_ram, cpu_variant="lite", e_max=E_MAX,
-                 gpio=True):
+                 gpio=True, usb_core=None):
         if target == "sim":
             from litex.build.sim import SimPlatform
             platform = SimPlatform("SIM", _sim_io)
@@ -152,6 +172,14 @@ class EdgeflagSoC(SoCCore):
                 platform.add_extension(_gpio_ulx3s_io())
             self.gpiobus = EFGpioBus(platform.request("ef_gpio"))
         self.ef = EFRaster(ns=ns, w_max=W_MAX, h_max=H_MAX, e_max=e_max)
+        if usb_core:
+            # the USB device of docs/board-usb.md (board/soc/ef_usb.py), its core's Verilog written
+            # by board/soc/usb_core.py (LUNA, Amaranth) at build time
+            platform.add_source(usb_core)
+            if target == "sim":
+                self.usb = EFUSB(utmi=platform.request("utmi"))
+            else:
+                self.usb = EFUSB(pads=platform.request("usb"))
         for name, value in [("EF_NS", ns), ("EF_W_MAX", W_MAX), ("EF_H_MAX", H_MAX), ("EF_E_MAX", e_max),
                             ("EF_SYS_CLK", int(sys_clk)), ("EF_EF_CLK", int(ef_clk)), ("EF_BAUD", BAUD)]:
             self.add_constant(name, value)
@@ -169,6 +197,9 @@ class EdgeflagSoC(SoCCore):
         if target != "sim":
             self.platform.add_period_constraint(crg.cd_ef.clk, 1e9 / ef_clk)
             self.platform.add_period_constraint(crg.cd_sys.clk, 1e9 / sys_clk)
+            if usb_core:
+                self.platform.add_period_constraint(crg.cd_usb.clk, 1e9 / 12e6)
+                self.platform.add_period_constraint(crg.cd_usb_io.clk, 1e9 / 48e6)
 
 
 def main():
@@ -179,8 +210,9 @@ def main():
     ap.add_argument("--rom", help="firmware image for the ROM")
     ap.add_argument("--headers-only", action="store_true")
     ap.add_argument("--sys-clk", type=float, default=None,
-                    help="sys clock (a multiple of 3 MHz): default 30 MHz (the 60 MHz placement reached "
-                         "44.68 MHz, docs/board-ulx3s.md), in the simulation too (board_sim --sys-clk)")
+                    help="sys clock (a multiple of 3 MHz): default 30 MHz on a ULX3S (the 60 MHz placement "
+                         "reached 44.68 MHz, docs/board-ulx3s.md), 60 MHz in the simulation (its USB clock is a "
+                         "fifth of it; --sys-clk 30e6 and board_sim --sys-clk 30e6 simulate the board's clocks)")
     ap.add_argument("--ef-clk", type=float, default=15e6)
     ap.add_argument("--main-ram", type=lambda s: int(s, 0), default=None,
                     help="block RAM main RAM bytes (sim default 4 MiB; the board: 0, the heap in SRAM)")
@@ -189,15 +221,29 @@ def main():
     ap.add_argument("--e-max", type=int, default=E_MAX, help="ef_raster's E_MAX (edges per shape)")
     ap.add_argument("--seed", type=int, default=1, help="nextpnr's placement seed")
     ap.add_argument("--no-gpio", action="store_true", help="leave the GPIO bus slave out (docs/board-gpio.md)")
+    ap.add_argument("--no-usb", action="store_true",
+                    help="without the USB device (docs/board-ulx3s.md: utilisation with and without it)")
+    ap.add_argument("--usb-vid-pid", default="1209:0001", help="the USB device's VID:PID (docs/board-usb.md)")
     a = ap.parse_args()
     if a.sys_clk is None:
-        a.sys_clk = 30e6
+        a.sys_clk = 60e6 if a.target == "sim" else 30e6
     if a.sys_clk % 3e6:
         sys.exit("soc.py: --sys-clk must be a multiple of 3 MHz (the UART's 3 Mbaud divides it exactly)")
     rom = get_mem_data(a.rom, endianness="little") if a.rom else []
     main_ram = a.main_ram if a.main_ram is not None else (0x400000 if a.target == "sim" else 0)
+    usb_core = None
+    if not a.no_usb:
+        # LUNA's device as Verilog (a build output): Amaranth runs Yosys, the packaged one of
+        # tools/install-fpga.sh (build/fpga-bin)
+        usb_core = os.path.abspath(os.path.join(a.out, "gateware", "ef_usb_core.v"))
+        os.makedirs(os.path.dirname(usb_core), exist_ok=True)
+    if usb_core and not a.headers_only:  # the headers need only its CSRs
+        env = dict(os.environ, PATH=os.path.join(ROOT, "build", "fpga-bin") + os.pathsep + os.environ["PATH"])
+        subprocess.run([sys.executable, os.path.join(HERE, "usb_core.py"), "--out", usb_core,
+                        "--phy", "utmi" if a.target == "sim" else "gateware", "--vid-pid", a.usb_vid_pid],
+                       check=True, env=env)
     soc = EdgeflagSoC(a.target, a.ns, rom, a.sys_clk, a.ef_clk, main_ram, a.cpu_variant, a.e_max,
-                      gpio=not a.no_gpio)
+                      gpio=not a.no_gpio, usb_core=usb_core)
     if a.target == "sim":
         # Only the Verilog and the memory images: board/sim has its own Verilator harness, so
         # LiteX's simulator (its C modules, its tap/ethernet data package) is not used.

@@ -3,4 +3,4 @@
 # rtl-test plants SLB's forwarding fault (fwd) instead; kept so that the
 # recipe is still checked to apply.
 # file: ef_aet.v
-s/^    wire \[RW-1:0\] ring_rd = (lw_v \&\& lw_addr == rq_addr) ? lw_data : ring_q;$/    wire [RW-1:0] ring_rd = ring_q;/
+s/^    wire          fwd_hit = lw_v \&\& (lw_addr == rq_addr);$/    wire          fwd_hit = 1'b0;/

@@ -114,10 +114,10 @@ module tb_etm #(
                         end
                         a = a + 1;
                     end
-                    // a row with et_rd has its first plot L_PLOT cycles after the
-                    // cycle that follows its last et_rd (docs/microarch.md section 4,
+                    // a row with et_rd has its first plot L_REC + L_PLOT cycles after
+                    // the cycle that follows its last et_rd (docs/microarch.md section 4,
                     // item 4); one without starts L_PLOT cycles before its first plot
-                    if (!(a > 0 && rd_mem[a-1][RWD-1 -: 48] + 1 + `EF_L_PLOT == pl_mem[p][PWD-1 -: 48] &&
+                    if (!(a > 0 && rd_mem[a-1][RWD-1 -: 48] + 1 + `EF_L_REC + `EF_L_PLOT == pl_mem[p][PWD-1 -: 48] &&
                           rd_mem[a-1][`EF_ET_RD_ROW_MSB:`EF_ET_RD_ROW_LSB] ==
                           pl_mem[p][`EF_PLOT_ROW_MSB:`EF_PLOT_ROW_LSB])) begin
                         rq_row[nreq] = pl_mem[p][`EF_PLOT_ROW_MSB:`EF_PLOT_ROW_LSB];

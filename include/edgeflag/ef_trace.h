@@ -46,6 +46,7 @@ typedef enum ef_iface {
 #define EF_L_SETUP 33 /* seg -> et_wr: 2 + 30 divider stages + 1 */
 #define EF_L_COV 3    /* span accepted (overlap: started) -> first pix */
 #define EF_L_PLOT 2   /* a row's last et_rd cycle (or its start, without one) -> its first plot: PLOT's two registers */
+#define EF_L_REC 1    /* a row with new edges: the AET's register of the last record, before the first plot */
 #define EF_SPANQ 16   /* overlap schedule: spans COV's queue holds (section 6) */
 
 /* The schedule the trace stamps: the reference one (docs/microarch.md

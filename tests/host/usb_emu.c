@@ -35,6 +35,12 @@
  *                       protocol=N        identify answers with this protocol version
  *                       identify-stall=N  the first N identify requests stall (re-enumeration)
  *                       eacces            the device node is root-only and commands run as nobody
+ *     --soc SOCKET      the board is the simulated SoC (board/sim/board_sim.cpp --usb SOCKET): each
+ *                       URB goes to its USB core's host controller (board/sim/usb_link.cpp), which
+ *                       carries it out as full-speed transactions on the gateware's UTMI side;
+ *                       enumeration happens here, and libusb sees the gateware's descriptors.
+ *                       Faults: unplug-at, unplug-in, stall-at (the board's CPU stops: the core
+ *                       NAKs), corrupt-out, eacces; the report's board counters come from STATUS.
  *     --report FILE     what the board saw, as key=value lines (written at the end)
  *     --dut-log FILE    every command word the DUT received, raw, in order
  *   Exit status: the last command's; 70 when the emulation itself failed.
@@ -49,8 +55,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <poll.h>
+#include <sys/socket.h>
 #include <sys/stat.h>
 #include <sys/types.h>
+#include <sys/un.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
@@ -62,6 +71,7 @@
 #include "ef_board.h"
 #include "ef_frame.h"
 #include "usb_ids.h"
+#include "usb_wire.h"
 
 #define MAX_BOARDS 4
 #define MAX_RUNS 8
@@ -70,6 +80,7 @@ typedef struct urb_rec {
     UMockdevIoctlData *urb; /* the client's struct usbdevfs_urb, resolved */
     UMockdevIoctlData *buf; /* its buffer, resolved under urb */
     int status, actual;
+    uint32_t id; /* --soc: the transfer's id on the simulated board's socket */
     struct urb_rec *next;
 } urb_rec;
 
@@ -104,6 +115,19 @@ typedef struct emu_board {
     /* counters for the report */
     long long out_bytes, in_bytes, urbs, discards;
     long identifies, statuses, resets, ctrl_other, rx_refused, acks_dropped, frames_corrupted;
+
+    /* --soc: the simulated board's USB core (board/sim/usb_link.cpp) */
+    int soc_fd;
+    uint8_t *srx;
+    size_t srx_len, srx_cap;
+    urb_rec *pend_soc; /* URBs the simulated board has (any endpoint), in submission order */
+    uint32_t next_id;
+    long long out_submitted; /* bulk OUT bytes handed to the board (the byte-position faults) */
+    uint32_t sync_id;        /* a transfer this program waits for (enumeration, the report) */
+    int sync_done, sync_status, sync_actual;
+    uint8_t sync_data[512];
+    char desc_hex[1024], manufacturer[64], product[64];
+    int frozen;
 } emu_board;
 
 typedef struct emu {
@@ -114,6 +138,7 @@ typedef struct emu {
     int nboards;
     FILE *dut_log;
     int verbose;
+    const char *soc; /* --soc SOCKET: the board is the simulated SoC's USB core */
 } emu;
 
 static void die(const char *fmt, const char *arg)
@@ -291,6 +316,8 @@ static void pull_from_board(emu_board *eb)
  * burst is a multiple of 512 bytes), so an IN URB completes with what the
  * board had, never waiting to be full. */
 static void unplug(emu_board *eb);
+static void nap_ms(int ms);
+static void soc_send(emu_board *eb, uint32_t op, uint32_t id, uint32_t a, uint32_t b, const uint8_t *d, uint32_t len);
 
 static void serve_in(emu_board *eb)
 {
@@ -329,6 +356,15 @@ static void unplug(emu_board *eb)
      * remove while the node still exists, as with a real kernel. */
     eb->gone = 1;
     urb_fail_all(eb, -ENODEV);
+    if (eb->emu->soc) {
+        /* the simulated board drops them (their completions, if any, are ignored) */
+        urb_rec *r;
+        while ((r = urb_pop(&eb->pend_soc))) {
+            soc_send(eb, USBW_CANCEL, r->id, 0, 0, NULL, 0);
+            r->status = -ENODEV, r->actual = 0;
+            urb_append(&eb->done, r);
+        }
+    }
     umockdev_testbed_uevent(eb->emu->tb, eb->syspath, "remove");
     umockdev_testbed_remove_device(eb->emu->tb, eb->syspath);
     if (eb->emu->verbose)
@@ -442,6 +478,273 @@ static int control(emu_board *eb, uint8_t *buf, int buflen)
     return -EPIPE; /* unknown request: stall */
 }
 
+/* ----------------------------------- --soc: the simulated SoC's USB core */
+
+/* The board is the Verilated SoC (board/sim/board_sim.cpp --usb SOCKET): each
+ * URB becomes one transfer on the socket (board/sim/usb_wire.h), which the
+ * simulated board's host controller (board/sim/usb_link.cpp) carries out as
+ * full-speed transactions on the UTMI side of the SoC's USB core (LUNA's
+ * device, board/soc/usb_core.py) and completes.  Enumeration (bus reset,
+ * descriptors, SET_ADDRESS, SET_CONFIGURATION) is done here when the board is
+ * plugged in, as the kernel would, and the sysfs descriptors umockdev shows
+ * libusb are the ones the gateware returned. */
+
+#define SOC_SYNC 0x80000000u /* ids of the transfers this program waits for */
+
+static void soc_send(emu_board *eb, uint32_t op, uint32_t id, uint32_t a, uint32_t b, const uint8_t *d, uint32_t len)
+{
+    usbw_hdr h = { op, id, a, b, len };
+    const uint8_t *parts[2] = { (const uint8_t *)&h, d };
+    size_t lens[2] = { sizeof h, len };
+    for (int k = 0; k < 2; k++)
+        for (size_t off = 0; off < lens[k];) {
+            ssize_t n = write(eb->soc_fd, parts[k] + off, lens[k] - off);
+            if (n > 0)
+                off += (size_t)n;
+            else if (n < 0 && errno != EINTR && errno != EAGAIN)
+                die("the simulated board's socket: %s", strerror(errno));
+        }
+}
+
+static void soc_completed(emu_board *eb, const usbw_hdr *h, const uint8_t *d)
+{
+    if (h->id & SOC_SYNC) {
+        if (h->id == eb->sync_id) {
+            eb->sync_done = 1;
+            eb->sync_status = (int32_t)h->a;
+            eb->sync_actual = (int)h->b;
+            memcpy(eb->sync_data, d, h->len < sizeof eb->sync_data ? h->len : sizeof eb->sync_data);
+        }
+        return;
+    }
+    urb_rec **pp = &eb->pend_soc;
+    while (*pp && (*pp)->id != h->id)
+        pp = &(*pp)->next;
+    urb_rec *r = *pp;
+    if (!r)
+        return; /* failed already (unplugged) */
+    *pp = r->next;
+    struct usbdevfs_urb *u = (struct usbdevfs_urb *)r->urb->data;
+    r->status = (int32_t)h->a;
+    r->actual = (int)h->b;
+    if (h->len) {
+        size_t at = u->type == USBDEVFS_URB_TYPE_CONTROL ? 8 : 0;
+        size_t n = h->len <= (size_t)u->buffer_length - at ? h->len : (size_t)u->buffer_length - at;
+        memcpy((uint8_t *)r->buf->data + at, d, n);
+    }
+    if (u->type == USBDEVFS_URB_TYPE_BULK && u->endpoint == EF_USB_EP_IN) {
+        faults *f = &eb->emu->f;
+        if (f->unplug_in > 0 && eb->in_bytes + r->actual > f->unplug_in) {
+            /* this transfer never arrives: the board is gone while results flow */
+            f->unplug_in = 0;
+            r->next = eb->pend_soc;
+            eb->pend_soc = r;
+            unplug(eb);
+            return;
+        }
+        eb->in_bytes += r->actual;
+    } else if (u->type == USBDEVFS_URB_TYPE_BULK) {
+        eb->out_bytes += r->actual;
+    }
+    urb_append(&eb->done, r);
+}
+
+/* Reads what the simulated board sent; waits up to wait_ms for something. */
+static void soc_pump(emu_board *eb, int wait_ms)
+{
+    struct pollfd pfd = { eb->soc_fd, POLLIN, 0 };
+    if (poll(&pfd, 1, wait_ms) <= 0)
+        return;
+    for (;;) {
+        grow(&eb->srx, &eb->srx_cap, eb->srx_len + 65536);
+        ssize_t n = read(eb->soc_fd, eb->srx + eb->srx_len, eb->srx_cap - eb->srx_len);
+        if (n > 0) {
+            eb->srx_len += (size_t)n;
+            continue;
+        }
+        if (n == 0)
+            die("%s", "the simulated board closed its USB socket (did board_sim stop?)");
+        if (errno == EAGAIN || errno == EWOULDBLOCK)
+            break;
+        if (errno != EINTR)
+            die("the simulated board's socket: %s", strerror(errno));
+    }
+    size_t at = 0;
+    while (eb->srx_len - at >= sizeof(usbw_hdr)) {
+        usbw_hdr h;
+        memcpy(&h, eb->srx + at, sizeof h);
+        if (eb->srx_len - at - sizeof h < h.len)
+            break;
+        if (h.op == USBW_COMPLETE || h.op == USBW_BUS_RESET) {
+            if (h.op == USBW_BUS_RESET)
+                h.a = 0, h.b = 0;
+            soc_completed(eb, &h, eb->srx + at + sizeof h);
+        }
+        at += sizeof h + h.len;
+    }
+    memmove(eb->srx, eb->srx + at, eb->srx_len - at);
+    eb->srx_len -= at;
+}
+
+/* One transfer this program waits for: returns the bytes done, status in *st. */
+static int soc_sync(emu_board *eb, uint32_t op, uint32_t a, uint32_t b, const uint8_t *d, uint32_t len, int *st)
+{
+    eb->sync_id = SOC_SYNC | ++eb->next_id;
+    eb->sync_done = 0;
+    soc_send(eb, op, eb->sync_id, a, b, d, len);
+    for (int waited = 0; !eb->sync_done; waited += 100) {
+        if (waited > 600000)
+            die("%s", "the simulated board did not complete a transfer in 600 s");
+        soc_pump(eb, 100);
+    }
+    *st = eb->sync_status;
+    return eb->sync_actual;
+}
+
+static int soc_control(emu_board *eb, uint8_t rt, uint8_t req, uint16_t value, uint16_t index, uint16_t len, int *st)
+{
+    uint8_t setup[8] = { rt,
+                         req,
+                         (uint8_t)value,
+                         (uint8_t)(value >> 8),
+                         (uint8_t)index,
+                         (uint8_t)(index >> 8),
+                         (uint8_t)len,
+                         (uint8_t)(len >> 8) };
+    return soc_sync(eb, USBW_SUBMIT, USBW_CONTROL, len, setup, 8, st);
+}
+
+static void ascii_of(const uint8_t *desc, int n, char *out, size_t cap)
+{
+    size_t k = 0;
+    for (int i = 2; i + 1 < n && k + 1 < cap; i += 2)
+        out[k++] = desc[i] >= 0x20 && desc[i] < 0x7F && !desc[i + 1] ? (char)desc[i] : '?';
+    out[k] = 0;
+}
+
+/* What the kernel does with a device that appears: a bus reset, the device
+ * descriptor at address 0, SET_ADDRESS, the descriptors and strings, then
+ * configuration 1 (a vendor-class interface has no driver to bind). */
+static void soc_enumerate(emu_board *eb)
+{
+    int st, n;
+    soc_sync(eb, USBW_BUS_RESET, 0, 0, NULL, 0, &st);
+    n = soc_control(eb, 0x80, 6, 0x0100, 0, 64, &st);
+    if (st || n < 8)
+        die("%s", "the simulated board's USB core does not answer GET_DESCRIPTOR(device) at address 0");
+    soc_control(eb, 0x00, 5, (uint16_t)eb->dev, 0, 0, &st);
+    if (st)
+        die("%s", "the simulated board's USB core refused SET_ADDRESS");
+    char *h = eb->desc_hex;
+    n = soc_control(eb, 0x80, 6, 0x0100, 0, 18, &st);
+    if (st || n != 18)
+        die("%s", "GET_DESCRIPTOR(device) at the new address failed");
+    for (int i = 0; i < n; i++)
+        h += sprintf(h, "%02x", eb->sync_data[i]);
+    n = soc_control(eb, 0x80, 6, 0x0200, 0, 9, &st);
+    if (st || n != 9)
+        die("%s", "GET_DESCRIPTOR(configuration) failed");
+    const uint16_t total = (uint16_t)(eb->sync_data[2] | eb->sync_data[3] << 8);
+    n = soc_control(eb, 0x80, 6, 0x0200, 0, total, &st);
+    if (st || n != total || total > 255)
+        die("%s", "GET_DESCRIPTOR(configuration, whole) failed");
+    for (int i = 0; i < n; i++)
+        h += sprintf(h, "%02x", eb->sync_data[i]);
+    char *strs[3] = { eb->manufacturer, eb->product, eb->serial };
+    size_t caps[3] = { sizeof eb->manufacturer, sizeof eb->product, sizeof eb->serial };
+    for (int i = 0; i < 3; i++) {
+        n = soc_control(eb, 0x80, 6, (uint16_t)(0x0300 | (i + 1)), 0x0409, 255, &st);
+        if (st || n < 2)
+            die("%s", "GET_DESCRIPTOR(string) failed");
+        ascii_of(eb->sync_data, n, strs[i], caps[i]);
+    }
+    soc_control(eb, 0x00, 9, 1, 0, 0, &st);
+    if (st)
+        die("%s", "SET_CONFIGURATION(1) failed");
+    if (eb->emu->verbose)
+        fprintf(stderr, "usb_emu: enumerated the simulated board at %d:%d: serial %s, descriptors %s\n", eb->bus,
+                eb->dev, eb->serial, eb->desc_hex);
+}
+
+static void soc_connect(emu_board *eb, const char *path)
+{
+    struct sockaddr_un sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sun_family = AF_UNIX;
+    if (strlen(path) >= sizeof sa.sun_path)
+        die("--soc %s: path too long", path);
+    strcpy(sa.sun_path, path);
+    for (int tries = 0;; tries++) {
+        eb->soc_fd = socket(AF_UNIX, SOCK_STREAM, 0);
+        if (eb->soc_fd < 0)
+            die("socket: %s", strerror(errno));
+        if (connect(eb->soc_fd, (struct sockaddr *)&sa, sizeof sa) == 0)
+            break;
+        close(eb->soc_fd);
+        if (tries > 600)
+            die("cannot connect to the simulated board's USB socket %s", path);
+        nap_ms(100);
+    }
+    fcntl(eb->soc_fd, F_SETFL, fcntl(eb->soc_fd, F_GETFL) | O_NONBLOCK);
+}
+
+/* A URB for the simulated board. */
+static void soc_submit(emu_board *eb, urb_rec *r)
+{
+    faults *f = &eb->emu->f;
+    struct usbdevfs_urb *u = (struct usbdevfs_urb *)r->urb->data;
+    uint8_t *d = r->buf->data;
+    r->id = ++eb->next_id & ~SOC_SYNC;
+    if (u->type == USBDEVFS_URB_TYPE_CONTROL) {
+        const uint16_t wlen = (uint16_t)(d[6] | d[7] << 8);
+        if (d[0] == EF_USB_RT_IN && d[1] == EF_USB_REQ_IDENTIFY)
+            eb->identifies++;
+        else if (d[0] == EF_USB_RT_IN && d[1] == EF_USB_REQ_STATUS)
+            eb->statuses++;
+        else if (d[0] == EF_USB_RT_OUT && d[1] == EF_USB_REQ_RESET)
+            eb->resets++;
+        else
+            eb->ctrl_other++;
+        const uint32_t out = (d[0] & 0x80) ? 0 : wlen;
+        urb_append(&eb->pend_soc, r);
+        soc_send(eb, USBW_SUBMIT, r->id, USBW_CONTROL, wlen, d, 8 + out);
+        return;
+    }
+    if (u->endpoint == EF_USB_EP_OUT) {
+        const long long start = eb->out_submitted, n = u->buffer_length;
+        if (f->corrupt_out >= start && f->corrupt_out < start + n)
+            d[f->corrupt_out - start] ^= 0x01;
+        if (f->unplug_at > 0 && start + n > f->unplug_at) {
+            f->unplug_at = 0; /* this transfer never arrives */
+            r->status = -ENODEV, r->actual = 0;
+            urb_append(&eb->done, r);
+            unplug(eb);
+            return;
+        }
+        eb->out_submitted += n;
+        urb_append(&eb->pend_soc, r);
+        soc_send(eb, USBW_SUBMIT, r->id, USBW_BULK | (uint32_t)EF_USB_EP_OUT << 8, 0, d, (uint32_t)n);
+        if (f->stall_at > 0 && eb->out_submitted >= f->stall_at) {
+            f->stall_at = 0; /* the board's CPU stops: the core NAKs; the next command finds it running */
+            eb->frozen = 1;
+            soc_send(eb, USBW_FREEZE, 0, 1, 0, NULL, 0);
+        }
+        return;
+    }
+    urb_append(&eb->pend_soc, r);
+    soc_send(eb, USBW_SUBMIT, r->id, USBW_BULK | (uint32_t)EF_USB_EP_IN << 8, (uint32_t)u->buffer_length, NULL, 0);
+}
+
+/* The board's STATUS (docs/board-usb.md 3.2) for the report. */
+static int soc_status(emu_board *eb, uint8_t out[EF_USB_STATUS_LEN])
+{
+    int st, n = soc_control(eb, EF_USB_RT_IN, EF_USB_REQ_STATUS, 0, 0, EF_USB_STATUS_LEN, &st);
+    if (st || n != EF_USB_STATUS_LEN)
+        return -1;
+    memcpy(out, eb->sync_data, EF_USB_STATUS_LEN);
+    return 0;
+}
+
 /* --------------------------------------------------------- usbfs ioctls */
 
 static int find_addr(urb_rec **list, gulong addr, urb_rec **out)
@@ -512,7 +815,11 @@ static gboolean on_ioctl(UMockdevIoctlBase *handler, UMockdevIoctlClient *client
         r->buf = umockdev_ioctl_data_resolve(r->urb, G_STRUCT_OFFSET(struct usbdevfs_urb, buffer),
                                              (gsize)u->buffer_length, NULL);
         eb->urbs++;
-        if (u->type == USBDEVFS_URB_TYPE_CONTROL && u->buffer_length >= 8) {
+        if (e->soc &&
+            ((u->type == USBDEVFS_URB_TYPE_CONTROL && u->buffer_length >= 8) ||
+             (u->type == USBDEVFS_URB_TYPE_BULK && (u->endpoint == EF_USB_EP_OUT || u->endpoint == EF_USB_EP_IN)))) {
+            soc_submit(eb, r);
+        } else if (u->type == USBDEVFS_URB_TYPE_CONTROL && u->buffer_length >= 8) {
             int n = control(eb, r->buf->data, u->buffer_length);
             r->status = n < 0 ? n : 0;
             r->actual = n < 0 ? 0 : n;
@@ -539,7 +846,10 @@ static gboolean on_ioctl(UMockdevIoctlBase *handler, UMockdevIoctlClient *client
     }
     case USBDEVFS_REAPURB:
     case USBDEVFS_REAPURBNDELAY: {
-        serve_in(eb);
+        if (e->soc)
+            soc_pump(eb, 0);
+        else
+            serve_in(eb);
         urb_rec *r = urb_pop(&eb->done);
         if (!r) {
             /* The node is a plain file, so poll always says "ready" and
@@ -564,7 +874,18 @@ static gboolean on_ioctl(UMockdevIoctlBase *handler, UMockdevIoctlClient *client
          * libusb's cancel and timeout never finish. */
         gulong addr = *(gulong *)arg->data;
         urb_rec *r;
-        if (find_addr(&eb->pend_in, addr, &r) || find_addr(&eb->pend_out, addr, &r)) {
+        if (e->soc) {
+            /* the simulated board completes it with what it has (-ENOENT), reaped as usual */
+            for (r = eb->pend_soc; r && r->urb->client_addr != addr; r = r->next)
+                ;
+            if (r) {
+                soc_send(eb, USBW_CANCEL, r->id, 0, 0, NULL, 0);
+                eb->discards++;
+                umockdev_ioctl_client_complete(client, 0, 0);
+            } else {
+                umockdev_ioctl_client_complete(client, -1, EINVAL);
+            }
+        } else if (find_addr(&eb->pend_in, addr, &r) || find_addr(&eb->pend_out, addr, &r)) {
             r->status = -ENOENT, r->actual = 0;
             urb_append(&eb->done, r);
             eb->discards++;
@@ -591,36 +912,73 @@ static gboolean on_ioctl(UMockdevIoctlBase *handler, UMockdevIoctlClient *client
 static void plug(emu_board *eb)
 {
     emu *e = eb->emu;
-    char node[64], desc[2048];
+    char node[64], desc[4096];
     snprintf(node, sizeof node, "/dev/bus/usb/%03d/%03d", eb->bus, eb->dev);
-    /* Device, configuration, interface (vendor class 0xff), bulk OUT 0x01 and
+    if (e->soc) {
+        /* the device the gateware is: its descriptors and strings as it returned them */
+        pthread_mutex_lock(&e->mu);
+        soc_enumerate(eb);
+        pthread_mutex_unlock(&e->mu);
+        unsigned v[3];
+        for (int k = 0; k < 3; k++) {
+            unsigned lo, hi;
+            sscanf(eb->desc_hex + 16 + 4 * k, "%2x%2x", &lo, &hi);
+            v[k] = lo | hi << 8;
+        }
+        snprintf(desc, sizeof desc,
+                 "P: /devices/usb%d/%d-%d\n"
+                 "N: bus/usb/%03d/%03d\n"
+                 "E: SUBSYSTEM=usb\n"
+                 "E: DEVTYPE=usb_device\n"
+                 "E: DRIVER=usb\n"
+                 "E: PRODUCT=%x/%x/%x\n"
+                 "E: BUSNUM=%03d\n"
+                 "E: DEVNUM=%03d\n"
+                 "E: DEVNAME=%s\n"
+                 "A: busnum=%d\\n\n"
+                 "A: devnum=%d\\n\n"
+                 "A: bConfigurationValue=1\\n\n"
+                 "A: bNumConfigurations=1\\n\n"
+                 "A: speed=12\\n\n"
+                 "A: idVendor=%04x\\n\n"
+                 "A: idProduct=%04x\\n\n"
+                 "A: manufacturer=%s\\n\n"
+                 "A: product=%s\\n\n"
+                 "A: serial=%s\\n\n"
+                 "H: descriptors=%s\n",
+                 eb->bus, eb->bus, eb->index + 1, eb->bus, eb->dev, v[0], v[1], v[2], eb->bus, eb->dev, node, eb->bus,
+                 eb->dev, v[0], v[1], eb->manufacturer, eb->product, eb->serial, eb->desc_hex);
+    } else {
+        /* Device, configuration, interface (vendor class 0xff), bulk OUT 0x01 and
      * bulk IN 0x81 of 512 bytes: docs/board-usb.md section 2. */
-    snprintf(desc, sizeof desc,
-             "P: /devices/usb%d/%d-%d\n"
-             "N: bus/usb/%03d/%03d\n"
-             "E: SUBSYSTEM=usb\n"
-             "E: DEVTYPE=usb_device\n"
-             "E: DRIVER=usb\n"
-             "E: PRODUCT=1209/1/100\n"
-             "E: BUSNUM=%03d\n"
-             "E: DEVNUM=%03d\n"
-             "E: DEVNAME=%s\n"
-             "A: busnum=%d\\n\n"
-             "A: devnum=%d\\n\n"
-             "A: bConfigurationValue=1\\n\n"
-             "A: bNumConfigurations=1\\n\n"
-             "A: speed=480\\n\n"
-             "A: idVendor=1209\\n\n"
-             "A: idProduct=0001\\n\n"
-             "A: manufacturer=edgeflag\\n\n"
-             "A: product=edgeflag board (emulated)\\n\n"
-             "A: serial=%s\\n\n"
-             "H: descriptors=120100020000004009120100000101020301"
-             "090220000101008032"
-             "0904000002ff000000"
-             "07050102000200"
-             "07058102000200\n",
-             eb->bus, eb->bus, eb->index + 1, eb->bus, eb->dev, eb->bus, eb->dev, node, eb->bus, eb->dev, eb->serial);
+        snprintf(desc, sizeof desc,
+                 "P: /devices/usb%d/%d-%d\n"
+                 "N: bus/usb/%03d/%03d\n"
+                 "E: SUBSYSTEM=usb\n"
+                 "E: DEVTYPE=usb_device\n"
+                 "E: DRIVER=usb\n"
+                 "E: PRODUCT=1209/1/100\n"
+                 "E: BUSNUM=%03d\n"
+                 "E: DEVNUM=%03d\n"
+                 "E: DEVNAME=%s\n"
+                 "A: busnum=%d\\n\n"
+                 "A: devnum=%d\\n\n"
+                 "A: bConfigurationValue=1\\n\n"
+                 "A: bNumConfigurations=1\\n\n"
+                 "A: speed=480\\n\n"
+                 "A: idVendor=1209\\n\n"
+                 "A: idProduct=0001\\n\n"
+                 "A: manufacturer=edgeflag\\n\n"
+                 "A: product=edgeflag board (emulated)\\n\n"
+                 "A: serial=%s\\n\n"
+                 "H: descriptors=120100020000004009120100000101020301"
+                 "090220000101008032"
+                 "0904000002ff000000"
+                 "07050102000200"
+                 "07058102000200\n",
+                 eb->bus, eb->bus, eb->index + 1, eb->bus, eb->dev, eb->bus, eb->dev, node, eb->bus, eb->dev,
+                 eb->serial);
+    }
     if (eb->handler)
         g_object_unref(eb->handler);
     eb->handler = umockdev_ioctl_base_new();
@@ -645,6 +1003,16 @@ static void prepare_run(emu *e)
         urb_drop_all(&eb->pend_in);
         urb_drop_all(&eb->pend_out);
         urb_drop_all(&eb->done);
+        if (e->soc) {
+            /* what the last client left at the simulated board ends with it, as the kernel
+             * kills a closed file's URBs; a frozen board runs again */
+            for (urb_rec *r = eb->pend_soc; r; r = r->next)
+                soc_send(eb, USBW_CANCEL, r->id, 0, 0, NULL, 0);
+            urb_drop_all(&eb->pend_soc);
+            if (eb->frozen)
+                soc_send(eb, USBW_FREEZE, 0, 0, 0, NULL, 0);
+            eb->frozen = 0;
+        }
         int replug = eb->gone;
         pthread_mutex_unlock(&e->mu);
         if (replug) {
@@ -652,6 +1020,24 @@ static void prepare_run(emu *e)
             plug(eb);
         }
         eb->stalled = 0;
+        if (e->soc) {
+            /* The simulation runs some 400 times slower than the board: the host's fixed 1 s
+             * control timeout is a few ms of board time, less than the firmware may still
+             * spend on bytes it took before a freeze or an unplug (a frame's commands take it
+             * tens of ms, and it answers control requests only between them).  So the next
+             * command starts once the board is quiet: two STATUS answers in a row alike, as a
+             * real board would be long before a user could type the command. */
+            uint8_t st[EF_USB_STATUS_LEN], prev[EF_USB_STATUS_LEN];
+            pthread_mutex_lock(&e->mu);
+            int ok = soc_status(eb, prev) == 0;
+            for (int k = 0; ok && k < 100; k++) {
+                ok = soc_status(eb, st) == 0;
+                if (!ok || !memcmp(st, prev, sizeof st))
+                    break;
+                memcpy(prev, st, sizeof st);
+            }
+            pthread_mutex_unlock(&e->mu);
+        }
     }
 }
 
@@ -737,10 +1123,29 @@ static void report(emu *e, const char *path, const int *rc, int nruns)
     for (int i = 0; i < e->nboards; i++) {
         emu_board *eb = &e->boards[i];
         ef_board_stats s;
-        ef_board_get_stats(eb->b, &s);
+        memset(&s, 0, sizeof s);
+        if (e->soc) {
+            /* the simulated board's counters, from its STATUS (docs/board-usb.md 3.2) */
+            uint8_t st[EF_USB_STATUS_LEN];
+            if (eb->gone || soc_status(eb, st) != 0) {
+                fprintf(o, "status_read=0\n");
+            } else {
+#define LE32(p) ((uint32_t)(p)[0] | (uint32_t)(p)[1] << 8 | (uint32_t)(p)[2] << 16 | (uint32_t)(p)[3] << 24)
+                s.state = st[6], s.rx_seq = LE32(st + 8), s.res_next = LE32(st + 12), s.res_acked = LE32(st + 16);
+                s.input_crc = LE32(st + 20);
+                s.cmds = LE32(st + 24) | (uint64_t)LE32(st + 28) << 32;
+                s.records = LE32(st + 32) | (uint64_t)LE32(st + 36) << 32;
+#undef LE32
+            }
+        } else {
+            ef_board_get_stats(eb->b, &s);
+        }
         const char *p = e->nboards > 1 ? eb->serial : NULL;
 #define KV(k, fmt, v) fprintf(o, "%s%s" k "=" fmt "\n", p ? p : "", p ? "." : "", v)
         fprintf(o, "%s%saddress=%d:%d\n", p ? p : "", p ? "." : "", eb->bus, eb->dev);
+        if (e->soc) /* what the gateware enumerated with */
+            fprintf(o, "usb_descriptors=%s\nusb_serial=%s\nusb_manufacturer=%s\nusb_product=%s\n", eb->desc_hex,
+                    eb->serial, eb->manufacturer, eb->product);
         KV("out_bytes", "%lld", eb->out_bytes);
         KV("in_bytes", "%lld", eb->in_bytes);
         KV("urbs", "%lld", eb->urbs);
@@ -815,11 +1220,22 @@ int main(int argc, char **argv)
             report_path = v;
         else if (!strcmp(a, "--dut-log"))
             dut_log = v;
+        else if (!strcmp(a, "--soc"))
+            e.soc = v;
         else
             die("unknown option %s", a);
     }
     if (nruns == 0)
         die("%s", "nothing to run: give --run 'COMMAND'");
+    if (e.soc) {
+        faults *f = &e.f;
+        if (nser > 0 || dut_log)
+            die("%s", "--soc: one board, the simulated SoC (its serial is its own; its DUT is ef_raster)");
+        if (f->reset_at || f->corrupt_in || f->drop_ack || f->magic[0] || f->protocol >= 0 || f->identify_stall)
+            die("%s", "--soc: the faults are unplug-at, unplug-in, stall-at, corrupt-out and eacces (the others "
+                      "change what the board itself does)");
+        serials[nser++] = "";
+    }
     if (nser == 0)
         serials[nser++] = "EMU0001";
     if (dut_log && !(e.dut_log = fopen(dut_log, "wb")))
@@ -849,9 +1265,13 @@ int main(int argc, char **argv)
                                .window = 16,
                                .iface_mask = (1u << 7) - 1 };
         snprintf(info.serial, sizeof info.serial, "%s", serials[i]);
-        eb->b = ef_board_new(&info, dut_logged(&e));
-        if (!eb->b)
-            die("%s", "ef_board_new failed");
+        if (e.soc) {
+            soc_connect(eb, e.soc);
+        } else {
+            eb->b = ef_board_new(&info, dut_logged(&e));
+            if (!eb->b)
+                die("%s", "ef_board_new failed");
+        }
         plug(eb);
     }
     if (e.f.eacces) {
@@ -880,11 +1300,16 @@ int main(int argc, char **argv)
         urb_drop_all(&e.boards[i].pend_in);
         urb_drop_all(&e.boards[i].pend_out);
         urb_drop_all(&e.boards[i].done);
+        urb_drop_all(&e.boards[i].pend_soc);
     }
     pthread_mutex_unlock(&e.mu);
     g_object_unref(e.tb);
     for (int i = 0; i < e.nboards; i++) {
-        ef_board_free(e.boards[i].b);
+        if (e.boards[i].b)
+            ef_board_free(e.boards[i].b);
+        free(e.boards[i].srx);
+        if (e.boards[i].soc_fd > 0)
+            close(e.boards[i].soc_fd);
         free(e.boards[i].stage);
         free(e.boards[i].deliver);
     }
