@@ -40,11 +40,12 @@
 // The ring: one synchronous memory of E_MAX+1 entries (never full, so the
 // tail write never lands on the entry held at the read port) with one
 // forwarding register: the front read in the cycle an arrival is written
-// to that entry (two new edges and nothing older, or the first new edge
-// read right after the last old one) takes the written data.  An entry is
-// {x, e, qs, rs, dy, dir, s0, r1}, the et_wr fields (ef_ifaces.vh) but r0,
-// of which only s0 = r0's sample row within its pixel row is kept (0 for
-// a survivor): 152 bits at the widths of ef_ifaces.vh.
+// to that entry (two new edges and nothing older) takes the written data.
+// An entry is {x, e, qs, rs, drs, dir, s0, r1, h}: the et_wr fields
+// (ef_ifaces.vh) with drs = dy - rs in dy's place, of r0 only s0 = r0's
+// sample row within its pixel row (0 for a survivor), and h: r1 lies in
+// the row the entry is plotted in next (set on arrival and on the push):
+// 153 bits at the widths of ef_ifaces.vh.
 //
 // Synthesizable Verilog-2005.
 `include "ef_ifaces.vh"
@@ -102,7 +103,8 @@ module ef_aet #(
     localparam RA     = $clog2(RDEPTH);
     `include "ef_ns.vh"
     // a ring entry {x, e, qs, rs, dy, dir, r0, r1}: each field's position
-    localparam O_R1   = 0;
+    localparam O_H    = 0;                          // r1 lies in the row the entry is plotted in next
+    localparam O_R1   = O_H + 1;
     localparam O_R0   = O_R1 + `EF_ET_WR_R1_W;
     localparam O_DIR  = O_R0 + `EF_PLOT_S_W;        // s0, not r0
     localparam O_DY   = O_DIR + `EF_ET_WR_DIR_W;
@@ -155,6 +157,7 @@ module ef_aet #(
     reg [`EF_ET_WR_QS_W-1:0] cur_qs;
     reg          cur_dir;
     reg [SRW-1:0] cur_r1;
+    reg          cur_h;
     reg [`EF_PLOT_S_W-1:0] cur_s;
 
     // ------------------------------------------------------------ the ring
@@ -269,10 +272,12 @@ module ef_aet #(
     // arrives (EF_L_REC = 1, the PH_RX cycle), not from ETM's memory port.
     wire [`EF_PLOT_S_W-1:0] rec_s0 = rec_r0[`EF_PLOT_S_W-1:0] & NSM1[`EF_PLOT_S_W-1:0];   // a new edge: r0 in this row
     /* verilator lint_off UNUSEDSIGNAL */
-    wire [`EF_ET_WR_R0_W-1:0] unused_rec_r0 = rec_r0;   // its pixel row is the row's (its slot)
+    wire [`EF_ET_WR_R0_W-1:0] unused_rec_r0 = rec_r0;   // (s0 and h use parts of it)
     /* verilator lint_on UNUSEDSIGNAL */
     wire [`EF_ET_WR_DY_W-1:0] rec_drs = rec_dy - rec_rs;
-    wire [RW-1:0] rec_ent = {rec_x, rec_e, rec_qs, rec_rs, rec_drs, rec_dir, rec_s0, rec_r1};
+    // a new edge is plotted first in its slot's row, r0's: r1 in that row too?
+    wire          rec_h = ((rec_r1 >> LOG2NS) == (rec_r0 >> LOG2NS));
+    wire [RW-1:0] rec_ent = {rec_x, rec_e, rec_qs, rec_rs, rec_drs, rec_dir, rec_s0, rec_r1, rec_h};
     reg  [RW-1:0] rec_q;
     // The edge's state: the ring's read port, else (decoded from registers
     // alone, so the memory's output passes one multiplexer) the record
@@ -292,6 +297,7 @@ module ef_aet #(
     wire        S_dir = use_ring ? ring_q[O_DIR] : fr ? alt[O_DIR] : cur_dir;
     wire [`EF_PLOT_S_W-1:0] S_s0 = use_ring ? ring_q[O_R0 +: `EF_PLOT_S_W] : alt[O_R0 +: `EF_PLOT_S_W];
     wire [SRW-1:0] S_r1 = use_ring ? ring_q[O_R1 +: SRW] : fr ? alt[O_R1 +: SRW] : cur_r1;
+    wire        S_h  = use_ring ? ring_q[O_H] : fr ? alt[O_H] : cur_h;
 
     // The edge's first and last sample rows in this row, and whether it
     // survives it, without compares or subtractions against the row's
@@ -304,7 +310,9 @@ module ef_aet #(
     // sample row is r1 - j*NS if r1 is in row j, else NS-1; it survives iff
     // r1 is past row j.
     wire [SRW-1:0] row_sr = {{(SRW-ROWW){1'b0}}, row_now};
-    wire        r1_here = ((S_r1 >> LOG2NS) == row_sr);
+    // a survivor is plotted next in row j+1: r1 in that row?
+    wire        push_h = ((S_r1 >> LOG2NS) == row_sr + 1'b1);
+    wire        r1_here = S_h;     // kept with the entry (issue 25: no compare on the ring's read path)
     wire [`EF_PLOT_S_W-1:0] s0w = S_s0;
     wire [`EF_PLOT_S_W-1:0] slw = r1_here ? S_r1[`EF_PLOT_S_W-1:0] & NSM1[`EF_PLOT_S_W-1:0] : NSM1[`EF_PLOT_S_W-1:0];
     wire [`EF_PLOT_S_W-1:0] s_now = fr ? s0w : cur_s;
@@ -388,9 +396,11 @@ module ef_aet #(
     wire push   = in_plot && edge_done && survive;
     wire arrive = arr_v && !arr_last;            // t+1 .. t+n-1: no plot yet
     assign ring_we = push || arrive;
+    // the write data chosen by the arrival (registers), not by the push
+    // (PLOT's edge_done: issue 25), as the two never meet
     // a survivor's r0 is 0: in later rows it starts at sample row 0
-    assign ring_wd = push ? {x_next[`EF_ET_WR_X_W-1:0], e_next, S_qs, S_rs, S_drs, S_dir, {`EF_PLOT_S_W{1'b0}}, S_r1}
-                          : rec_ent;
+    assign ring_wd = arrive ? rec_ent
+                            : {x_next[`EF_ET_WR_X_W-1:0], e_next, S_qs, S_rs, S_drs, S_dir, {`EF_PLOT_S_W{1'b0}}, S_r1, push_h};
     wire w1 = (ph == PH_W1);
     // reads: the next row's first edge (after the last plot), the first new
     // edge of a row without older ones (with the last et_rd), the next edge
@@ -467,11 +477,19 @@ module ef_aet #(
                 end
             end
 
-            if (ring_we) begin
+            if (ring_we)
                 wr_ptr <= inc(wr_ptr);
+            // The forwarding register keeps the last arrival: only an
+            // arrival's entry is ever read in the cycle it is written (the
+            // first of two new edges with no older one; a push goes to the
+            // tail while the front is read, and the ring is never full); a
+            // push invalidates it, so it never shadows a newer write.
+            if (arrive) begin
                 lw_v <= 1'b1;
                 lw_addr <= wr_ptr;
-                lw_data <= ring_wd;
+                lw_data <= rec_ent;
+            end else if (push) begin
+                lw_v <= 1'b0;
             end
             if (ring_re) begin
                 rd_ptr <= inc(rd_ptr);
@@ -520,7 +538,7 @@ module ef_aet #(
                 // the edge's running state, loaded whatever edge_done says
                 // (after an edge's last plot the next is fresh: unused)
                 cur_x <= x_next; cur_e <= e_next; cur_qs <= S_qs; cur_rs <= S_rs; cur_drs <= S_drs;
-                cur_dir <= S_dir; cur_r1 <= S_r1; cur_s <= s_now + 1'b1;
+                cur_dir <= S_dir; cur_r1 <= S_r1; cur_h <= S_h; cur_s <= s_now + 1'b1;
             end
 
             if (w1) begin
