@@ -20,7 +20,8 @@
 //             [--usb PATH]
 //
 // --dir: where the memory images (sim_rom.init, ...) are.  The board is
-// published only once it is up: the harness itself sends the firmware an
+// published only once it is up (but with --gpio-listen or --usb, whose hosts
+// wait for their own sockets): the harness itself sends the firmware an
 // identify control frame (docs/board.md 5.5) and waits for its reply (a
 // readiness handshake, however slow the machine), then makes the host's end.
 // With a pty (the default) its name (/dev/pts/N) is the first line of the
@@ -338,7 +339,7 @@ int main(int argc, char **argv)
     }
 
     // Readiness: the firmware answers an identify control frame (docs/board.md 5.5) before
-    // the host's end exists, so a host never talks to a board still booting.
+    // the host's end exists, so a host never talks to a board still booting (a UART host).
     uint8_t in[4096], out[4096];
     size_t in_len = 0, in_pos = 0, out_len = 0;
     {
@@ -349,8 +350,10 @@ int main(int argc, char **argv)
         std::memcpy(in, f, sizeof f);
         in_len = sizeof f;
         static const uint8_t want[9] = { 'E', 'F', 'B', '1', 0x90, 0, 0, 0, 0x5a };
-        size_t got = 0, reply_left = 68;   // 16 + 48 + 4 bytes: the identify reply
-        uint64_t sent_at = 64;             // (out of reset first) asked again every 2^22 cycles
+        // (not with a GPIO or USB host: the UART's identify would make the UART the engine's owner
+        // for 50 ms, and the other link's first bytes would be dropped, docs/board-ulx3s.md)
+        size_t got = 0, reply_left = gpio_path || usb_path ? 0 : 68;   // 16 + 48 + 4 bytes: the reply
+        uint64_t sent_at = 64;   // (out of reset first) asked again every 2^22 cycles
         for (; !stop_now && reply_left;) {
             if (bd.cyc == 16)
                 bd.top.sys_rst = 0;
