@@ -23,7 +23,7 @@ enum { MAX_ARGS = 256 };
 
 static void usage(FILE *f)
 {
-    fputs("usage: edgeflag rtl-sim VECTORS_DIR [--sim verilator|icarus] [--ns N] [--top FILE]...\n"
+    fputs("usage: edgeflag rtl-sim VECTORS_DIR [--sim verilator|icarus] [--ns N] [--top FILE]... [--fast]\n"
           "                        [--out DIR] [--w-max W] [--h-max H] [--e-max E] [--transactions]\n"
           "                        [--cache DIR]\n"
           "\n"
@@ -36,6 +36,8 @@ static void usage(FILE *f)
           "  --sim S         verilator (default) or icarus\n"
           "  --ns N          the build's samples per pixel (default: the vectors' own)\n"
           "  --top FILE      your DUT's Verilog instead of rtl/ (repeat for every file)\n"
+          "  --fast          rtl/'s ef_raster_fast (the overlap schedule): give it vectors\n"
+          "                  of `edgeflag vectors --schedule overlap` (or --transactions)\n"
           "  --out DIR       where the dumps go (default CACHE/out/NAME)\n"
           "  --w-max W, --h-max H, --e-max E   the build's limits (default 2048, 2048, 8192)\n"
           "  --transactions  compare in order only (a DUT with other timing)\n"

@@ -98,6 +98,11 @@ module ef_slb_fill_skip #(
     reg          s2_dir;
     reg          s2_rule;
 
+    // The cell of a stalled CELL op (issue 25): the RAM keeps reading while
+    // a span waits for COV, so stage 2 holds its cell here.
+    reg          hold_v;
+    reg [CW-1:0] hold_d;
+
     // Latest write, for forwarding.
     reg          lw_valid;
     reg [AW-1:0] lw_addr;
@@ -120,7 +125,7 @@ module ef_slb_fill_skip #(
     // cur: the cell as it is now: the RAM read missed a write made at the same
     // edge (read first), so the latest write wins on an address match.
     wire          fwd  = lw_valid && (lw_addr == s2_addr[AW-1:0]);
-    wire [CW-1:0] cur  = fwd ? lw_data : ram_rd;
+    wire [CW-1:0] cur  = hold_v ? hold_d : fwd ? lw_data : ram_rd;
 
     wire [NS-1:0] s2_sel = {{(NS-1){1'b0}}, 1'b1} << s2_s;  // one-hot sample
     wire [CW-1:0] plot_new;     // cell after the PLOT op
@@ -219,12 +224,20 @@ module ef_slb_fill_skip #(
     /* verilator lint_on UNUSEDSIGNAL */
     wire [GW-1:0] sweep_g = sweep32[6 +: GW];
 
-    assign ram_re = take_plot || scan_cell;
+    // The read and write enables do not wait for the stall (issue 25: the
+    // stall comes from the cell just read and from COV, and gating the
+    // memory's enables with it made the block's critical path): a stalled
+    // CELL op rewrites its cell's zero, the same write it makes when it
+    // completes, and the read of the next cell is issued again when the
+    // stall ends; stage 2 keeps its cell in hold_d meanwhile.  (The bitmap
+    // and ptr still move only when the step is taken: scan_cell.)
+    wire scan_rd    = init_done && scanning && ptr_ok;
+    assign ram_re = take_plot || scan_rd;
     assign ram_ra = take_plot ? plot_q[AW-1:0] : ptr[AW-1:0];
 
     // Write port: the reset sweep, else stage 2's write-back (the new cell of
     // a PLOT, zero for a CELL: clear-on-read).
-    wire s2_writes = s2_done && ((s2_op == OP_PLOT) || (s2_op == OP_CELL));
+    wire s2_writes = (s2_op == OP_PLOT) || (s2_op == OP_CELL);
     assign ram_we = !init_done || s2_writes;
     assign ram_wa = !init_done ? sweep_addr : s2_addr[AW-1:0];
     assign ram_wd = (!init_done || (s2_op == OP_CELL)) ? {CW{1'b0}} : plot_new;
@@ -250,6 +263,7 @@ module ef_slb_fill_skip #(
             scanning   <= 1'b0;
             s2_op      <= OP_NONE;
             lw_valid   <= 1'b0;
+            hold_v     <= 1'b0;
         end else begin
             if (!init_done) begin
                 bm[sweep_g] <= 64'd0;
@@ -257,6 +271,10 @@ module ef_slb_fill_skip #(
                 if ({{(32-AW){1'b0}}, sweep_addr} == W_MAX)
                     init_done <= 1'b1;
             end
+
+            hold_v <= stall;
+            if (stall)
+                hold_d <= cur;
 
             if (ram_we) begin
                 lw_valid <= 1'b1;

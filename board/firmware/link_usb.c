@@ -21,8 +21,10 @@
 
 #define ST_OUT 1u
 #define ST_IN_ROOM 2u
-#define ST_REQ 4u
-#define ST_CODE_SHIFT 3
+#define ST_REQ_SHIFT 2 /* bits 4:2: the request toggles */
+#define REQ_STATUS 1u
+#define REQ_RESET 2u
+#define REQ_LOST 4u
 #define IN_LAST 0x100u
 #define MB_STATUS 64u
 /* A burst ends after this many bytes even when the engine has more: while results stream, the
@@ -30,11 +32,11 @@
  * among the results; 1 KiB at full speed is under 1 ms of the bus. */
 #define BURST_MAX 1024u
 
-static int identified; /* the mailbox holds identify and the board is on the bus */
-static uint32_t acked; /* the request toggle last served */
-static uint32_t seen;  /* the toggle of the request being served */
-static int held = -1;  /* the byte held back, or -1 */
-static unsigned burst; /* IN bytes since the last burst ended */
+static int identified;   /* the mailbox holds identify and the board is on the bus */
+static uint32_t acked;   /* the request toggles as last served (ctl_ack) */
+static uint32_t serving; /* the kind of request being served (REQ_*) */
+static int held = -1;    /* the byte held back, or -1 */
+static unsigned burst;   /* IN bytes since the last burst ended */
 
 static void usb_mailbox(unsigned at, const uint8_t *buf, size_t len)
 {
@@ -80,16 +82,13 @@ static int usb_control(void)
 {
     if (!identified)
         return FW_REQ_IDENTIFY; /* once, at start: the mailbox first, then the pull-up */
-    const uint32_t st = usb_status_read();
-    const uint32_t req = (st & ST_REQ) ? 1u : 0u;
-    if (req == acked)
-        return FW_REQ_NONE;
-    seen = req;
-    switch ((st >> ST_CODE_SHIFT) & 3u) {
-    case 1: return FW_REQ_STATUS;
-    case 2: return FW_REQ_RESET;
-    default: return FW_REQ_LINK_LOST; /* 3: a bus reset */
-    }
+    /* one toggle per kind: a kind is pending while its toggle differs from ours */
+    const uint32_t pending = ((usb_status_read() >> ST_REQ_SHIFT) & 7u) ^ acked;
+    serving = pending & REQ_LOST ? REQ_LOST : pending & REQ_RESET ? REQ_RESET : pending & REQ_STATUS;
+    return serving == REQ_LOST    ? FW_REQ_LINK_LOST
+           : serving == REQ_RESET ? FW_REQ_RESET
+           : serving              ? FW_REQ_STATUS
+                                  : FW_REQ_NONE;
 }
 
 static void usb_reply(int req, const uint8_t *buf, size_t len)
@@ -97,7 +96,7 @@ static void usb_reply(int req, const uint8_t *buf, size_t len)
     if (req == FW_REQ_IDENTIFY && !identified) {
         usb_mailbox(0, buf, len);
         identified = 1;
-        acked = (usb_status_read() & ST_REQ) ? 1u : 0u; /* a bus reset before this is no news */
+        acked = (usb_status_read() >> ST_REQ_SHIFT) & 7u; /* a bus reset before this is no news */
         usb_ctl_ack_write(acked);
         usb_ctrl_write(1); /* connect */
         return;
@@ -109,7 +108,7 @@ static void usb_reply(int req, const uint8_t *buf, size_t len)
     if (req == FW_REQ_RESET) /* the OUT bytes (a bus reset keeps them: the host saw them ACKed) */
         while (usb_status_read() & ST_OUT)
             usb_out_pop_write(1);
-    acked = seen;
+    acked ^= serving;
     usb_ctl_ack_write(acked);
 }
 

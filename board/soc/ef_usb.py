@@ -5,12 +5,12 @@ across clock domains by asynchronous FIFOs, and the CSRs the firmware uses
 
     ctrl      bit 0: connect (the D+ pull-up: the board appears on the bus)
     status    bit 0: a bulk OUT byte is there (out_data); bit 1: the IN FIFO has room;
-              bit 2: the request toggle (ctl_req); bits 4:3: its code (1 STATUS, 2 RESET);
+              bits 4:2: the request toggles (ctl_req: STATUS, RESET, a bus reset);
               bit 5: the host set configuration 1
     out_data  the bulk OUT byte at the FIFO's head; writing out_pop takes it
     in_data   write: bits 7:0 a bulk IN byte, bit 8: the burst ends here (short packet or ZLP)
     mb        write: bits 14:8 a mailbox address, 7:0 the byte (IDENTIFY at 0, STATUS at 64)
-    ctl_ack   the firmware's toggle: equal to ctl_req once the request is served
+    ctl_ack   the firmware's toggles: bit k equal to ctl_req's once that request is served
 
 The core runs in the `usb` clock domain (12 MHz; on a ULX3S also `usb_io`, 48 MHz, for LUNA's
 gateware PHY on the US2 pins); in the simulation its UTMI side is `utmi`, a set of pads the
@@ -37,7 +37,7 @@ class EFUSB(LiteXModule):
         self.out_pop = CSR()
         self.in_data = CSR(9)
         self.mb = CSR(15)
-        self.ctl_ack = CSRStorage(1)
+        self.ctl_ack = CSRStorage(3)
 
         # # #
 
@@ -47,7 +47,7 @@ class EFUSB(LiteXModule):
         self.out_fifo, self.in_fifo = out_fifo, in_fifo
         connect = Signal()
         self.specials += MultiReg(self.ctrl.storage[0], connect, "usb")
-        ctl_req, ctl_code, configured_u, configured = Signal(), Signal(2), Signal(), Signal()
+        ctl_req, configured_u, configured = Signal(3), Signal(), Signal()
         self.specials += MultiReg(configured_u, configured, "sys")
         ios = dict(
             i_usb_clk=ClockSignal("usb"), i_usb_rst=ResetSignal("usb"),
@@ -57,7 +57,7 @@ class EFUSB(LiteXModule):
             i_in_data=in_fifo.source.data[0:8], i_in_last=in_fifo.source.data[8], i_in_valid=in_fifo.source.valid,
             o_in_ready=in_fifo.source.ready,
             i_mb_we=self.mb.re, i_mb_addr=self.mb.r[8:15], i_mb_data=self.mb.r[0:8],
-            o_ctl_req=ctl_req, o_ctl_code=ctl_code, i_ctl_ack=self.ctl_ack.storage[0],
+            o_ctl_req=ctl_req, i_ctl_ack=self.ctl_ack.storage,
         )
         if utmi is not None:
             for name, _, d in UTMI_PORTS:
@@ -74,7 +74,7 @@ class EFUSB(LiteXModule):
             self.comb += pads.pullup.eq(Cat(pullup, 0))
         self.specials += Instance("ef_usb_core", **ios)
         self.comb += [
-            self.status.status.eq(Cat(out_fifo.source.valid, in_fifo.sink.ready, ctl_req, ctl_code, configured)),
+            self.status.status.eq(Cat(out_fifo.source.valid, in_fifo.sink.ready, ctl_req, configured)),
             self.out_data.status.eq(out_fifo.source.data),
             out_fifo.source.ready.eq(self.out_pop.re),
             in_fifo.sink.valid.eq(self.in_data.re),

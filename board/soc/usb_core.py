@@ -20,17 +20,18 @@ The module `ef_usb_core`:
                `last` ends the burst with a short packet or a zero-length
                packet, docs/board-usb.md section 4), `connect` (pull-up).
   sys domain:  the request mailbox: mb_we/mb_addr/mb_data write IDENTIFY's 48
-               bytes at 0..47 and STATUS's 40 at 64..103; ctl_req (a toggle)
-               and ctl_code (1 STATUS, 2 RESET) announce a request that needs
-               the firmware; ctl_ack (the firmware's toggle, equal to ctl_req
-               once served) lets the core answer: STATUS's data stage and
-               RESET's status stage are NAKed until then.  Code 3: a USB bus
-               reset happened (the connection ended: the firmware drops half
-               frames, ef_board_link_lost); the bulk endpoints are reset with
-               it (their buffers, and data toggles DATA0).  IDENTIFY is answered
-               from the mailbox at once.  While a RESET waits, every byte of
-               the IN path is dropped (docs/board-usb.md 3.3); the data
-               toggles are kept.
+               bytes at 0..47 and STATUS's 40 at 64..103; ctl_req, one toggle
+               per kind of request that needs the firmware (bit 0 STATUS, bit 1
+               RESET, bit 2 a USB bus reset: the connection ended, the firmware
+               drops half frames, ef_board_link_lost), pending while it differs
+               from the firmware's ctl_ack bit; a kind is asked again only once
+               served, so two requests never cancel out.  STATUS's data stage
+               and RESET's status stage are NAKed until served.  IDENTIFY and
+               the serial string are answered from the mailbox at once.  While
+               a RESET or a bus reset waits, every byte of the IN path is
+               dropped (docs/board-usb.md 3.3); a bus reset also resets the
+               bulk endpoints (their buffers, data toggles DATA0), a RESET
+               keeps the toggles.
 """
 
 import argparse
@@ -99,9 +100,11 @@ class VendorRequests(USBRequestHandler):
         super().__init__()
         self.ident = [Signal(8, name=f"ident_{i}") for i in range(IDENTIFY_LEN)]
         self.status = [Signal(8, name=f"status_{i}") for i in range(STATUS_LEN)]
-        self.req = Signal()       # toggles when a request needs the firmware
-        self.code = Signal(2)     # 1 STATUS, 2 RESET, 3 a bus reset
-        self.ack = Signal()       # the firmware's toggle (synchronised)
+        # one toggle per kind of request that needs the firmware (bit 0 STATUS, 1 RESET, 2 a bus
+        # reset), flipped only when the last one of its kind was served, and the firmware's
+        # acknowledging toggles (synchronised): kind k is pending while req[k] != ack[k]
+        self.req = Signal(3)
+        self.ack = Signal(3)
         self.resetting = Signal()  # a RESET or a bus reset waits for the firmware
         self.bus_reset = Signal()  # in: a USB bus reset (plug-in, re-enumeration)
 
@@ -129,8 +132,12 @@ class VendorRequests(USBRequestHandler):
         full = Signal(7)
         m.d.comb += full.eq(Mux(sel == 1, STATUS_LEN, Mux(sel == 2, n * 2 + 2, IDENTIFY_LEN)))
         m.d.comb += ser.max_length.eq(Mux(setup.length < full, setup.length, full))
-        served = Signal()
-        m.d.comb += served.eq(self.ack == self.req)
+        served = [Signal(name=f"served_{k}") for k in range(3)]
+        for k in range(3):
+            m.d.comb += served[k].eq(self.ack[k] == self.req[k])
+
+        def ask(k):  # a request of kind k: pending (again only when the last one was served)
+            return self.req[k].eq(self.req[k] ^ served[k])
         vendor = (setup.type == USBRequestType.VENDOR) & (setup.recipient == USBRequestRecipient.DEVICE)
         serial_desc = serial_request(setup)
         with m.If(vendor | serial_desc):
@@ -147,23 +154,23 @@ class VendorRequests(USBRequestHandler):
                         m.d.usb += sel.eq(0)
                         m.next = "DATA"
                     with m.Elif((setup.request == STATUS) & setup.is_in_request & (setup.length != 0)):
-                        m.d.usb += [sel.eq(1), self.req.eq(~self.req), self.code.eq(1)]
+                        m.d.usb += [sel.eq(1), ask(0)]
                         m.next = "DATA"
                     with m.Elif((setup.request == RESET) & ~setup.is_in_request & (setup.length == 0)):
-                        m.d.usb += [self.req.eq(~self.req), self.code.eq(2)]
+                        m.d.usb += ask(1)
                         m.next = "RESET"
                     with m.Else():
                         m.next = "UNHANDLED"
 
         # a bus reset: the firmware drops the half frames and unsent bytes of the connection that
-        # ended (code 3); until it has, the IN path is emptied
-        lost = Signal()
+        # ended; until it has, the IN path is emptied
         with m.If(self.bus_reset):
-            m.d.usb += [self.req.eq(~self.req), self.code.eq(3), lost.eq(1)]
-        with m.Elif(served):
-            m.d.usb += lost.eq(0)
-        with m.If(lost & ~served):
+            m.d.usb += ask(2)
+        with m.If(~served[2]):
             m.d.comb += self.resetting.eq(1)
+        # the data stage: at once, but STATUS's when the firmware has put it in the mailbox
+        ready = Signal()
+        m.d.comb += ready.eq((sel != 1) | served[0])
 
         with m.FSM(domain="usb"):
             with m.State("IDLE"):
@@ -172,7 +179,7 @@ class VendorRequests(USBRequestHandler):
             with m.State("DATA"):
                 m.d.comb += ser.stream.attach(itf.tx)
                 with m.If(itf.data_requested):
-                    with m.If(served):
+                    with m.If(ready):
                         m.d.comb += ser.start.eq(1)
                     with m.Else():
                         m.d.comb += itf.handshakes_out.nak.eq(1)
@@ -181,14 +188,14 @@ class VendorRequests(USBRequestHandler):
                     m.next = "IDLE"
                 dispatch()
             with m.State("RESET"):
-                with m.If(~served):
+                with m.If(~served[1]):
                     m.d.comb += self.resetting.eq(1)
                 with m.If(itf.status_requested):
-                    with m.If(served):
+                    with m.If(served[1]):
                         m.d.comb += self.send_zlp()
                     with m.Else():
                         m.d.comb += itf.handshakes_out.nak.eq(1)
-                with m.If(itf.handshakes_in.ack & served):
+                with m.If(itf.handshakes_in.ack & served[1]):
                     m.next = "IDLE"
                 dispatch()
             with m.State("UNHANDLED"):
@@ -237,14 +244,14 @@ class EFUSBCore(Elaboratable):
         self.configured = sig("configured")
         # sys domain
         self.mb_we, self.mb_addr, self.mb_data = sig("mb_we"), sig("mb_addr", 7), sig("mb_data", 8)
-        self.ctl_req, self.ctl_code, self.ctl_ack = sig("ctl_req"), sig("ctl_code", 2), sig("ctl_ack")
+        self.ctl_req, self.ctl_ack = sig("ctl_req", 3), sig("ctl_ack", 3)
         self.cd_usb, self.cd_sys = ClockDomain("usb"), ClockDomain("sys")
         self.cd_usb_io = ClockDomain("usb_io") if phy != "utmi" else None
 
     def ports(self):
         p = [self.cd_usb.clk, self.cd_usb.rst, self.cd_sys.clk, self.cd_sys.rst, self.connect, self.out_data, self.out_valid, self.out_ready, self.in_data, self.in_last,
              self.in_valid, self.in_ready, self.configured, self.mb_we, self.mb_addr, self.mb_data,
-             self.ctl_req, self.ctl_code, self.ctl_ack]
+             self.ctl_req, self.ctl_ack]
         if self.phy == "utmi":
             u = self.utmi
             p += [u.rx_data, u.rx_valid, u.rx_active, u.rx_error, u.tx_data, u.tx_valid, u.tx_ready,
@@ -297,8 +304,8 @@ class EFUSBCore(Elaboratable):
                     if isinstance(r, Signal):
                         with m.Case(a):
                             m.d.sys += r.eq(self.mb_data)
+        # three independent toggles each way: one synchroniser per bit is enough
         m.submodules.req_sync = FFSynchronizer(vendor.req, self.ctl_req, o_domain="sys")
-        m.submodules.code_sync = FFSynchronizer(vendor.code, self.ctl_code, o_domain="sys")
         m.submodules.ack_sync = FFSynchronizer(self.ctl_ack, vendor.ack, o_domain="usb")
         m.d.comb += self.configured.eq(ctrl.interface.active_config != 0)
         return m

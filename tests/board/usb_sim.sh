@@ -11,7 +11,8 @@
 #   4. unplugged while results flow, --resume: byte-identical;
 #   5. the board's CPU stops (a stall: the core NAKs): "stopped answering" (exit 5), then --resume:
 #      byte-identical;
-#   6. permission denied (the node root-only, the host run as nobody): exit 8 naming the udev rule.
+#   6. permission denied (the node root-only, the host run as nobody): exit 8 naming the udev rule;
+#   7. the IN bursts ended with short and with zero-length packets (the host controller's count).
 # One simulated board serves every case (its state carries over, as a powered board's does).
 # usage: bash tests/board/usb_sim.sh SIM_DIR   (`make board-sim-usb-test`; SIM_DIR is
 #        build/board/sim-ns8, built by `make board-sim`)
@@ -143,6 +144,14 @@ else
 fi
 
 stop_board
+# docs/board-usb.md section 4: every burst ends with a short packet, or a zero-length one after a
+# full packet; the host controller counted both kinds (the bursts of 1 KiB end with the latter)
+zs=$(sed -n 's/.*IN bursts ended by \([0-9]*\) short and \([0-9]*\) zero-length.*/\1 \2/p' "$tmp/board.log")
+if [ -n "$zs" ] && [ "${zs% *}" -gt 0 ] && [ "${zs#* }" -gt 0 ]; then
+    ok "IN bursts ended by ${zs% *} short and ${zs#* } zero-length packets"
+else
+    bad "short and zero-length packets" "'$zs'"
+fi
 echo "usb_sim: $(($(date +%s) - t00)) s; $(grep 'usb:' "$tmp/board.log" | sed 's/^board_sim: //')"
 grep 'sys cycles' "$tmp/board.log" | sed 's/^/    /'
 finish

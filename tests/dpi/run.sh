@@ -44,6 +44,8 @@ R=${EF_DPI_RTL:-$root/rtl}     # EF_DPI_RTL: another RTL folder (the same file n
 # rtl_slb DIR, rtl_raster DIR: the DUT's files in an RTL folder
 rtl_slb() { echo "$1/ef_slb_fill.v $1/ef_slb_ram.v"; }
 rtl_raster() { echo "$1/ef_raster.v $1/ef_dec.v $1/ef_setup.v $1/ef_div.v $1/ef_etm.v $1/ef_aet.v $1/ef_plot.v $(rtl_slb "$1") $1/ef_cov.v"; }
+# the fast top (docs/microarch.md section 6), checked in transaction order
+rtl_fast() { echo "$1/ef_raster_fast.v $1/ef_dec.v $1/ef_setup.v $1/ef_div.v $1/ef_etm.v $1/ef_aet.v $1/ef_plot.v $1/ef_slb_fill_skip.v $1/ef_slb_ram.v $1/ef_spanq.v $1/ef_cov.v"; }
 for f in "$EF" "$build/tests/test_model_stream"; do
     [ -e "$f" ] || { echo "test-dpi: $f not built (make test-dpi builds it)"; exit 1; }
 done
@@ -114,6 +116,7 @@ vl_build() {
     s=$(date +%s)
     rtl=$(rtl_raster "$src")
     [ "$dut" = slb ] && { rtl=$(rtl_slb "$src"); set -- -DEF_TB_DUT_SLB "$@"; }
+    [ "$dut" = fast ] && { rtl=$(rtl_fast "$src"); set -- -DEF_FAST "$@"; }
     mkdir -p "$d"
     if ! verilator --binary --timing --timescale 1ns/1ns -j 1 --Mdir "$d/obj" --top-module tb_lockstep \
             -MAKEFLAGS "OPT_FAST=-O0 OPT_SLOW=-O0 OPT_GLOBAL=-O0" \
@@ -150,6 +153,14 @@ bash "$root/dv/rtl-variant.sh" "$work/rtl_span" span || bad "dv/rtl-variant.sh s
 vl_build short $DUT 8 160 120 "$work/rtl_span" &
 [ $DUT = raster ] && vl_build slb8 slb 8 160 120 &
 wait
+# the fast top in transaction order, and with its copy of the span fault
+FAST=0
+if [ -e "$R/ef_raster_fast.v" ]; then
+    FAST=1
+    bash "$root/dv/rtl-variant.sh" "$work/rtl_span_skip" span_skip || bad "dv/rtl-variant.sh span_skip"
+    vl_build fast8 fast 8 160 120 & vl_build fastshort fast 8 160 120 "$work/rtl_span_skip" &
+    wait
+fi
 
 # run NAME VECDIR [plusargs]: the bench on VECDIR/cmd.stim.hex; output in $work/NAME.sim
 run() {
@@ -283,6 +294,28 @@ if vl short; then
         ok "RTL fault span (dv/faults/span.sed: a span one pixel short) caught: ${line#tb_lockstep: FAIL }"
     else
         cat "$work/short.sim"; bad "fault span: want the first span of 2+ pixels (cycle $c1) reported with len one short, exit != 0"
+    fi
+fi
+
+# The fast top (ef_raster_fast) against the model in transaction order
+# (docs/dpi.md): every transaction of the files checked, and its copy of the
+# span fault stopping at the first span of 2+ pixels, len one short.
+if [ $FAST = 1 ] && vl fast8; then
+    run fast8 fast_tiger8 "$work/t8";  pass_run fast_tiger8 "$work/t8"
+    run fast8 fast_gen8 "$work/g8";    pass_run fast_gen8 "$work/g8"
+fi
+if [ $FAST = 1 ] && vl fastshort; then
+    run fastshort fastshort "$work/t8"
+    line=$(grep -m1 '^tb_lockstep: FAIL' "$work/fastshort.sim")
+    el=$(printf '%s\n' "$line" | sed -n 's/.*fields differ: expected .* len=\([0-9]*\) .*; actual .*/\1/p')
+    al=$(printf '%s\n' "$line" | sed -n 's/.*; actual .* len=\([0-9]*\)\* .*/\1/p')
+    stars=$(printf '%s\n' "${line#*; actual }" | tr -cd '*' | wc -c)
+    if [ "$(cat "$work/fastshort.rc")" != 0 ] &&
+       printf '%s\n' "$line" | grep -Eq "^tb_lockstep: FAIL at time [0-9]+ ns, cycle [0-9]+: span: cycle [0-9]+, y [0-9]+, x [0-9]+: fields differ: " &&
+       [ -n "$el" ] && [ -n "$al" ] && [ "$el" = $((al + 1)) ] && [ "$stars" = 1 ]; then
+        ok "fast top, RTL fault span_skip (transaction order) caught: ${line#tb_lockstep: FAIL }"
+    else
+        cat "$work/fastshort.sim"; bad "fault span_skip in the fast top: want a span reported with len one short, exit != 0"
     fi
 fi
 echo "test-dpi: $(( $(date +%s) - t0 )) s"

@@ -14,11 +14,12 @@
  *       --unplug-after N: once the board has taken N stream bytes the lines
  *       go dead (the socket closes: the board's pull-downs, nothing on the
  *       host's inputs), as if the cable were pulled.
- *   gpio_cosim SOCKET --bench KIB STEP_CYCLES
+ *   gpio_cosim SOCKET --bench KIB [sink|source]
  *       the link tests by hand: KIB x 1040 bytes in sink mode, KIB KiB in
- *       source mode; bus cycles, host steps, wall time, and board time taken
- *       as host steps x STEP_CYCLES at 60 MHz (board_sim --gpio-lockstep
- *       --gpio-step-cycles STEP_CYCLES makes that exact).
+ *       source mode; bus cycles, host steps and wall time (the board's time
+ *       is in board_sim's report when it exits).
+ *   gpio_cosim SOCKET --status
+ *       identify and status of the board as it is (no reset).
  *   gpio_cosim SOCKET --selftest SERIAL
  *       the bus through the transport: identify (serial SERIAL) and status,
  *       the host's timing as the chip sees it, an engine failure (err with
@@ -186,7 +187,7 @@ static double now_s(void)
 
 /* One link test (docs/board.md section 8) by hand: payload bytes each way, and what it cost on
  * the bus (cycles), in host steps (GPIO calls, as the chip counted them) and in wall time. */
-static void bench_mode(emu_chip *e, ef_link *l, uint32_t mode, unsigned kib, unsigned step_cycles)
+static void bench_mode(emu_chip *e, ef_link *l, uint32_t mode, unsigned kib)
 {
     static uint8_t f[EF_PROTO_HEADER + 1040 + EF_PROTO_TRAILER], buf[65536];
     uint8_t start[EF_PROTO_START_LEN] = { 0 };
@@ -213,14 +214,11 @@ static void bench_mode(emu_chip *e, ef_link *l, uint32_t mode, unsigned kib, uns
     const unsigned long long steps = sets + gets,
                              payload = (unsigned long long)(nframes ? nframes * 1040u : kib * 1024u);
     check(done, "bench %s: no DONE (rc %d, %s)", mode == EF_MODE_SINK ? "sink" : "source", rc, ef_gpio_link_detail(l));
-    const double board_s = (double)steps * step_cycles / 60e6;
     printf("gpio-cosim: bench %s: %llu payload bytes, %llu bus cycles (%.2f payload bytes per cycle), %llu host steps "
-           "(%.2f per cycle); wall %.2f s: %.0f bus cycles/s, %.0f payload B/s; board time at %u sys cycles (60 MHz) "
-           "a step: %.6f s: %.0f bus cycles/s, %.0f payload B/s\n",
+           "(%.2f per cycle); wall %.2f s: %.0f bus cycles/s, %.0f payload B/s (board time: board_sim's report)\n",
            mode == EF_MODE_SINK ? "sink (host to board)" : "source (board to host)", payload, cycles,
            cycles ? (double)payload / (double)cycles : 0.0, steps, cycles ? (double)steps / (double)cycles : 0.0, dt,
-           dt > 0 ? (double)cycles / dt : 0.0, dt > 0 ? (double)payload / dt : 0.0, step_cycles, board_s,
-           board_s > 0 ? (double)cycles / board_s : 0.0, board_s > 0 ? (double)payload / board_s : 0.0);
+           dt > 0 ? (double)cycles / dt : 0.0, dt > 0 ? (double)payload / dt : 0.0);
 }
 
 int main(int argc, char **argv)
@@ -237,19 +235,35 @@ int main(int argc, char **argv)
     emu_chip *e = emu_chip_new_sim(argv[1], WIRING);
     if (!e)
         return 2;
-    if (strcmp(argv[2], "--bench") == 0 && argc == 5) { /* gpio_cosim SOCKET --bench KIB STEP_CYCLES */
+    if (strcmp(argv[2], "--bench") == 0 && (argc == 4 || argc == 5)) { /* SOCKET --bench KIB [sink|source] */
         char err[256];
         ef_host_opts o = { .chip = "gpiochip0", .lines = LINES, .timeout_ms = 10000 };
         ef_link *l = NULL;
         int rc = ef_transport_gpio.open(&l, &o, err, sizeof err);
         check(rc == 0 && l, "open: rc %d: %s", rc, err);
         if (l) {
-            bench_mode(e, l, EF_MODE_SINK, (unsigned)atoi(argv[3]), (unsigned)atoi(argv[4]));
-            bench_mode(e, l, EF_MODE_SOURCE, (unsigned)atoi(argv[3]), (unsigned)atoi(argv[4]));
+            if (argc == 4 || strcmp(argv[4], "sink") == 0)
+                bench_mode(e, l, EF_MODE_SINK, (unsigned)atoi(argv[3]));
+            if (argc == 4 || strcmp(argv[4], "source") == 0)
+                bench_mode(e, l, EF_MODE_SOURCE, (unsigned)atoi(argv[3]));
             ef_transport_gpio.close(l);
         }
         printf("gpio-cosim: %d checks, %d failed\n", checks, failed);
         return failed ? 1 : 0;
+    }
+    if (strcmp(argv[2], "--status") == 0) { /* the board as it is: identify and status, no reset */
+        char err[256];
+        ef_host_opts o = { .chip = "gpiochip0", .lines = LINES, .timeout_ms = 3000 };
+        ef_link *l = NULL;
+        uint8_t id[EF_PROTO_IDENTIFY_LEN], st[EF_PROTO_STATUS_LEN];
+        if (ef_transport_gpio.open(&l, &o, err, sizeof err) != 0)
+            return 1;
+        int r1 = ef_transport_gpio.identify(l, id), r2 = ef_transport_gpio.status(l, st);
+        printf(
+            "gpio-cosim: identify rc %d, status rc %d: state %u, next frame %u, result frames %u, commands %u (%s)\n",
+            r1, r2, st[6], ef_get32(st + 8), ef_get32(st + 12), ef_get32(st + 24), ef_gpio_link_detail(l));
+        ef_transport_gpio.close(l);
+        return 0;
     }
     if (strcmp(argv[2], "--selftest") == 0 && argc == 4) {
         selftest(e, argv[3]);

@@ -180,10 +180,11 @@ vl tb_rooks --top-module tb_rooks $TB/tb_rooks.v || l_ok=0
 vl tb_ifaces_pkg --top-module tb_ifaces_pkg $R/ef_ifaces_pkg.sv $TB/tb_ifaces_pkg.sv || l_ok=0
 vl ef_rtl_dut --top-module ef_rtl_dut $TB/dut_rtl.v $RTL || l_ok=0
 vl "tb_lockstep (ef_raster)" --top-module tb_lockstep $R/ef_ifaces_pkg.sv dv/dpi/ef_model_pkg.sv dv/dpi/tb_lockstep.sv $RTL || l_ok=0
+vl "tb_lockstep (ef_raster_fast)" -DEF_FAST --top-module tb_lockstep $R/ef_ifaces_pkg.sv dv/dpi/ef_model_pkg.sv dv/dpi/tb_lockstep.sv $FAST || l_ok=0
 vl "tb_lockstep (ef_slb_fill)" -DEF_TB_DUT_SLB --top-module tb_lockstep $R/ef_ifaces_pkg.sv dv/dpi/ef_model_pkg.sv dv/dpi/tb_lockstep.sv $RTL || l_ok=0
 vl "ef_ifaces_pkg.sv (lint wrapper)" --top-module ef_ifaces_pkg_lint $R/ef_ifaces_pkg.sv dv/lint/ef_ifaces_pkg_lint.sv || l_ok=0
 }
-n=$((n + 16))
+n=$((n + 17))
 out=$(iverilog -g2012 -Wall -o /dev/null $R/ef_ifaces_pkg.sv dv/lint/ef_ifaces_pkg_lint.sv 2>&1)
 [ -z "$out" ] || { l_ok=0; bad "iverilog -g2012 -Wall of ef_ifaces_pkg.sv + its lint wrapper is not silent" "$out"; }
 # every Verilog file of rtl/ and dv/ is in some lint

@@ -21,6 +21,13 @@
 #      the fault's interface, at the cycle where a plain in-order comparison
 #      of the two hex files (awk, independent of edgeflag check) first
 #      differs, with a field the fault changes marked.
+#   6. the fast top (ef_raster_fast, the overlap schedule of docs/microarch.md
+#      section 6), a slice: the NS 8 cases of stage 2 against `edgeflag
+#      vectors --schedule overlap`, `--cycles`, in Verilator and (those of at
+#      most EF_RTL_IV_CYCLES cycles) Icarus; back-pressure (--transactions) in
+#      both; the faults of stage 5 in the fast top (SLB + FILL's as their
+#      *_skip copies) and two of its own (skipstart, spanq), each caught as
+#      in stage 5.  The fast top's lint is rtl-lint's.
 #
 # usage: bash tests/rtl/rtl-test.sh BUILD_DIR   (make rtl-test; EF_RTL_JOBS
 #        (default 2), EF_RTL_SLICE, EF_RTL_KEEP=1 keeps the work directory)
@@ -42,6 +49,11 @@ rtl_files() {
     echo "$d/ef_raster.v $d/ef_dec.v $d/ef_setup.v $d/ef_div.v $d/ef_etm.v $d/ef_aet.v $d/ef_plot.v $d/ef_slb_fill.v $d/ef_slb_ram.v $d/ef_cov.v"
 }
 RTL=$(rtl_files "$R")
+# rtl_files_fast DIR: the fast top's (docs/microarch.md section 6)
+rtl_files_fast() {
+    local d=$1
+    echo "$d/ef_raster_fast.v $d/ef_dec.v $d/ef_setup.v $d/ef_div.v $d/ef_etm.v $d/ef_aet.v $d/ef_plot.v $d/ef_slb_fill_skip.v $d/ef_slb_ram.v $d/ef_spanq.v $d/ef_cov.v"
+}
 jobs=${EF_RTL_JOBS:-2}
 slice=${EF_RTL_SLICE:-11}
 # the hardware the cases run on (small: the gen slice's canvases fit)
@@ -94,31 +106,39 @@ lint() {
 for ns in 8 16 32; do submit "lint_$ns" lint $ns; done
 
 # ---------------------------------------------------------------- builds
-# build_iv NS [FAULT]: one Icarus build per sample count (and planted fault:
-# the RTL variant dv/rtl-variant.sh makes from dv/faults/FAULT.sed)
+# build_iv KEY [FAULT]: one Icarus build per sample count (KEY = NS; fN: the
+# fast top at N) and planted fault (the RTL variant dv/rtl-variant.sh makes
+# from dv/faults/FAULT.sed)
 build_iv() {
-    local ns=$1 fault=${2:-} o=$work/iv_$1${2:+_$2} src=$R
+    local key=$1 ns=${1#f} fault=${2:-} o=$work/iv_$1${2:+_$2} src=$R files=rtl_files def=() top=
+    [ "$key" != "$ns" ] && { files=rtl_files_fast; def=(-DEF_FAST); top="fast "; }
     mkdir -p "$o"
     if [ -n "$fault" ]; then
         src=$o/rtl
-        bash "$root/dv/rtl-variant.sh" "$src" "$fault" || { echo "RESULT FAIL build icarus NS=$ns $fault: the variant"; return; }
+        bash "$root/dv/rtl-variant.sh" "$src" "$fault" || { echo "RESULT FAIL build icarus ${top}NS=$ns $fault: the variant"; return; }
     fi
     # shellcheck disable=SC2046 # the file list splits on purpose
-    iverilog -g2005 -I"$src" -o "$o/t.vvp" -Ptb_raster.NS="$ns" -Ptb_raster.W_MAX=$WM -Ptb_raster.H_MAX=$HM \
-        -Ptb_raster.E_MAX=$EM -Ptb_raster.FB_BITS=16 "$TB/tb_raster.v" $(rtl_files "$src") &&
-        echo "RESULT PASS build icarus NS=$ns ${fault}" || echo "RESULT FAIL build icarus NS=$ns $fault"
+    iverilog -g2005 -I"$src" "${def[@]}" -o "$o/t.vvp" -Ptb_raster.NS="$ns" -Ptb_raster.W_MAX=$WM -Ptb_raster.H_MAX=$HM \
+        -Ptb_raster.E_MAX=$EM -Ptb_raster.FB_BITS=16 "$TB/tb_raster.v" $($files "$src") &&
+        echo "RESULT PASS build icarus ${top}NS=$ns ${fault}" || echo "RESULT FAIL build icarus ${top}NS=$ns $fault"
 }
 build_vl() {
-    local ns=$1 o=$work/vl_$1
+    local key=$1 ns=${1#f} o=$work/vl_$1 files=$RTL def=() top=
+    [ "$key" != "$ns" ] && { files=$(rtl_files_fast "$R"); def=(-DEF_FAST); top="fast "; }
     mkdir -p "$o"
-    verilator --binary --timing -O1 -Wno-fatal -Wno-WIDTH -I"$R" --Mdir "$o/obj" --top-module tb_raster \
-        -GNS="$ns" -GW_MAX=$WM -GH_MAX=$HM -GE_MAX=$EM -GFB_BITS=16 "$TB/tb_raster.v" $RTL >"$o/build.log" 2>&1 &&
-        echo "RESULT PASS build verilator NS=$ns" || { tail -20 "$o/build.log"; echo "RESULT FAIL build verilator NS=$ns"; }
+    verilator --binary --timing -O1 -Wno-fatal -Wno-WIDTH -I"$R" "${def[@]}" --Mdir "$o/obj" --top-module tb_raster \
+        -GNS="$ns" -GW_MAX=$WM -GH_MAX=$HM -GE_MAX=$EM -GFB_BITS=16 "$TB/tb_raster.v" $files >"$o/build.log" 2>&1 &&
+        echo "RESULT PASS build verilator ${top}NS=$ns" || { tail -20 "$o/build.log"; echo "RESULT FAIL build verilator ${top}NS=$ns"; }
 }
 faults="rooks pad topclip lastedge div_floor sb_ring fwd span"
 for ns in 8 16 32; do submit "build_vl_$ns" build_vl $ns; done
 for ns in 8 16 32; do submit "build_iv_$ns" build_iv $ns; done
 for f in $faults; do submit "build_iv_$f" build_iv 8 "$f"; done
+# the fast top: SLB + FILL's faults in its copy (*_skip), and its own two
+faults_fast="rooks pad_skip topclip lastedge div_floor sb_ring fwd_skip span_skip skipstart spanq"
+submit build_vl_f8 build_vl f8
+submit build_iv_f8 build_iv f8
+for f in $faults_fast; do submit "build_iv_f8_$f" build_iv f8 "$f"; done
 
 # ---------------------------------------------------------------- vectors
 "$EF" gen -o "$work/gen" >"$work/logs/gen.log" 2>&1 || { cat "$work/logs/gen.log"; exit 1; }
@@ -136,9 +156,9 @@ while IFS=$'\t' read -r num file kind _ name _; do
     cases+=("gen_${num}_${name}_${ns}_$rule|$work/gen/$file|$ns|$rule|-"); k=$((k + 1))
 done < <(tail -n +3 "$work/gen/index.tsv")
 
-vectors() {      # vectors NAME INPUT NS RULE SIZE
+vectors() {      # vectors NAME INPUT NS RULE SIZE [SCHEDULE]
     local d=$work/vec/$1 args=()
-    [ "$4" != scene ] && args+=(--rule "$4"); [ "$5" != - ] && args+=(--size "$5")
+    [ "$4" != scene ] && args+=(--rule "$4"); [ "$5" != - ] && args+=(--size "$5"); [ -n "${6:-}" ] && args+=(--schedule "$6")
     "$EF" vectors "$2" -o "$d" --samples "$3" "${args[@]}" --formats hex >"$work/logs/vec_$1.log" 2>&1
 }
 mkdir -p "$work/vec"
@@ -147,7 +167,7 @@ mkdir -p "$work/vec"
 # EF_RTL_IV_CYCLES cycles (default 4000: it simulates this design at a few
 # thousand cycles per second), Verilator all.
 ivmax=${EF_RTL_IV_CYCLES:-4000}
-kept=() nskip=0
+kept=() nskip=0 fast=()
 for c in "${cases[@]}"; do
     IFS='|' read -r n i ns rule size <<<"$c"
     vectors "$n" "$i" "$ns" "$rule" "$size" || { echo "FAIL vectors $n"; fail=$((fail + 1)); continue; }
@@ -159,6 +179,11 @@ for c in "${cases[@]}"; do
     if [ "$me" -gt $EM ]; then nskip=$((nskip + 1)); continue; fi
     cyc=$(sed -n 's/.*"cycles": \([0-9]*\).*/\1/p' "$work/vec/$n/manifest.json")
     kept+=("$c|$cyc")
+    # the fast top's slice (stage 6): the NS 8 cases, in the overlap schedule
+    if [ "$ns" = 8 ]; then
+        vectors "fast_$n" "$i" 8 "$rule" "$size" overlap || { echo "FAIL vectors fast_$n"; fail=$((fail + 1)); continue; }
+        fast+=("fast_$n|$(sed -n 's/.*"cycles": \([0-9]*\).*/\1/p' "$work/vec/fast_$n/manifest.json")")
+    fi
 done
 echo "rtl-test: ${#kept[@]} cases ($nskip left out: a canvas over ${WM}x$HM or a shape over $EM edges)"
 cases=("${kept[@]}")
@@ -198,6 +223,16 @@ bpcase=$(printf '%s\n' "${cases[@]}" | grep '^svg_tiger' | head -n 1 | cut -d'|'
 bpns=$(printf '%s\n' "${cases[@]}" | grep '^svg_tiger' | head -n 1 | cut -d'|' -f3)
 submit icarus_bp run icarus "$bpcase" "$bpns" 20070101
 submit verilator_bp run verilator "$bpcase" "$bpns" 424242
+# 6. the fast top's slice
+nivf=0
+for c in "${fast[@]}"; do
+    IFS='|' read -r n cyc <<<"$c"
+    [ "$cyc" -le "$ivmax" ] && { submit "icarus_$n" run icarus "$n" f8; nivf=$((nivf + 1)); }
+    submit "verilator_$n" run verilator "$n" f8
+done
+fbp=$(printf '%s\n' "${fast[@]}" | cut -d'|' -f1 | grep tiger | head -n 1); [ -n "$fbp" ] || fbp=${fast[0]%%|*}
+submit icarus_fast_bp run icarus "$fbp" f8 20070101
+submit verilator_fast_bp run verilator "$fbp" f8 424242
 
 # ---------------------------------------------------------------- 4. refusals
 refusal() {      # refusal KIND SIM
@@ -297,24 +332,25 @@ first_diff() {
             "$1/${i%:*}.expected.hex" "$2/${i%:*}.actual.hex"
     done | sort -k2,2n -k1,1 | head -n 1
 }
-fault() {        # fault NAME CASE IFACE FIELDS
-    local def=$1 n=$2 want_if=$3 fields=$4 v=$work/vec/$2 a=$work/fault_$1 rc rep got_if got_cyc ind
+fault() {        # fault NAME CASE IFACE FIELDS [KEY: 8, or f8 for the fast top]
+    local label=$1 n=$2 want_if=$3 fields=$4 key=${5:-8} v=$work/vec/$2 a=$work/fault_${5:-8}_$1 rc rep got_if got_cyc ind
+    [ "$key" = 8 ] || label="$1 (fast top)"
     mkdir -p "$a"
-    ( vvp -n "$work/iv_8_$def/t.vvp" +cmd="$v/cmd.stim.hex" +out="$a" 2>&1 | tail -n 2 ) 2>/dev/null
+    ( vvp -n "$work/iv_${key}_$1/t.vvp" +cmd="$v/cmd.stim.hex" +out="$a" 2>&1 | tail -n 2 ) 2>/dev/null
     "$EF" check "$v" "$a" --cycles --errors 100000 >"$a/check.out" 2>"$a/check.err"; rc=$?
-    [ $rc = 1 ] || { echo "RESULT FAIL fault $def: edgeflag check exit $rc, expected 1"; return; }
+    [ $rc = 1 ] || { echo "RESULT FAIL fault $label: edgeflag check exit $rc, expected 1"; return; }
     # the earliest reported mismatch
     rep=$(grep -E '^[^ ]+: [a-z_]+: cycle [0-9]+' "$a/check.out" | sed -E 's/^[^ ]+: ([a-z_]+): cycle ([0-9]+)(.*)$/\2 \1 \3/' | sort -n -k1,1 | head -n 1)
     got_cyc=${rep%% *}; rep=${rep#* }; got_if=${rep%% *}
     ind=$(first_diff "$v" "$a")
     echo "earliest reported: $got_if cycle $got_cyc: ${rep#* }"; echo "independent first difference: $ind"
-    [ "$got_if" = "$want_if" ] || { echo "RESULT FAIL fault $def: first mismatch on $got_if, expected $want_if"; return; }
+    [ "$got_if" = "$want_if" ] || { echo "RESULT FAIL fault $label: first mismatch on $got_if, expected $want_if"; return; }
     # check places a pair at its expected cycle and names the actual one too
     # ("and the cycle: expected C1, actual C2"); an extra one at its actual cycle
     local alt
     alt=$(echo "$rep" | sed -n 's/.*and the cycle: expected [0-9]*, actual \([0-9]*\).*/\1/p')
     if [ "$ind" != "$got_if $got_cyc" ] && { [ -z "$alt" ] || [ "$ind" != "$got_if $alt" ]; }; then
-        echo "RESULT FAIL fault $def: reported at $got_if $got_cyc${alt:+ (actual $alt)}, the files first differ at $ind"; return
+        echo "RESULT FAIL fault $label: reported at $got_if $got_cyc${alt:+ (actual $alt)}, the files first differ at $ind"; return
     fi
     local ok=0 fld
     # a field marked as differing; "extra": a whole extra transaction (a span
@@ -324,8 +360,8 @@ fault() {        # fault NAME CASE IFACE FIELDS
         echo "$rep" | grep -qE "actual .*\b$fld=[^ ;]*\*" && ok=1
     done
     [ "$fields" = "-" ] && echo "$rep" | grep -qE 'missing transaction|extra transaction|fields differ|cycle differs' && ok=1
-    [ $ok = 1 ] || { echo "RESULT FAIL fault $def: none of the fields $fields is marked as differing"; return; }
-    echo "RESULT PASS fault $def: edgeflag check fails; first mismatch on $got_if at cycle $got_cyc (the files' first difference): $(echo "${rep#* }" | cut -c1-160) ($n)"
+    [ $ok = 1 ] || { echo "RESULT FAIL fault $label: none of the fields $fields is marked as differing"; return; }
+    echo "RESULT PASS fault $label: edgeflag check fails; first mismatch on $got_if at cycle $got_cyc (the files' first difference): $(echo "${rep#* }" | cut -c1-160) ($n)"
 }
 collect
 # The fault cases need vectors at 8 samples: the tiger for most, gen's directed cases for the rest.
@@ -334,6 +370,11 @@ for x in "tiger|$root/tests/data/svg/tiger.svg|scene|32x24" "tiger_nz|$root/test
 done
 for nm in outside-crossing slope-1-sample-per-row; do
     f=$(awk -F'\t' -v n=$nm '$5 == n { print $2 }' "$work/gen/index.tsv"); vectors "f_$nm" "$work/gen/$f" 8 scene -
+    vectors "ff_$nm" "$work/gen/$f" 8 scene - overlap
+done
+for x in "tiger|$root/tests/data/svg/tiger.svg|scene|32x24" "tiger_nz|$root/tests/data/svg/tiger.svg|nonzero|32x24" \
+         "tiger64|$root/tests/data/svg/tiger.svg|scene|64x48"; do
+    IFS='|' read -r n i rule size <<<"$x"; vectors "ff_$n" "$i" 8 "$rule" "$size" overlap
 done
 submit fault_rooks     fault rooks     f_tiger plot q
 submit fault_pad       fault pad       f_tiger_nz span mask,x,len,extra
@@ -343,8 +384,18 @@ submit fault_divfloor  fault div_floor f_tiger et_wr x,e,qs,rs
 submit fault_sbring    fault sb_ring   f_tiger et_wr x,e,qs,rs,dy
 submit fault_fwd       fault fwd       f_tiger span -
 submit fault_span      fault span      f_tiger span len
+submit fault_f_rooks     fault rooks     ff_tiger plot q f8
+submit fault_f_pad       fault pad_skip  ff_tiger_nz span mask,x,len,extra f8
+submit fault_f_topclip   fault topclip   ff_outside-crossing et_wr r0,x,e,slot f8
+submit fault_f_lastedge  fault lastedge  ff_tiger plot - f8
+submit fault_f_divfloor  fault div_floor ff_tiger et_wr x,e,qs,rs f8
+submit fault_f_sbring    fault sb_ring   ff_tiger et_wr x,e,qs,rs,dy f8
+submit fault_f_fwd       fault fwd_skip  ff_tiger span - f8
+submit fault_f_span      fault span_skip ff_tiger span len f8
+submit fault_f_skipstart fault skipstart ff_tiger seg - f8
+submit fault_f_spanq     fault spanq     ff_tiger64 span - f8
 collect
 
-echo "rtl-test: ${#cases[@]} cases in Verilator, $niv of them in Icarus; $(( $(date +%s) - t_start )) s"
+echo "rtl-test: ${#cases[@]} cases in Verilator, $niv of them in Icarus; the fast top ${#fast[@]} in Verilator, $nivf in Icarus; $(( $(date +%s) - t_start )) s"
 echo "rtl-test: $pass passed, $fail failed"
 [ $fail = 0 ]
