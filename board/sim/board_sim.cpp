@@ -420,7 +420,7 @@ int main(int argc, char **argv)
     }
     std::fflush(stdout);
 
-    uint64_t bytes_in = 0, bytes_out = 0, rst_until = 0;
+    uint64_t bytes_in = 0, bytes_out = 0, rst_until = bd.cyc < 16 ? 16 : 0;   // (no handshake: the reset here)
     FrameCount up, down;   // the host's frames the board took, the board's frames written to the host
     Kept kept;
     uint64_t first_in = 0, last_out = 0;   // the host's first byte taken, the board's last byte sent
@@ -487,14 +487,15 @@ int main(int argc, char **argv)
             }
             if (fault_at[F_UNPLUG] && !played[F_UNPLUG] && frames >= fault_at[F_UNPLUG] && !listen_path) {
                 played[F_UNPLUG] = 1;
+                // (said before the hang-up: a test reads it once the host has seen it)
+                std::fprintf(stderr, "board_sim: unplugged after the host's frame %llu\n", frames);
                 close(fd);   // the host's side hangs up
                 in_len = in_pos = out_len = 0;
                 if ((fd = new_pty(name, link)) < 0) {
                     std::perror("board_sim: the new pty");
                     return 1;
                 }
-                std::fprintf(stderr, "board_sim: unplugged after the host's frame %llu; the line is back at %s\n",
-                             frames, name.c_str());
+                std::fprintf(stderr, "board_sim: the line is back at %s\n", name.c_str());
             }
             if ((bd.cyc & ((1u << 22) - 1)) == 0 && max_seconds > 0 && now_s() - t0 > max_seconds)
                 break;
