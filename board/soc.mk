@@ -31,8 +31,9 @@ BOARD_TOOLS := $(EF_VENV)/.installed-soc build/fpga-bin/nextpnr-ecp5
 
 .PHONY: board-tools firmware bitstream board-sim board-sim-test board-sim-faults board-gpio-test board-sim-usb-test
 
-# the tools: Debian's cross compiler and picolibc, the pinned PyPI groups, the PATH shims
-$(BOARD_TOOLS): tools/requirements/soc.txt tools/requirements/fpga.txt tools/requirements/usb.txt tools/install-fpga.sh
+# the tools: Debian's cross compiler and picolibc, the pinned PyPI groups, the PATH shims (one
+# grouped recipe for both files: under make -j two copies of pip would race on one venv)
+$(BOARD_TOOLS) &: tools/requirements/soc.txt tools/requirements/fpga.txt tools/requirements/usb.txt tools/install-fpga.sh
 	bash tools/install-deps.sh board
 	bash tools/install-fpga.sh soc
 	touch $(BOARD_TOOLS)

@@ -478,7 +478,7 @@ struct UsbLink {
             }
             return;
         }
-        if (!resets.empty()) {
+        if (!resets.empty() && bulk_out.empty()) {   // what went out before the replug arrives first
             if (!*p.term_select)
                 return;   // no device on the bus yet (its pull-up is off)
             reset_id = resets.front();

@@ -11,12 +11,15 @@
 // --interfaces et_rd,plot,span,pix`.  Cycle 0 is the first cycle after the
 // reset sweep (init_done).
 //
-// Plusargs: +cmd= +etw= (stimulus files) +out= (dump folder prefix, with the
-// trailing /) +bp=SEED (random back-pressure on pix: ready 3 cycles in 4;
-// then only --transactions applies; et_wr is still replayed by its stamps,
-// which stays correct because a shape's records all precede its rows).
+// Plusargs: +cmd=FILE +etw=FILE (the stimulus, required) +out=DIR (required:
+// the dumps go to DIR/IFACE.actual.hex, nothing else is written) +bp=SEED
+// (random back-pressure on pix: ready 3 cycles in 4; then only
+// --transactions applies; et_wr is still replayed by its stamps, which stays
+// correct because a shape's records all precede its rows).
 // Parameters: NS, W_MAX, H_MAX, E_MAX, NCMD, NETW (the files' counts).
-// Result line: "tb_backend: PASS ..." or "tb_backend: FAIL ...".
+// Result line: "tb_backend: DONE ..." (exit 0; the dumps are for edgeflag
+// check) or "tb_backend: FAIL ..." (exit non-zero, $fatal: a bench check, a
+// file that cannot be opened, a missing plusarg; dv/tb/tb_files.vh).
 module tb_backend #(
     parameter NS    = 8,
     parameter W_MAX = 1024,
@@ -170,7 +173,7 @@ module tb_backend #(
     // ------------------------------------------------ files
     reg [CWD-1:0] cmd_mem [0:NCMD];
     reg [EW-1:0]  etw_mem [0:NETW];
-    reg [8*400-1:0] cmd_name, etw_name, out_name;
+    reg [8*240-1:0] cmd_name, etw_name, out_name;
     integer f_rd, f_pl, f_sp, f_px;
     integer ic, ie, errors, bp_seed, n_rd, n_pl, n_sp, n_px, n_bp;
     reg [47:0] cyc, limit, sclk;
@@ -186,19 +189,17 @@ module tb_backend #(
     reg        running, done, use_bp;
     reg [31:0] rnd;
 
+    localparam TB_NAME = "tb_backend";
+`include "tb_files.vh"
+
     task open_dump;
         output integer f;
         input [8*16-1:0] iface;
         input [8*40-1:0] desc;
-        reg [8*440-1:0] fname;
+        reg [8*240-1:0] fname;
         begin
-            $sformat(fname, "%0s%0s.actual.hex", out_name, iface);
-            f = $fopen(fname, "w");
-            if (f == 0) begin
-                $display("tb_backend: FAIL cannot open %0s%0s.actual.hex", out_name, iface);
-                $fatal(1, "tb_backend: FAIL");
-            end
-            $fwrite(f, "// edgeflag vectors format 1: interface %0s (%0s), role actual: dv/tb/tb_backend.v\n", iface, desc);
+            $sformat(fname, "%0s/%0s.actual.hex", out_name, iface);
+            tb_open_out(f, fname, iface, desc);
         end
     endtask
 
@@ -247,14 +248,23 @@ module tb_backend #(
     endtask
 
     initial begin
-        if (!$value$plusargs("cmd=%s", cmd_name)) cmd_name = "cmd.stim.hex";
-        if (!$value$plusargs("etw=%s", etw_name)) etw_name = "et_wr.expected.hex";
-        if (!$value$plusargs("out=%s", out_name)) out_name = "";
+        tb_arg($value$plusargs("cmd=%s", cmd_name), "cmd=FILE (cmd.stim.hex)");
+        tb_arg($value$plusargs("etw=%s", etw_name), "etw=FILE (et_wr.expected.hex)");
+        tb_arg($value$plusargs("out=%s", out_name), "out=DIR (where the dumps IFACE.actual.hex go)");
         use_bp = $value$plusargs("bp=%d", bp_seed);
         rnd = use_bp ? bp_seed : 0;
+        tb_need(cmd_name);
         $readmemh(cmd_name, cmd_mem, 0, NCMD - 1);
+        tb_need(etw_name);
         if (NETW > 0)
             $readmemh(etw_name, etw_mem, 0, NETW - 1);
+        // a stream the bench cannot replay (stamps that do not increase) is refused
+        for (fj = 1; fj < NCMD; fj = fj + 1)
+            if (cmd_mem[fj][CWD-1 -: 48] <= cmd_mem[fj-1][CWD-1 -: 48])
+                tb_fail("the command stamps do not increase (+cmd)");
+        for (fj = 1; fj < NETW; fj = fj + 1)
+            if (etw_mem[fj][EW-1 -: 48] <= etw_mem[fj-1][EW-1 -: 48])
+                tb_fail("the et_wr stamps do not increase (+etw)");
         for (fj = 0; fj < (1 << FB_BITS); fj = fj + 1)
             fb_gen[fj] = 16'd0;
         frame_no = 16'd0;

@@ -14,8 +14,10 @@
 // it is ready in every stamped cycle.  A stream DEC cannot take (stamps that
 // go backwards, a FRAME over W_MAX x H_MAX) is refused before it runs.
 //
-// Parameters: W_MAX, H_MAX, NCMD; plusargs +cmd= +seg= (paths).
-// Result line: "tb_dec: PASS ..." or "tb_dec: FAIL ...".
+// Parameters: W_MAX, H_MAX, NCMD; plusargs +cmd= +seg= (paths, required).
+// Result line: "tb_dec: DONE ..." (exit 0) or "tb_dec: FAIL ..." (exit
+// non-zero: a bench check, a refused stream, a file that cannot be opened, a
+// missing plusarg; the file helpers are dv/tb/tb_files.vh).
 `include "ef_ifaces.vh"
 module tb_dec #(
     parameter W_MAX = 16384,
@@ -82,26 +84,14 @@ module tb_dec #(
         end
     endtask
 
-    // An input that cannot be opened is a FAIL (a non-zero exit), never an
-    // empty memory that $readmemh only warns about.
-    task need;
-        input [8*240-1:0] fname;
-        integer fdn;
-        begin
-            fdn = $fopen(fname, "r");
-            if (fdn == 0) begin
-                $display("%s: FAIL cannot open %0s", "tb_dec", fname);
-                $fatal(1, "%s: FAIL", "tb_dec");
-            end
-            $fclose(fdn);
-        end
-    endtask
+    localparam TB_NAME = "tb_dec";
+`include "tb_files.vh"
 
     initial begin
-        if (!$value$plusargs("cmd=%s", cmd_name)) cmd_name = "cmd.stim.hex";
-        if (!$value$plusargs("seg=%s", seg_name)) seg_name = "seg.actual.hex";
+        tb_arg($value$plusargs("cmd=%s", cmd_name), "cmd=FILE (the command stream, cmd.stim.hex)");
+        tb_arg($value$plusargs("seg=%s", seg_name), "seg=FILE (where the seg dump goes)");
         if (NCMD > 0)
-            begin need(cmd_name); $readmemh(cmd_name, cmd_mem, 0, NCMD - 1); end
+            begin tb_need(cmd_name); $readmemh(cmd_name, cmd_mem, 0, NCMD - 1); end
         errors = 0;
         // Refuse what the hardware cannot take, naming the word (the line is
         // word + 5 in a file written by edgeflag: 4 header lines).
@@ -121,12 +111,7 @@ module tb_dec #(
         end
         ic = 0; nseg = 0; running = 1'b0; done = 1'b0; after_end = 1'b0; cyc = 0;
         last = NCMD > 0 ? cmd_mem[NCMD-1][CWD-1 -: 48] : 48'd0;
-        fo = $fopen(seg_name, "w");
-        if (fo == 0) begin
-            $display("tb_dec: FAIL cannot open %0s", seg_name);
-            $fatal(1, "tb_dec: FAIL");
-        end
-        $fwrite(fo, "// edgeflag vectors format 1: interface seg (DEC -> SETUP), role actual: dv/tb/tb_dec.v\n");
+        tb_open_out(fo, seg_name, "seg", "DEC -> SETUP");
         repeat (3) @(posedge clk);
         @(negedge clk);       // no rising edge sees reset change
         rst = 1'b0;

@@ -19,8 +19,10 @@
 // positions come from the generated ef_ifaces.vh (docs/vectors.md 8).
 //
 // Parameters: NS, H_MAX, E_MAX, NWR, NRD, NPLOT (NCMD unused);
-// plusargs +et_wr_in= +et_rd_exp= +plot= +et_rd= (paths).
-// Result line: "tb_etm: PASS ..." or "tb_etm: FAIL ...".
+// plusargs +et_wr_in= +et_rd_exp= +plot= +et_rd= (paths, required).
+// Result line: "tb_etm: DONE ..." (exit 0) or "tb_etm: FAIL ..." (exit
+// non-zero: a bench check, a refused stream, a file that cannot be opened, a
+// missing plusarg; the file helpers are dv/tb/tb_files.vh).
 `include "ef_ifaces.vh"
 module tb_etm #(
     parameter NS    = 8,
@@ -166,27 +168,15 @@ module tb_etm #(
         end
     endtask
 
-    // An input that cannot be opened is a FAIL (a non-zero exit), never an
-    // empty memory that $readmemh only warns about.
-    task need;
-        input [8*240-1:0] fname;
-        integer fdn;
-        begin
-            fdn = $fopen(fname, "r");
-            if (fdn == 0) begin
-                $display("%s: FAIL cannot open %0s", "tb_etm", fname);
-                $fatal(1, "%s: FAIL", "tb_etm");
-            end
-            $fclose(fdn);
-        end
-    endtask
+    localparam TB_NAME = "tb_etm";
+`include "tb_files.vh"
 
     initial begin
-        if (!$value$plusargs("et_wr_in=%s", wr_name))  wr_name = "et_wr.expected.hex";
-        if (!$value$plusargs("et_rd_exp=%s", rd_name)) rd_name = "et_rd.expected.hex";
-        if (!$value$plusargs("plot=%s", pl_name))      pl_name = "plot.expected.hex";
-        if (!$value$plusargs("et_rd=%s", out_name))    out_name = "et_rd.actual.hex";
-        need(wr_name); need(rd_name); need(pl_name);
+        tb_arg($value$plusargs("et_wr_in=%s", wr_name), "et_wr_in=FILE (et_wr.expected.hex)");
+        tb_arg($value$plusargs("et_rd_exp=%s", rd_name), "et_rd_exp=FILE (et_rd.expected.hex)");
+        tb_arg($value$plusargs("plot=%s", pl_name), "plot=FILE (plot.expected.hex)");
+        tb_arg($value$plusargs("et_rd=%s", out_name), "et_rd=FILE (where the et_rd dump goes)");
+        tb_need(wr_name); tb_need(rd_name); tb_need(pl_name);
         if (NWR > 0)   $readmemh(wr_name, wr_mem, 0, NWR - 1);
         if (NRD > 0)   $readmemh(rd_name, rd_mem, 0, NRD - 1);
         if (NPLOT > 0) $readmemh(pl_name, pl_mem, 0, NPLOT - 1);
@@ -221,12 +211,7 @@ module tb_etm #(
         last = NWR > 0 ? wr_mem[NWR-1][WWD-1 -: 48] : 48'd0;
         if (nreq > 0 && rq_cyc[nreq-1] > last) last = rq_cyc[nreq-1];
         if (NRD > 0 && rd_mem[NRD-1][RWD-1 -: 48] > last) last = rd_mem[NRD-1][RWD-1 -: 48];
-        fo = $fopen(out_name, "w");
-        if (fo == 0) begin
-            $display("tb_etm: FAIL cannot open %0s", out_name);
-            $fatal(1, "tb_etm: FAIL");
-        end
-        $fwrite(fo, "// edgeflag vectors format 1: interface et_rd (ETM -> AET), role actual: dv/tb/tb_etm.v\n");
+        tb_open_out(fo, out_name, "et_rd", "ETM -> AET");
         repeat (3) @(posedge clk);
         @(negedge clk);       // no rising edge sees reset change
         rst = 1'b0;

@@ -21,9 +21,9 @@
 //   IFACE    interface name as in the header ("span"); "" skips the check
 //   IN_FILE, OUT_FILE  paths; plusargs +in=PATH +out=PATH override them
 //   FINISH   1: call $finish (top level); 0: when instantiated by a wrapper
-// Result: one line "tb_readmem <iface>: PASS ..." or "... FAIL ...".
-// (Simulator exit codes after $fatal differ between Icarus and Verilator, so
-// the run script decides on that line.)
+// Result: one line "tb_readmem <iface>: PASS ..." (exit 0) or "... FAIL ..."
+// (with FINISH 1, exit non-zero by $fatal: vvp exits 1, a Verilator binary
+// aborts; tb_readmem_all does the same for its seven instances).
 module tb_readmem #(
     parameter P        = 75,
     parameter DEPTH    = 1,
@@ -41,7 +41,7 @@ module tb_readmem #(
     reg [8*240-1:0] line;
     reg [8*64-1:0]   word_s;
     integer fd, fo, i, n, r, loaded, errors, hdr_count, hdr_bits, fmt;
-    reg     have_iface, in_header;
+    reg     have_iface, in_header, in_ok;
 
     task fail;
         input [8*160-1:0] msg;
@@ -63,6 +63,7 @@ module tb_readmem #(
 
         // 1. Header comments: $readmemh ignores them, so read them as text.
         fd = $fopen(in_name, "r");
+        in_ok = fd != 0;
         if (fd == 0) begin
             fail("cannot open the input file");
         end else begin
@@ -138,9 +139,13 @@ module tb_readmem #(
             prev = cyc;
         end
 
-        // 4. Write back in the RTL dump layout.
-        fo = $fopen(out_name, "w");
-        if (fo == 0)
+        // 4. Write back in the RTL dump layout (not when there was no input).
+        fo = 1;
+        if (in_ok)
+            fo = $fopen(out_name, "w");
+        if (!in_ok)
+            ;
+        else if (fo == 0)
             fail("cannot open the output file");
         else begin
             // No header: the bare layout of an RTL dump ($fwrite("%h\n")),

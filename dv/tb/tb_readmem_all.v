@@ -33,6 +33,14 @@ module tb_readmem_all #(
     tb_readmem #(.P(68),  .DEPTH(D_PIX),   .IFACE("pix"),   .FINISH(0),
                  .IN_FILE({DIR, "/pix.expected.hex"}),    .OUT_FILE({OUT, "/pix.actual.hex"}))   u_pix ();
 
-    // Every instance does its work in an initial block at time 0.
-    initial #1 $finish;
+    // Every instance does its work in an initial block at time 0; then the
+    // run ends, non-zero ($fatal) when any of them failed (its FAIL line
+    // printed), so a caller can go by the exit status.
+    initial begin
+        #1;
+        if (u_cmd.errors != 0 || u_seg.errors != 0 || u_et_wr.errors != 0 || u_et_rd.errors != 0 ||
+            u_plot.errors != 0 || u_span.errors != 0 || u_pix.errors != 0)
+            $fatal(1, "tb_readmem_all: FAIL");
+        $finish;
+    end
 endmodule

@@ -9,8 +9,10 @@
 // ef_ifaces.vh (docs/vectors.md section 8).  ETM is modelled as always ready
 // (the reference); the bench asserts seg_ready in every stamped cycle.
 //
-// Parameters: NS, H_MAX, NSEG, NCMD; plusargs +seg_in= +cmd= +et_wr= (paths).
-// Result line: "tb_setup: PASS ..." or "tb_setup: FAIL ...".
+// Parameters: NS, H_MAX, NSEG, NCMD; plusargs +seg_in= +cmd= +et_wr= (paths,
+// required).  Result line: "tb_setup: DONE ..." (exit 0) or "tb_setup: FAIL
+// ..." (exit non-zero: a bench check, a refused stream, a file that cannot be
+// opened, a missing plusarg; the file helpers are dv/tb/tb_files.vh).
 `include "ef_ifaces.vh"
 module tb_setup #(
     parameter NS    = 8,
@@ -73,26 +75,14 @@ module tb_setup #(
         end
     endtask
 
-    // An input that cannot be opened is a FAIL (a non-zero exit), never an
-    // empty memory that $readmemh only warns about.
-    task need;
-        input [8*240-1:0] fname;
-        integer fdn;
-        begin
-            fdn = $fopen(fname, "r");
-            if (fdn == 0) begin
-                $display("%s: FAIL cannot open %0s", "tb_setup", fname);
-                $fatal(1, "%s: FAIL", "tb_setup");
-            end
-            $fclose(fdn);
-        end
-    endtask
+    localparam TB_NAME = "tb_setup";
+`include "tb_files.vh"
 
     initial begin
-        if (!$value$plusargs("seg_in=%s", seg_name)) seg_name = "seg.expected.hex";
-        if (!$value$plusargs("cmd=%s", cmd_name))   cmd_name = "cmd.stim.hex";
-        if (!$value$plusargs("et_wr=%s", out_name)) out_name = "et_wr.actual.hex";
-        need(seg_name); need(cmd_name);
+        tb_arg($value$plusargs("seg_in=%s", seg_name), "seg_in=FILE (seg.expected.hex)");
+        tb_arg($value$plusargs("cmd=%s", cmd_name), "cmd=FILE (cmd.stim.hex)");
+        tb_arg($value$plusargs("et_wr=%s", out_name), "et_wr=FILE (where the et_wr dump goes)");
+        tb_need(seg_name); tb_need(cmd_name);
         if (NSEG > 0) $readmemh(seg_name, seg_mem, 0, NSEG - 1);
         if (NCMD > 0) $readmemh(cmd_name, cmd_mem, 0, NCMD - 1);
         errors = 0; nframe = 0;
@@ -119,12 +109,7 @@ module tb_setup #(
             end
         is = 0; nout = 0; running = 1'b0; done = 1'b0; cyc = 0;
         last = NSEG > 0 ? seg_mem[NSEG-1][SWD-1 -: 48] : 48'd0;
-        fo = $fopen(out_name, "w");
-        if (fo == 0) begin
-            $display("tb_setup: FAIL cannot open %0s", out_name);
-            $fatal(1, "tb_setup: FAIL");
-        end
-        $fwrite(fo, "// edgeflag vectors format 1: interface et_wr (SETUP -> ETM), role actual: dv/tb/tb_setup.v\n");
+        tb_open_out(fo, out_name, "et_wr", "SETUP -> ETM");
         repeat (3) @(posedge clk);
         @(negedge clk);       // no rising edge sees reset change
         rst = 1'b0;

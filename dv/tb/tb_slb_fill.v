@@ -25,7 +25,9 @@
 //
 // Parameters: NS, W_MAX, NPLOT, NCMD, PLOT_FILE, CMD_FILE, SPAN_FILE,
 // EXP_FILE, NEXP, COV_LAG, ELASTIC (plusargs +plot= +cmd= +span= +exp= override the paths).
-// Result line: "tb_slb_fill: PASS ..." or "tb_slb_fill: FAIL ...".
+// Result line: "tb_slb_fill: PASS ..." (its own comparison, NEXP > 0) or
+// "DONE ..." (exit 0), or "tb_slb_fill: FAIL ..." (exit non-zero: a bench
+// check, a file that cannot be opened; the file helpers are dv/tb/tb_files.vh).
 module tb_slb_fill #(
     parameter NS        = 8,
     parameter W_MAX     = 16384,
@@ -147,20 +149,8 @@ module tb_slb_fill #(
         end
     endtask
 
-    // An input that cannot be opened is a FAIL (a non-zero exit), never an
-    // empty memory that $readmemh only warns about.
-    task need;
-        input [8*240-1:0] fname;
-        integer fdn;
-        begin
-            fdn = $fopen(fname, "r");
-            if (fdn == 0) begin
-                $display("%s: FAIL cannot open %0s", "tb_slb_fill", fname);
-                $fatal(1, "%s: FAIL", "tb_slb_fill");
-            end
-            $fclose(fdn);
-        end
-    endtask
+    localparam TB_NAME = "tb_slb_fill";
+`include "tb_files.vh"
 
     initial begin
         // (string parameters into the name registers: zero-extended, as meant)
@@ -172,9 +162,9 @@ module tb_slb_fill #(
         if (!$value$plusargs("exp=%s", exp_name))   exp_name = EXP_FILE;
         /* verilator lint_on WIDTH */
         if (NPLOT > 0)
-            begin need(plot_name); $readmemh(plot_name, plot_mem, 0, NPLOT - 1); end
+            begin tb_need(plot_name); $readmemh(plot_name, plot_mem, 0, NPLOT - 1); end
         if (NCMD > 0)
-            begin need(cmd_name); $readmemh(cmd_name, cmd_mem, 0, NCMD - 1); end
+            begin tb_need(cmd_name); $readmemh(cmd_name, cmd_mem, 0, NCMD - 1); end
         if (NEXP > 0) begin
             if (exp_name == 0) begin
                 $display("tb_slb_fill: FAIL NEXP > 0 needs EXP_FILE or +exp=");
@@ -188,15 +178,10 @@ module tb_slb_fill #(
         last_stamp = NPLOT > 0 ? plot_mem[NPLOT-1][PW-1 -: 48] : 48'd0;
         // Generous: every row could scan W_MAX+2 cells and wait for COV.
         limit = last_stamp + 48'd4 * (W_MAX + 2) + 48'd100000;
-        fo = $fopen(span_name, "w");
-        if (fo == 0) begin
-            $display("tb_slb_fill: FAIL cannot open %0s", span_name);
-            $fatal(1, "tb_slb_fill: FAIL");
-        end
         // `edgeflag check` refuses an empty file (it cannot tell "no spans"
         // from "dump never flushed"), so the dump always starts with a
         // comment naming its interface (docs/vectors.md 3 allows it).
-        $fwrite(fo, "// edgeflag vectors format 1: interface span (FILL -> COV), role actual: dv/tb/tb_slb_fill.v\n");
+        tb_open_out(fo, span_name, "span", "FILL -> COV");
         repeat (3) @(posedge clk);
         @(negedge clk);       // no rising edge sees reset change
         rst = 1'b0;

@@ -180,11 +180,18 @@ pass_run() {
         n=$(count "$f")
         printf '%s\n' "$line" | grep -Eq "[:,] $n ${i}[,;]" || miss="$miss $i($n)"
     done
+    # one frame length (docs/microarch.md 4, item 7): the bench's, the manifest's and edgeflag vectors'
+    # own line (not for the fast top, whose frame is its own, shorter: the line says so)
+    local mc
+    mc=$(sed -n 's/.*"cycles": \([0-9]*\).*/\1/p' "$dir/manifest.json")
+    case $line in *"(the DUT's, ef_raster_fast"*) mc=fast ;; esac
+    [ "$mc" = fast ] || { [ -n "$mc" ] && printf '%s\n' "$line" | grep -q "; a frame of $mc cycles" && grep -q ", $mc cycles; " "$dir.log"; } ||
+        miss="$miss frame($mc: the manifest's; the vectors line: $(grep -o ', [0-9]* cycles; ' "$dir.log"))"
     if [ "$(cat "$work/$name.rc")" = 0 ] && [ "${line#tb_lockstep: PASS}" != "$line" ] && [ -z "$miss" ]; then
         ok "lockstep $name: ${line#tb_lockstep: PASS }"
     else
         cat "$work/$name.sim"
-        bad "lockstep $name: want PASS with every transaction of the files checked (exit $(cat "$work/$name.rc"); counts differ:$miss)"
+        bad "lockstep $name: want PASS with every transaction of the files checked and the manifest's frame length (exit $(cat "$work/$name.rc"); counts differ:$miss)"
     fi
 }
 

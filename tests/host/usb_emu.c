@@ -39,8 +39,10 @@
  *                       URB goes to its USB core's host controller (board/sim/usb_link.cpp), which
  *                       carries it out as full-speed transactions on the gateware's UTMI side;
  *                       enumeration happens here, and libusb sees the gateware's descriptors.
- *                       Faults: unplug-at, unplug-in, stall-at (the board's CPU stops: the core
- *                       NAKs), corrupt-out, eacces; the report's board counters come from STATUS.
+ *                       Faults: unplug-at (the board takes exactly BYTES: the packets of the
+ *                       crossing transfer before that point reach it), unplug-in, stall-at (the
+ *                       board's CPU stops: the core NAKs), corrupt-out, eacces; the report's board
+ *                       counters come from STATUS.
  *     --report FILE     what the board saw, as key=value lines (written at the end)
  *     --dut-log FILE    every command word the DUT received, raw, in order
  *   Exit status: the last command's; 70 when the emulation itself failed.
@@ -357,10 +359,14 @@ static void unplug(emu_board *eb)
     eb->gone = 1;
     urb_fail_all(eb, -ENODEV);
     if (eb->emu->soc) {
-        /* the simulated board drops them (their completions, if any, are ignored) */
+        /* The simulated board drops them (their completions are ignored), except bulk OUT
+         * transfers: those came before the unplug point, so their bytes reach the board, as the
+         * C board takes them at once; the host sees them fail all the same. */
         urb_rec *r;
         while ((r = urb_pop(&eb->pend_soc))) {
-            soc_send(eb, USBW_CANCEL, r->id, 0, 0, NULL, 0);
+            const struct usbdevfs_urb *u = (const struct usbdevfs_urb *)r->urb->data;
+            if (!(u->type == USBDEVFS_URB_TYPE_BULK && u->endpoint == EF_USB_EP_OUT))
+                soc_send(eb, USBW_CANCEL, r->id, 0, 0, NULL, 0);
             r->status = -ENODEV, r->actual = 0;
             urb_append(&eb->done, r);
         }
@@ -715,7 +721,16 @@ static void soc_submit(emu_board *eb, urb_rec *r)
         if (f->corrupt_out >= start && f->corrupt_out < start + n)
             d[f->corrupt_out - start] ^= 0x01;
         if (f->unplug_at > 0 && start + n > f->unplug_at) {
-            f->unplug_at = 0; /* this transfer never arrives */
+            /* The board takes exactly unplug_at bytes: the packets of this transfer before that
+             * point reach it (a transfer of this program's, whose completion nobody awaits),
+             * then it vanishes and the URB fails.  So a resumable run is left whatever way the
+             * host cut its writes into transfers. */
+            const long long k = f->unplug_at - start;
+            f->unplug_at = 0;
+            if (k > 0)
+                soc_send(eb, USBW_SUBMIT, SOC_SYNC | ++eb->next_id, USBW_BULK | (uint32_t)EF_USB_EP_OUT << 8, 0, d,
+                         (uint32_t)k);
+            eb->out_submitted += k;
             r->status = -ENODEV, r->actual = 0;
             urb_append(&eb->done, r);
             unplug(eb);
@@ -1165,6 +1180,7 @@ static void report(emu *e, const char *path, const int *rc, int nruns)
         KV("cmds", "%llu", (unsigned long long)s.cmds);
         KV("records", "%llu", (unsigned long long)s.records);
         KV("input_crc", "%08x", (unsigned)s.input_crc);
+        KV("rx_seq", "%u", (unsigned)s.rx_seq);
         KV("state", "%d", s.state);
 #undef KV
     }

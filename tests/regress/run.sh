@@ -128,6 +128,25 @@ if [ $lprc = 0 ] && [ $lmrc = 0 ] && [ "$ncanvas" -gt 0 ] && [ "$nedges" -gt 0 ]
 else
     bad "DUT limits" "parallel $lprc, merge $lmrc, $nref refused ($ncanvas canvas, $nedges edges, $nsamp samples); $(grep -E '^runs|^RESULT' L/merged/summary.txt)"
 fi
+# --fit: the same limits go to edgeflag gen, which fits what it can (canvases scaled, shapes
+# split where the picture stays) and refuses the rest by name; nothing over the limits reaches
+# vectors or the DUT.  Shard 2/26 holds zigzag-4096 (case 53: one contour of 4096 edges, over 200).
+"$EDGEFLAG" gen -o Fgen --shard 2/26 >/dev/null 2>&1
+nbig=$(cd Fgen && awk '/^scene/ && ($2 > 64 || $3 > 64) { n++ } END { print n + 0 }' case_*.scene)
+"$SHARD" --out F --shard 2/26 --fit --dut-limits 64x64 --dut-edges 200 --dut-samples 8,16 >f.log 2>&1
+frc=$?
+F=F/shard_2_of_26/cases.tsv
+fgen=$(awk -F'\t' '$5 == "refused" && $7 ~ /^refused before simulation: edgeflag gen: / { n++ } END { print n + 0 }' "$F")
+fother=$(awk -F'\t' '$5 == "refused" && $7 !~ /^refused before simulation: edgeflag gen: / { n++ } END { print n + 0 }' "$F")
+fpass=$(awk -F'\t' '$5 == "pass" { n++ } END { print n + 0 }' "$F")
+fs=$(awk -F'\t' 'NR > 1 && $2 != "-" && $2 != 8 && $2 != 16 { n++ } END { print n + 0 }' "$F")
+if [ $frc = 0 ] && [ "$nbig" -gt 0 ] && [ "$fother" = 0 ] && [ "$fs" = 0 ] && [ "$fpass" -gt 0 ] &&
+   grep -q "^53	-	-	.*	refused	.*edgeflag gen: shape 0 has 4096 edges, over the DUT's 200, and its contour 0 alone has 4096" "$F" &&
+   [ "$(grep -c '<skipped message="refused before simulation: edgeflag gen: ' F/shard_2_of_26/junit.xml)" = "$fgen" ]; then
+    ok "--fit (64x64, 200 edges, 8 and 16 samples): gen fits the shard's $nbig canvases over 64x64 ($fpass runs pass), refuses $fgen case(s) by name (zigzag-4096: a contour of 4096 edges), nothing refused later, every run at 8 or 16 samples"
+else
+    bad "--fit" "exit $frc, big $nbig, pass $fpass, gen-refused $fgen, other refusals $fother, other sample counts $fs; $(tail -n 3 "$F")"
+fi
 # A DUT that refuses a case itself (exit non-zero with its REFUSED line): refused, its own words quoted.
 "$SHARD" --out D --shard 9/130 --run 'echo "tb_raster: REFUSED cmd.stim.hex:5: FRAME canvas over the hardware W_MAX x H_MAX"; exit 1' >d.log 2>&1
 drc=$?

@@ -89,14 +89,14 @@ blk_run() {
         local p=() kv
         for kv in "${params[@]}"; do p+=(-P"$tb.$kv"); done
         # shellcheck disable=SC2086
-        iverilog -g2005 -I"$inc" -I"$src" "${p[@]}" -o "$o/tb.vvp" "$TB/$tb.v" $files >"$o/build.log" 2>&1 ||
+        iverilog -g2005 -I"$inc" -I"$src" -I"$TB" "${p[@]}" -o "$o/tb.vvp" "$TB/$tb.v" $files >"$o/build.log" 2>&1 ||
             { cat "$o/build.log"; echo "$tb: FAIL compile"; return 1; }
         vvp -n "$o/tb.vvp" "${plus[@]}" >"$o/sim" 2>&1
     else
         local g=() kv
         for kv in "${params[@]}"; do g+=(-G"$kv"); done
         # shellcheck disable=SC2086
-        verilator --binary --timing -Wno-fatal -Wno-WIDTH -I"$inc" -I"$src" --Mdir "$o/obj" --top-module "$tb" \
+        verilator --binary --timing -Wno-fatal -Wno-WIDTH -I"$inc" -I"$src" -I"$TB" --Mdir "$o/obj" --top-module "$tb" \
             "${g[@]}" "$TB/$tb.v" $files -o tb >"$o/build.log" 2>&1 ||
             { tail -n 20 "$o/build.log"; echo "$tb: FAIL verilator build"; return 1; }
         "$o/obj/tb" "${plus[@]}" >"$o/sim" 2>&1
@@ -201,13 +201,13 @@ refuse() {
     n=$(count "$d/cmd.stim.hex"); nw=$(count "$d/et_wr.expected.hex")
     nr=$(count "$d/et_rd.expected.hex"); np=$(count "$d/plot.expected.hex")
     # 1. FRAME 40x30 on a DEC built for W_MAX = 32
-    iverilog -g2005 -I"$inc" -I"$RTLA" -Ptb_dec.NCMD="$n" -Ptb_dec.W_MAX=32 -o "$d/dec.vvp" "$TB/tb_dec.v" $A_DEC &&
+    iverilog -g2005 -I"$inc" -I"$RTLA" -I"$TB" -Ptb_dec.NCMD="$n" -Ptb_dec.W_MAX=32 -o "$d/dec.vvp" "$TB/tb_dec.v" $A_DEC &&
         vvp -n "$d/dec.vvp" +cmd="$d/cmd.stim.hex" +seg="$d/seg.actual.hex" >"$d/sim1" 2>&1
     want="^tb_dec: FAIL $d/cmd.stim.hex: word 0 \\(line 5\\): FRAME 40x30 is over W_MAX x H_MAX = 32x16384\$"
     grep -Eq "$want" "$d/sim1" || { cat "$d/sim1"; echo "RESULT FAIL refuse: canvas over W_MAX not refused as expected"; return; }
     # 2. a shape of more than E_MAX = 4 edges
     # shellcheck disable=SC2086
-    iverilog -g2005 -I"$inc" -I"$RTLA" -Ptb_etm.NWR="$nw" -Ptb_etm.NRD="$nr" -Ptb_etm.NPLOT="$np" -Ptb_etm.E_MAX=4 \
+    iverilog -g2005 -I"$inc" -I"$RTLA" -I"$TB" -Ptb_etm.NWR="$nw" -Ptb_etm.NRD="$nr" -Ptb_etm.NPLOT="$np" -Ptb_etm.E_MAX=4 \
         -o "$d/etm.vvp" "$TB/tb_etm.v" $A_ETM &&
         vvp -n "$d/etm.vvp" +et_wr_in="$d/et_wr.expected.hex" +et_rd_exp="$d/et_rd.expected.hex" \
             +plot="$d/plot.expected.hex" +et_rd="$d/et_rd.actual.hex" >"$d/sim2" 2>&1
@@ -216,7 +216,7 @@ refuse() {
     # 3. commands 3 and 4 swapped: line 9 (word 4) has the smaller stamp
     awk '!/^\/\// { k++; if (k == 4) { held = $0; next } if (k == 5) { print; print held; next } } { print }' \
         "$d/cmd.stim.hex" >"$d/swapped.hex"
-    iverilog -g2005 -I"$inc" -I"$RTLA" -Ptb_dec.NCMD="$n" -o "$d/dec2.vvp" "$TB/tb_dec.v" $A_DEC &&
+    iverilog -g2005 -I"$inc" -I"$RTLA" -I"$TB" -Ptb_dec.NCMD="$n" -o "$d/dec2.vvp" "$TB/tb_dec.v" $A_DEC &&
         vvp -n "$d/dec2.vvp" +cmd="$d/swapped.hex" +seg="$d/seg2.actual.hex" >"$d/sim3" 2>&1
     grep -Eq "^tb_dec: FAIL $d/swapped.hex: word 4 \\(line 9\\): cycle stamp [0-9]+ does not increase" "$d/sim3" ||
         { cat "$d/sim3"; echo "RESULT FAIL refuse: stamps going backwards not refused as expected"; return; }

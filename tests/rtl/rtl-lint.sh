@@ -131,7 +131,7 @@ linted=()
 # vl NAME ARGS...: verilator --lint-only -Wall with the waivers must print nothing
 vl() {
     local name=$1 out a; shift
-    out=$(verilator --lint-only -Wall --timing -I"$R" "$W" "$@" 2>&1)
+    out=$(verilator --lint-only -Wall --timing -I"$R" -Idv/tb "$W" "$@" 2>&1)
     for a in "$@"; do case $a in *.v | *.sv | *.vh) linted+=("$a") ;; esac; done
     if [ -n "$out" ]; then bad "verilator -Wall $name is not silent" "$out"; return 1; fi
     return 0
@@ -163,6 +163,8 @@ for t in ef_slb_fill_skip ef_spanq; do
 done
 # the includes, as the RTL's own files (linted through every module above)
 linted+=("$R/ef_ifaces.vh" "$R/ef_ns.vh" "$R/ef_rooks.vh")
+# the block benches' file helpers, linted through every bench that includes them
+linted+=(dv/tb/tb_files.vh)
 TB=dv/tb
 # shellcheck disable=SC2086
 {

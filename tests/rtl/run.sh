@@ -142,6 +142,10 @@ T=$work/vec/tiger
 if ! "$EF" vectors "$tiger" -o "$T" --size 160x120 --samples 8 >"$work/logs/vectors_tiger.log" 2>&1; then
     cat "$work/logs/vectors_tiger.log"; echo "test-rtl: edgeflag vectors failed on the tiger"; exit 1
 fi
+# a small set for the benches' exit tests (section "exits")
+if ! "$EF" vectors "$tiger" -o "$work/vec/small" --size 32x24 --samples 8 >"$work/logs/vectors_small.log" 2>&1; then
+    cat "$work/logs/vectors_small.log"; echo "test-rtl: edgeflag vectors failed on the tiger at 32x24"; exit 1
+fi
 "$EF" gen -o "$work/gen" >"$work/logs/gen.log" 2>&1 || { cat "$work/logs/gen.log"; exit 1; }
 
 # ---------------------------------------------------------------- 2. $readmemh
@@ -235,7 +239,7 @@ slb() {
         --interfaces cmd,plot,span "$@" >"$d/vectors.log" 2>&1 ||
         { cat "$d/vectors.log"; echo "RESULT FAIL slb $name: edgeflag vectors"; return; }
     np=$(count "$d/plot.expected.hex"); nc=$(count "$d/cmd.stim.hex")
-    iverilog -g2005 -I"$RI" -o "$d/slb.vvp" -Ptb_slb_fill.NS="$ns" -Ptb_slb_fill.NPLOT="$np" \
+    iverilog -g2005 -I"$RI" -I"$TB" -o "$d/slb.vvp" -Ptb_slb_fill.NS="$ns" -Ptb_slb_fill.NPLOT="$np" \
         -Ptb_slb_fill.NCMD="$nc" "$TB/tb_slb_fill.v" $RTL ||
         { echo "RESULT FAIL slb $name: compile"; return; }
     vvp -n "$d/slb.vvp" +plot="$d/plot.expected.hex" +cmd="$d/cmd.stim.hex" \
@@ -289,7 +293,7 @@ slb_vl() {
     "$EF" vectors "$tiger" -o "$d" --samples "$ns" --rule "$rule" --size 160x120 --formats hex \
         --interfaces cmd,plot,span >"$d/vectors.log" 2>&1 || { echo "RESULT FAIL slb/verilator: vectors"; return; }
     np=$(count "$d/plot.expected.hex"); nc=$(count "$d/cmd.stim.hex")
-    verilator --binary --timing -Wno-fatal -Wno-WIDTH -I"$RI" --Mdir "$d/obj" --top-module tb_slb_fill \
+    verilator --binary --timing -Wno-fatal -Wno-WIDTH -I"$RI" -I"$TB" --Mdir "$d/obj" --top-module tb_slb_fill \
         -GNS="$ns" -GNPLOT="$np" -GNCMD="$nc" "$TB/tb_slb_fill.v" $RTL -o tb >"$d/build.log" 2>&1 ||
         { tail -n 20 "$d/build.log"; echo "RESULT FAIL slb/verilator: build"; return; }
     "$d/obj/tb" +plot="$d/plot.expected.hex" +cmd="$d/cmd.stim.hex" +span="$d/span.actual.hex" >"$d/sim" 2>&1
@@ -316,7 +320,7 @@ mutant() {
             inc=$d/rtl rtl="$d/rtl/ef_slb_fill.v $d/rtl/ef_slb_ram.v" ;;
         cov-lag) lag=1; elastic=1 ;;
     esac
-    iverilog -g2005 -I"$inc" -o "$d/slb.vvp" -Ptb_slb_fill.NS=8 -Ptb_slb_fill.NPLOT="$np" -Ptb_slb_fill.NCMD="$nc" \
+    iverilog -g2005 -I"$inc" -I"$TB" -o "$d/slb.vvp" -Ptb_slb_fill.NS=8 -Ptb_slb_fill.NPLOT="$np" -Ptb_slb_fill.NCMD="$nc" \
         -Ptb_slb_fill.COV_LAG="$lag" -Ptb_slb_fill.ELASTIC="$elastic" "$TB/tb_slb_fill.v" $rtl || { echo "RESULT FAIL mutant $kind: compile"; return; }
     vvp -n "$d/slb.vvp" +plot="$d/plot.expected.hex" +cmd="$d/cmd.stim.hex" +span="$d/span.actual.hex" >"$d/sim" 2>&1
     cat "$d/sim"
@@ -337,65 +341,126 @@ submit mutant_no_forwarding mutant no-forwarding
 submit mutant_cov_lag mutant cov-lag
 
 # ---------------------------------------------------------------- exits
-# Every block bench and the $readmemh reader exits non-zero, with its FAIL
-# line, when an input cannot be opened or its output cannot be written
-# (Icarus; a $fatal exits 1), and 0 with its DONE/PASS line on a good run.
-bench_exits() {
-    local d=$work/exits T=$work/vec/tiger tb o out rc files io good bad_in
-    mkdir -p "$d"
-    for tb in tb_dec tb_setup tb_etm tb_slb_fill tb_readmem; do
-        case $tb in
-            tb_dec)   files="$root/rtl/ef_dec.v"; io="+cmd=$T/cmd.stim.hex +seg=OUT"
-                      good="-Ptb_dec.NCMD=$(count "$T/cmd.stim.hex")"; bad_in="+cmd=$d/no-such.hex +seg=$d/x.hex" ;;
-            tb_setup) files="$root/rtl/ef_setup.v $root/rtl/ef_div.v $root/rtl/ef_slb_ram.v"
-                      io="+seg_in=$T/seg.expected.hex +cmd=$T/cmd.stim.hex +et_wr=OUT"
-                      good="-Ptb_setup.NCMD=$(count "$T/cmd.stim.hex") -Ptb_setup.NSEG=$(count "$T/seg.expected.hex")"
-                      bad_in="+seg_in=$d/no-such.hex +cmd=$T/cmd.stim.hex +et_wr=$d/x.hex" ;;
-            tb_etm)   files="$root/rtl/ef_etm.v $root/rtl/ef_slb_ram.v"
-                      io="+et_wr_in=$T/et_wr.expected.hex +et_rd_exp=$T/et_rd.expected.hex +plot=$T/plot.expected.hex +et_rd=OUT"
-                      good="-Ptb_etm.H_MAX=256 -Ptb_etm.NWR=$(count "$T/et_wr.expected.hex") -Ptb_etm.NRD=$(count "$T/et_rd.expected.hex") -Ptb_etm.NPLOT=$(count "$T/plot.expected.hex")"
-                      bad_in="+et_wr_in=$d/no-such.hex +et_rd_exp=$T/et_rd.expected.hex +plot=$T/plot.expected.hex +et_rd=$d/x.hex" ;;
-            tb_slb_fill) files="$root/rtl/ef_slb_fill.v $root/rtl/ef_slb_ram.v"
-                      io="+plot=$T/plot.expected.hex +cmd=$T/cmd.stim.hex +span=OUT"
-                      good="-Ptb_slb_fill.NPLOT=$(count "$T/plot.expected.hex") -Ptb_slb_fill.NCMD=$(count "$T/cmd.stim.hex")"
-                      bad_in="+plot=$d/no-such.hex +cmd=$T/cmd.stim.hex +span=$d/x.hex" ;;
-            tb_readmem) files=""; io="+in=$T/plot.expected.hex +out=OUT"
-                      # shellcheck disable=SC2089 # the quotes are iverilog's: a string parameter
-                      good="-Ptb_readmem.P=36 -Ptb_readmem.DEPTH=$(count "$T/plot.expected.hex") -Ptb_readmem.IFACE=\"plot\""
-                      bad_in="+in=$d/no-such.hex +out=$d/x.hex" ;;
-        esac
-        o=$d/$tb.vvp
-        # shellcheck disable=SC2086,SC2090 # the lists split on purpose
-        iverilog -g2005 -I"$RI" $good -o "$o" "$TB/$tb.v" $files >"$d/$tb.build" 2>&1 ||
-            { cat "$d/$tb.build"; echo "RESULT FAIL exits $tb: compile"; return; }
-        # a good run
-        # shellcheck disable=SC2086
-        out=$( ( vvp -n "$o" ${io//OUT/$d/$tb.actual.hex} 2>&1 ) 2>/dev/null ); rc=$?
-        if [ $rc != 0 ] || ! printf '%s\n' "$out" | grep -Eq "^$tb( plot)?: (DONE|PASS)"; then
-            printf '%s\n' "$out" | tail -n 3; echo "RESULT FAIL exits $tb: a good run exit $rc"; return
-        fi
-        # an input that is not there
-        # shellcheck disable=SC2086
-        out=$( ( vvp -n "$o" $bad_in 2>&1 ) 2>/dev/null ); rc=$?
-        if [ $rc = 0 ] || ! printf '%s\n' "$out" | grep -Eq "^$tb( plot)?: (FAIL|error).*(cannot open|no-such)"; then
-            printf '%s\n' "$out" | tail -n 3; echo "RESULT FAIL exits $tb: a missing input: exit $rc"; return
-        fi
-        # an output that cannot be written
-        # shellcheck disable=SC2086
-        out=$( ( vvp -n "$o" ${io//OUT/$d/no-such-dir/x.hex} 2>&1 ) 2>/dev/null ); rc=$?
-        if [ $rc = 0 ] || ! printf '%s\n' "$out" | grep -Eq "^$tb( plot)?: (FAIL|error)"; then
-            printf '%s\n' "$out" | tail -n 3; echo "RESULT FAIL exits $tb: an unwritable output: exit $rc"; return
-        fi
-        echo "$tb: good run exit 0; missing input and unwritable output exit non-zero with their FAIL line"
-    done
-    echo "RESULT PASS exits: tb_dec, tb_setup, tb_etm, tb_slb_fill and tb_readmem exit 0 on a good run and non-zero (their FAIL line) on a missing input or an unwritable output"
+# Every block bench (tb_dec, tb_setup, tb_etm, tb_slb_fill, tb_backend) and the
+# $readmemh reader (tb_readmem) under each simulator: exit 0 with its DONE or
+# PASS line on a good run; non-zero with its FAIL line for no plusargs at all
+# (then it writes nothing in its working folder), an input that is not there,
+# an output that cannot be written, and an input it refuses or that fails its
+# check (two cycle stamps swapped).  Icarus builds each bench here; Verilator
+# reuses the block-bench and tb_slb_fill builds of the runs above (blk_vl,
+# slb_vl) and builds tb_readmem and tb_backend.  tb_backend's good run is also
+# checked by `edgeflag check --cycles` on et_rd, plot, span and pix.
+# swap2 IN OUT: the file with its second and third words swapped
+swap2() { awk '!/^\/\// && NF { k++; if (k == 2) { held = $0; next } if (k == 3) { print; print held; next } } { print }' "$1" >"$2"; }
+# exits_case SIM BIN NAME WANT ARGS...: run in an empty folder, stderr closed
+# (a Verilator $fatal aborts); WANT: ok | fail; prints a line, returns 1 on a wrong exit
+exits_case() {
+    local sim=$1 bin=$2 name=$3 want=$4 tb=${2##*/} c out rc; shift 4
+    c=$(mktemp -d "$work/exits_cwd.XXXXXX")
+    if [ "$sim" = iv ]; then out=$( (cd "$c" && vvp -n "$bin" "$@" 2>&1) 2>/dev/null ); rc=$?
+    else out=$( (cd "$c" && "$bin" "$@" 2>&1) 2>/dev/null ); rc=$?; fi
+    tb=$(printf '%s\n' "$out" | grep -Eo '^tb_[a-z_]+' | head -n 1)
+    if [ "$want" = ok ]; then
+        { [ $rc = 0 ] && printf '%s\n' "$out" | grep -Eq "^$tb( [a-z_]+)?: (DONE|PASS)"; } ||
+            { printf '%s\n' "$out" | tail -n 3; echo "$name: exit $rc, expected 0 with DONE/PASS"; return 1; }
+    else
+        { [ $rc != 0 ] && printf '%s\n' "$out" | grep -Eq '^tb_[a-z_]+( [a-z_]+)?: FAIL'; } ||
+            { printf '%s\n' "$out" | tail -n 3; echo "$name: exit $rc, expected non-zero with a FAIL line"; return 1; }
+        [ -z "$(ls -A "$c")" ] || { echo "$name: wrote $(ls -A "$c") in its working folder"; return 1; }
+    fi
+    echo "$name: exit $rc: $(printf '%s\n' "$out" | grep -E '^tb_[a-z_]+( [a-z_]+)?: (FAIL|DONE|PASS)' | head -n 1 | cut -c1-110)"
+    rm -rf "$c"
 }
-submit bench_exits bench_exits
+# exits_bench SIM TB BIN VEC: the five cases of one bench, its plusargs for vector set VEC
+exits_bench() {
+    local sim=$1 tb=$2 bin=$3 v=$4 d=$work/exits_$1 in out io=() inp outp
+    case $tb in
+        tb_dec)      inp=cmd;      in=$v/cmd.stim.hex;      outp=seg
+                     io=(+cmd="$v/cmd.stim.hex") ;;
+        tb_setup)    inp=seg_in;   in=$v/seg.expected.hex;  outp=et_wr
+                     io=(+seg_in="$v/seg.expected.hex" +cmd="$v/cmd.stim.hex") ;;
+        tb_etm)      inp=et_wr_in; in=$v/et_wr.expected.hex; outp=et_rd
+                     io=(+et_wr_in="$v/et_wr.expected.hex" +et_rd_exp="$v/et_rd.expected.hex" +plot="$v/plot.expected.hex") ;;
+        tb_slb_fill) inp=plot;     in=$v/plot.expected.hex; outp=span
+                     io=(+plot="$v/plot.expected.hex" +cmd="$v/cmd.stim.hex") ;;
+        tb_readmem)  inp=in;       in=$v/plot.expected.hex; outp=out; io=() ;;
+        tb_backend)  inp=etw;      in=$v/et_wr.expected.hex; outp=out
+                     io=(+cmd="$v/cmd.stim.hex") ;;
+    esac
+    # the input that changes replaces its own plusarg
+    local rest=() a
+    for a in "${io[@]}"; do [ "${a%%=*}" = "+$inp" ] || rest+=("$a"); done
+    mkdir -p "$d/$tb.out"; swap2 "$in" "$d/$tb.swapped"
+    if [ "$tb" = tb_backend ]; then out=$d/$tb.out; else out=$d/$tb.out/$outp.actual.hex; fi
+    exits_case "$sim" "$bin" "$sim $tb good" ok "${rest[@]}" +"$inp=$in" +"$outp=$out" || return 1
+    if [ "$tb" = tb_backend ]; then
+        "$EF" check "$v" "$out" --cycles --interfaces et_rd,plot,span,pix --errors 3 ||
+            { echo "$sim tb_backend: edgeflag check --cycles on its dumps failed"; return 1; }
+    fi
+    exits_case "$sim" "$bin" "$sim $tb no plusargs" fail || return 1
+    exits_case "$sim" "$bin" "$sim $tb missing input" fail "${rest[@]}" +"$inp=$d/no-such.hex" +"$outp=$out" || return 1
+    exits_case "$sim" "$bin" "$sim $tb unwritable output" fail "${rest[@]}" +"$inp=$in" +"$outp=$d/no-such-dir/x" || return 1
+    exits_case "$sim" "$bin" "$sim $tb stamps swapped" fail "${rest[@]}" +"$inp=$d/$tb.swapped" +"$outp=$out" || return 1
+}
+# bench_exits_iv: Icarus, one build per bench on a small set (the tiger at 32x24, 8 samples)
+bench_exits_iv() {
+    local d=$work/exits_iv T=$work/vec/small tb files good
+    mkdir -p "$d"
+    for tb in tb_dec tb_setup tb_etm tb_slb_fill tb_readmem tb_backend; do
+        case $tb in
+            tb_dec)   files="$root/rtl/ef_dec.v"; good="-Ptb_dec.NCMD=$(count "$T/cmd.stim.hex")" ;;
+            tb_setup) files="$root/rtl/ef_setup.v $root/rtl/ef_div.v $root/rtl/ef_slb_ram.v"
+                      good="-Ptb_setup.NCMD=$(count "$T/cmd.stim.hex") -Ptb_setup.NSEG=$(count "$T/seg.expected.hex")" ;;
+            tb_etm)   files="$root/rtl/ef_etm.v $root/rtl/ef_slb_ram.v"
+                      good="-Ptb_etm.H_MAX=256 -Ptb_etm.NWR=$(count "$T/et_wr.expected.hex") -Ptb_etm.NRD=$(count "$T/et_rd.expected.hex") -Ptb_etm.NPLOT=$(count "$T/plot.expected.hex")" ;;
+            tb_slb_fill) files="$root/rtl/ef_slb_fill.v $root/rtl/ef_slb_ram.v"
+                      good="-Ptb_slb_fill.NPLOT=$(count "$T/plot.expected.hex") -Ptb_slb_fill.NCMD=$(count "$T/cmd.stim.hex")" ;;
+            tb_readmem) files=""
+                      # shellcheck disable=SC2089 # the quotes are iverilog's: a string parameter
+                      good="-Ptb_readmem.P=36 -Ptb_readmem.DEPTH=$(count "$T/plot.expected.hex") -Ptb_readmem.IFACE=\"plot\"" ;;
+            tb_backend) files="$root/rtl/ef_etm.v $root/rtl/ef_aet.v $root/rtl/ef_plot.v $root/rtl/ef_slb_fill.v $root/rtl/ef_slb_ram.v $root/rtl/ef_cov.v"
+                      good="-Ptb_backend.W_MAX=256 -Ptb_backend.H_MAX=256 -Ptb_backend.NCMD=$(count "$T/cmd.stim.hex") -Ptb_backend.NETW=$(count "$T/et_wr.expected.hex")" ;;
+        esac
+        # shellcheck disable=SC2086,SC2090 # the lists split on purpose
+        iverilog -g2005 -I"$RI" -I"$TB" $good -o "$d/$tb" "$TB/$tb.v" $files >"$d/$tb.build" 2>&1 ||
+            { cat "$d/$tb.build"; echo "RESULT FAIL exits icarus $tb: compile"; return; }
+        exits_bench iv "$tb" "$d/$tb" "$T" || { echo "RESULT FAIL exits icarus $tb"; return; }
+    done
+    echo "RESULT PASS exits (Icarus): tb_dec, tb_setup, tb_etm, tb_slb_fill, tb_readmem and tb_backend exit 0 on a good run (tb_backend's dumps pass edgeflag check --cycles) and non-zero with their FAIL line for no plusargs (writing nothing), a missing input, an unwritable output, stamps swapped"
+}
+submit bench_exits_iv bench_exits_iv
+# bench_exits_vl: Verilator, after blk_vl and slb_vl (run after the first collect)
+bench_exits_vl() {
+    local d=$work/exits_vl L=$work/blk/vl/lion-40x30/16/nonzero T=$work/vec/small tb bin v
+    mkdir -p "$d"
+    verilator --binary --timing -Wno-fatal -Wno-WIDTH --Mdir "$d/rm" --top-module tb_readmem -GP=36 \
+        -GDEPTH="$(count "$T/plot.expected.hex")" -GIFACE='"plot"' "$TB/tb_readmem.v" -o tb_readmem >"$d/rm.build" 2>&1 ||
+        { tail -n 20 "$d/rm.build"; echo "RESULT FAIL exits verilator tb_readmem: build"; return; }
+    # shellcheck disable=SC2086 # the file list splits on purpose
+    verilator --binary --timing -Wno-fatal -Wno-WIDTH -I"$RI" -I"$TB" --Mdir "$d/be" --top-module tb_backend -GW_MAX=256 \
+        -GH_MAX=256 -GNCMD="$(count "$T/cmd.stim.hex")" -GNETW="$(count "$T/et_wr.expected.hex")" "$TB/tb_backend.v" \
+        $root/rtl/ef_etm.v $root/rtl/ef_aet.v $root/rtl/ef_plot.v $root/rtl/ef_slb_fill.v $root/rtl/ef_slb_ram.v \
+        $root/rtl/ef_cov.v -o tb_backend >"$d/be.build" 2>&1 ||
+        { tail -n 20 "$d/be.build"; echo "RESULT FAIL exits verilator tb_backend: build"; return; }
+    for tb in tb_dec tb_setup tb_etm tb_slb_fill tb_readmem tb_backend; do
+        case $tb in
+            tb_dec | tb_setup | tb_etm) bin=$L/vl-$tb/obj/tb; v=$L ;;
+            tb_slb_fill) bin=$work/slb_vl/obj/tb; v=$work/slb_vl ;;
+            tb_readmem) bin=$d/rm/tb_readmem; v=$T ;;
+            tb_backend) bin=$d/be/tb_backend; v=$T ;;
+        esac
+        [ -x "$bin" ] || { echo "RESULT FAIL exits verilator $tb: no build at $bin"; return; }
+        exits_bench vl "$tb" "$bin" "$v" || { echo "RESULT FAIL exits verilator $tb"; return; }
+    done
+    echo "RESULT PASS exits (Verilator): tb_dec, tb_setup, tb_etm, tb_slb_fill, tb_readmem and tb_backend exit 0 on a good run (tb_backend's dumps pass edgeflag check --cycles) and non-zero with their FAIL line for no plusargs (writing nothing), a missing input, an unwritable output, stamps swapped"
+}
 
 # 5. DEC, SETUP (+ divider) and ETM in RTL, block by block (tests/rtl/blocks_a.sh)
 . "$root/tests/rtl/blocks_a.sh"
 
 collect
+# the Verilator exits reuse the block benches' builds made above
+[ $have_vl = 1 ] && { submit bench_exits_vl bench_exits_vl; collect; }
 # What the RTL runs exercised, summed over every tb_slb_fill run above.
 cat "$work"/logs/slb_*.log 2>/dev/null | awk '/^tb_slb_fill: coverage:/ {
         n++; s += $3; f += $8; fl += $11 }
