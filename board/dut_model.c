@@ -36,7 +36,9 @@ typedef struct dut_model {
     ef_point *pts; /* the shape's contours */
     uint32_t *start;
     size_t npts, pts_cap, ncont, cont_cap;
-    int open;      /* the last contour is not closed yet */
+    int open;     /* the last contour is not closed yet */
+    int emitting; /* the frame's records are being handed over (ef_board_results_full) */
+    ef_vec_merge m;
     ef_point last; /* where the last edge ended */
     uint64_t frames;
 } dut_model;
@@ -58,7 +60,7 @@ static void end_frame_state(dut_model *d)
         ef_vec_collect_destroy(&d->col);
     }
     d->nrx = d->npts = d->ncont = 0;
-    d->in_shape = d->open = 0;
+    d->in_shape = d->open = d->emitting = 0;
 }
 
 static int start(void *self, ef_board *b, uint32_t mask, int samples)
@@ -158,6 +160,23 @@ static int self_check(dut_model *d)
     return 0;
 }
 
+/* Hands the frame's records to the engine while its result queue has room
+ * (back-pressure, docs/board.md 4.2); the frame ends when all are out. */
+static int emit_held(dut_model *d)
+{
+    ef_txn t;
+    uint8_t r[EF_VEC_BIN_RECORD_MAX];
+    while (!ef_board_results_full(d->b)) {
+        if (!ef_vec_merge_next(&d->m, &t)) {
+            end_frame_state(d);
+            return 0;
+        }
+        if (ef_board_emit(d->b, r, ef_vec_bin_record(&t, r)) != 0)
+            return fail(d, "out of memory");
+    }
+    return 0;
+}
+
 static int frame_end(dut_model *d)
 {
     uint64_t cycles;
@@ -165,16 +184,10 @@ static int frame_end(dut_model *d)
         return fail(d, "FRAME_END refused by the model");
     if (self_check(d) != 0)
         return -1;
-    ef_vec_merge m;
-    ef_txn t;
-    uint8_t r[EF_VEC_BIN_RECORD_MAX];
-    ef_vec_merge_init(&m, &d->col, d->mask);
-    while (ef_vec_merge_next(&m, &t))
-        if (ef_board_emit(d->b, r, ef_vec_bin_record(&t, r)) != 0)
-            return fail(d, "out of memory");
-    end_frame_state(d);
+    ef_vec_merge_init(&d->m, &d->col, d->mask);
+    d->emitting = 1;
     d->frames++;
-    return 0;
+    return emit_held(d);
 }
 
 static int remember(dut_model *d, uint64_t w0, uint64_t w1)
@@ -207,6 +220,12 @@ static int push(void *self, const uint8_t c[EF_PROTO_CMD_BYTES])
     const uint64_t fd = w0 & 0xffffff, fc = w0 >> 24 & 0xffffff;
     const uint64_t fb = (w0 >> 48 | w1 << 16) & 0xffffff, fa = w1 >> 8 & 0xffffff;
 
+    if (d->emitting) { /* the last frame's records wait for room: busy until they are out */
+        if (emit_held(d) != 0)
+            return -1;
+        if (d->emitting)
+            return 1;
+    }
     if (d->ctx && remember(d, w0, w1) != 0) /* for the self-check */
         return -1;
     switch (op) {
@@ -256,6 +275,10 @@ static int push(void *self, const uint8_t c[EF_PROTO_CMD_BYTES])
 static int finish(void *self)
 {
     dut_model *d = self;
+    if (d->emitting && emit_held(d) != 0)
+        return -1;
+    if (d->emitting)
+        return 1;
     if (d->ctx)
         return fail(d, "END inside a frame (no FRAME_END)");
     return 0;

@@ -59,6 +59,8 @@ typedef struct dut_rtl {
     ef_rtl_out out;
     uint64_t t; /* cycle from the frame's start */
     int in_frame, frame_end_seen;
+    int emitting; /* the frame's records are being handed over (ef_board_results_full) */
+    size_t emit_pos;
     uint32_t edges; /* EDGE commands of the current shape */
     uint32_t w, h;
     uint32_t *fb; /* the frame memory, w * h words */
@@ -200,8 +202,8 @@ static void end_frame_state(dut_rtl *d)
 {
     free(d->fb);
     d->fb = NULL;
-    d->nrec = 0;
-    d->in_frame = d->frame_end_seen = 0;
+    d->nrec = d->emit_pos = 0;
+    d->in_frame = d->frame_end_seen = d->emitting = 0;
     d->edges = 0;
 }
 
@@ -224,6 +226,22 @@ static int start(void *self, ef_board *b, uint32_t mask, int samples)
     return 0;
 }
 
+/* Hands the frame's records to the engine while its result queue has room
+ * (back-pressure, docs/board.md 4.2); the frame ends when all are out. */
+static int emit_held(dut_rtl *d)
+{
+    while (d->emit_pos < d->nrec) {
+        if (ef_board_results_full(d->b))
+            return 0;
+        const size_t len = 10u + d->rec[d->emit_pos + 1];
+        if (ef_board_emit(d->b, d->rec + d->emit_pos, len) != 0)
+            return fail(d, "out of memory");
+        d->emit_pos += len;
+    }
+    end_frame_state(d);
+    return 0;
+}
+
 static int frame_end(dut_rtl *d)
 {
     for (uint32_t n = 0; !(d->frame_end_seen && d->out.drained); n++) {
@@ -233,14 +251,9 @@ static int frame_end(dut_rtl *d)
             return -1;
     }
     /* the cycle that saw the pipeline drained was observed: nothing more moves */
-    for (size_t pos = 0; pos < d->nrec;) {
-        const size_t len = 10u + d->rec[pos + 1];
-        if (ef_board_emit(d->b, d->rec + pos, len) != 0)
-            return fail(d, "out of memory");
-        pos += len;
-    }
-    end_frame_state(d);
-    return 0;
+    d->emit_pos = 0;
+    d->emitting = 1;
+    return emit_held(d);
 }
 
 static int push(void *self, const uint8_t c[EF_PROTO_CMD_BYTES])
@@ -248,6 +261,12 @@ static int push(void *self, const uint8_t c[EF_PROTO_CMD_BYTES])
     dut_rtl *d = self;
     if (!d->sim)
         return fail(d, "no run started");
+    if (d->emitting) { /* the last frame's records wait for room: busy until they are out */
+        if (emit_held(d) != 0)
+            return -1;
+        if (d->emitting)
+            return 1;
+    }
     uint64_t w0 = 0, w1 = 0;
     for (int i = 0; i < 8; i++)
         w0 |= (uint64_t)c[i] << (8 * i);
@@ -305,6 +324,10 @@ static int push(void *self, const uint8_t c[EF_PROTO_CMD_BYTES])
 static int finish(void *self)
 {
     dut_rtl *d = self;
+    if (d->emitting && emit_held(d) != 0)
+        return -1;
+    if (d->emitting)
+        return 1;
     if (d->in_frame)
         return fail(d, "END inside a frame (no FRAME_END)");
     return 0;

@@ -29,11 +29,28 @@
 #define EF_BOARD_RESULT_PAYLOAD 32768u
 #endif
 #define RESULT_PAYLOAD ((uint32_t)EF_BOARD_RESULT_PAYLOAD)
+/* The result queue's bound (docs/board.md 4.2): at most this many result
+ * frames made and not yet acknowledged, plus the one being filled.  While it
+ * is full the engine gives the DUT no command (the rest of a DATA frame waits)
+ * and the DUT holds its records (ef_board_results_full()): on a slow link the
+ * DUT is back-pressured instead of its results piling up in RAM.  0: no bound. */
+#ifndef EF_BOARD_RESULT_QUEUE
+#define EF_BOARD_RESULT_QUEUE 32u
+#endif
+#if EF_BOARD_RESULT_QUEUE > 0 && EF_BOARD_RESULT_QUEUE < 4
+#error "EF_BOARD_RESULT_QUEUE: at least 4 (the host acknowledges results after every 4 it has written)"
+#endif
 
 typedef struct rframe { /* a numbered board -> host frame */
     uint8_t *bytes;
     size_t size;
 } rframe;
+
+typedef struct hframe { /* a host frame received in order, not yet taken whole */
+    uint8_t type;
+    uint32_t len, off; /* payload bytes, and those already given to the DUT */
+    uint8_t *payload;
+} hframe;
 
 struct ef_board {
     ef_proto_info info;
@@ -43,6 +60,10 @@ struct ef_board {
     uint8_t *rx; /* received bytes not yet parsed */
     size_t rx_len, rx_cap;
     int nak_pending; /* a NAK was sent for rx_seq; no more until progress */
+    /* frames received in order (rx_seq counts them) and not yet taken whole,
+     * because the result queue was full or the DUT busy: ack_seq .. rx_seq-1 */
+    hframe *held;
+    uint32_t nheld, held_cap, ack_seq, queue_max, res_peak;
 
     uint8_t *tx; /* bytes for the host, from tx_head */
     size_t tx_head, tx_len, tx_cap;
@@ -104,7 +125,7 @@ static void send_small(ef_board *b, uint8_t type, uint32_t seq, const uint8_t *p
 static void send_ack(ef_board *b)
 {
     uint8_t p[12];
-    ef_put32(p, b->st.rx_seq);       /* next expected: all below are taken */
+    ef_put32(p, b->ack_seq);         /* all below are taken (rx_seq less those held) */
     ef_put32(p + 4, b->info.window); /* credits */
     ef_put32(p + 8, b->res_next);    /* result frames made so far */
     send_small(b, EF_FT_ACK, 0, p, sizeof p);
@@ -144,6 +165,8 @@ static int res_push(ef_board *b, uint8_t type, const uint8_t *payload, uint32_t 
         b->result_bytes += len;
     }
     b->res_next++;
+    if (b->res_next - b->res_acked > b->res_peak)
+        b->res_peak = b->res_next - b->res_acked;
     return 0;
 }
 
@@ -335,46 +358,69 @@ static void take_start(ef_board *b, const ef_frame *f)
     b->dut_started = 1;
 }
 
-static void take_data(ef_board *b, const ef_frame *f)
+int ef_board_results_full(const ef_board *b)
 {
-    b->st.input_crc = ef_frame_crc32(b->st.input_crc, f->payload, f->len);
-    switch (b->mode) {
-    case EF_MODE_SINK:
-    case EF_MODE_SOURCE: return;
-    case EF_MODE_LOOPBACK: (void)res_push(b, EF_FT_RESULT, f->payload, f->len); return;
-    default: break;
-    }
-    if (f->len % EF_PROTO_CMD_BYTES) {
-        ef_board_fail(b, 3, "DATA payload is not a whole number of 13-byte commands");
-        return;
-    }
-    for (uint32_t o = 0; o < f->len && b->st.state == EF_BS_RUNNING; o += EF_PROTO_CMD_BYTES) {
-        b->st.cmds++;
-        if (b->dut.push && b->dut.push(b->dut.self, f->payload + o) != 0)
-            return;
-    }
+    return b->queue_max && b->mode == EF_MODE_DUT && b->res_next - b->res_acked >= b->queue_max;
 }
 
-static void take_end(ef_board *b)
+/* (at least 4: the host acknowledges results after every 4 it has written) */
+void ef_board_set_result_queue(ef_board *b, uint32_t frames) { b->queue_max = frames && frames < 4 ? 4 : frames; }
+
+/* A DATA frame's commands from *off on to the DUT.  Returns 1 when the frame
+ * is taken whole, 0 when it stopped (the result queue full, or the DUT busy:
+ * the rest waits, *off says where). */
+static int run_data(ef_board *b, const uint8_t *payload, uint32_t len, uint32_t *off)
+{
+    switch (b->mode) {
+    case EF_MODE_SINK:
+    case EF_MODE_SOURCE: break;
+    case EF_MODE_LOOPBACK: (void)res_push(b, EF_FT_RESULT, payload, len); break;
+    default:
+        if (len % EF_PROTO_CMD_BYTES) {
+            ef_board_fail(b, 3, "DATA payload is not a whole number of 13-byte commands");
+            break;
+        }
+        for (; *off < len && b->st.state == EF_BS_RUNNING; *off += EF_PROTO_CMD_BYTES) {
+            if (ef_board_results_full(b))
+                return 0;
+            const int r = b->dut.push ? b->dut.push(b->dut.self, payload + *off) : 0;
+            if (r > 0) /* busy: the command was not taken */
+                return 0;
+            b->st.cmds++;
+            if (r < 0)
+                break;
+        }
+    }
+    b->st.input_crc = ef_frame_crc32(b->st.input_crc, payload, len);
+    return 1;
+}
+
+/* END: 1 when taken, 0 when the DUT is not finished yet (call again). */
+static int take_end(ef_board *b)
 {
     if (b->mode == EF_MODE_SOURCE) {
         b->source_end = 1; /* its DONE follows the last RESULT it makes */
-        return;
+        return 1;
     }
-    if (b->mode == EF_MODE_DUT && b->dut.finish && b->dut.finish(b->dut.self) != 0)
-        return;
+    if (b->mode == EF_MODE_DUT && b->dut.finish) {
+        const int r = b->dut.finish(b->dut.self);
+        if (r > 0)
+            return 0;
+        if (r < 0)
+            return 1;
+    }
     if (b->st.state != EF_BS_RUNNING)
-        return;
+        return 1;
     if (b->mode == EF_MODE_DUT && b->st.cmds != b->cmd_count) {
         ef_board_fail(b, 4, "END after a different number of commands than START announced");
-        return;
+        return 1;
     }
     if (b->run_flags & EF_START_DIGEST) /* every interface's last, partial window */
         for (unsigned i = 0; i < EF_PROTO_IFACES; i++)
             if (b->dg_cnt[i] && digest_out(b, i) != 0)
-                return;
+                return 1;
     if (flush_results(b) != 0)
-        return;
+        return 1;
     uint8_t d[EF_PROTO_DONE_LEN];
     ef_put64(d, b->run_flags & EF_START_DIGEST ? b->st.records : b->records_sent);
     ef_put64(d + 8, b->result_bytes);
@@ -383,6 +429,7 @@ static void take_end(ef_board *b)
     ef_put32(d + 28, b->results_crc);
     b->st.state = EF_BS_DONE;
     (void)res_push(b, EF_FT_DONE, d, sizeof d);
+    return 1;
 }
 
 static void take_ackr(ef_board *b, const ef_frame *f)
@@ -426,6 +473,56 @@ static int take_control(ef_board *b, const ef_frame *f, int *ack)
     return 1;
 }
 
+/* Keeps a frame received in order that cannot be taken whole now (its commands
+ * from off on wait): at most `window` of them, the frames the host may have
+ * unacknowledged (the acknowledgement names ack_seq, the frames taken). */
+static int hold(ef_board *b, const ef_frame *f, uint32_t off)
+{
+    if (b->nheld >= b->info.window)
+        return -1;
+    if (b->nheld == b->held_cap) {
+        const uint32_t cap = b->held_cap ? 2 * b->held_cap : 4;
+        hframe *h = realloc(b->held, cap * sizeof *h);
+        if (!h)
+            return -1;
+        b->held = h, b->held_cap = cap;
+    }
+    hframe *h = &b->held[b->nheld];
+    h->payload = malloc(f->len ? f->len : 1);
+    if (!h->payload)
+        return -1;
+    memcpy(h->payload, f->payload, f->len);
+    h->type = f->type, h->len = f->len, h->off = off;
+    b->nheld++;
+    return 0;
+}
+
+static void drop_held(ef_board *b)
+{
+    for (uint32_t k = 0; k < b->nheld; k++)
+        free(b->held[k].payload);
+    b->nheld = 0;
+}
+
+/* Takes held frames in order while the result queue and the DUT allow. */
+static void service(ef_board *b)
+{
+    int acked = 0;
+    while (b->nheld) {
+        hframe *h = &b->held[0];
+        if (b->st.state == EF_BS_RUNNING &&
+            !(h->type == EF_FT_DATA ? run_data(b, h->payload, h->len, &h->off) : take_end(b)))
+            break;
+        free(h->payload);
+        memmove(b->held, b->held + 1, (size_t)(b->nheld - 1) * sizeof *b->held);
+        b->nheld--;
+        b->ack_seq++; /* (a run that failed takes no more: its held frames are acknowledged) */
+        acked = 1;
+    }
+    if (acked)
+        send_ack(b);
+}
+
 /* One good frame from the host. */
 static void take(ef_board *b, const ef_frame *f, int *ack)
 {
@@ -453,21 +550,28 @@ static void take(ef_board *b, const ef_frame *f, int *ack)
         send_nak(b, 3); /* out of place: START first, DATA/END only while running */
         return;
     }
+    uint32_t off = 0;
+    int whole = 1;
+    if (f->type == EF_FT_START)
+        take_start(b, f);
+    else if (!b->nheld)
+        whole = f->type == EF_FT_DATA ? run_data(b, f->payload, f->len, &off) : take_end(b);
+    else
+        whole = 0;
+    if (!whole && hold(b, f, off) != 0)
+        return; /* a host over its window (or no memory): as if lost, it is sent again */
     b->st.rx_seq++;
     b->st.frames_ok++;
     b->nak_pending = 0;
     *ack = 1;
-    if (f->type == EF_FT_START)
-        take_start(b, f);
-    else if (f->type == EF_FT_DATA)
-        take_data(b, f);
-    else
-        take_end(b);
+    if (whole)
+        b->ack_seq = b->st.rx_seq;
 }
 
 int ef_board_rx(ef_board *b, const uint8_t *buf, size_t len)
 {
     if (len == 0) {
+        service(b);
         res_pump(b);
         return 0;
     }
@@ -504,6 +608,7 @@ int ef_board_rx(ef_board *b, const uint8_t *buf, size_t len)
     b->rx_len -= pos;
     if (ack)
         send_ack(b);
+    service(b);
     res_pump(b);
     return 0;
 }
@@ -512,6 +617,7 @@ size_t ef_board_tx_pending(const ef_board *b) { return b->tx_len - b->tx_head; }
 
 size_t ef_board_tx(ef_board *b, uint8_t *buf, size_t cap)
 {
+    service(b);
     res_pump(b);
     size_t n = b->tx_len - b->tx_head;
     if (n == 0)
@@ -545,7 +651,7 @@ void ef_board_status(const ef_board *b, uint8_t out[EF_PROTO_STATUS_LEN])
     memcpy(out, EF_PROTO_MAGIC, 4);
     out[4] = EF_PROTO_PROTOCOL;
     out[6] = (uint8_t)b->st.state;
-    ef_put32(out + 8, b->st.rx_seq);
+    ef_put32(out + 8, b->ack_seq);
     ef_put32(out + 12, b->res_next);
     ef_put32(out + 16, b->res_acked);
     ef_put32(out + 20, b->st.input_crc);
@@ -558,6 +664,8 @@ static void clear_run(ef_board *b, int keep_rx)
     if (b->dut_started && b->dut.stop)
         b->dut.stop(b->dut.self);
     b->dut_started = 0;
+    drop_held(b);
+    b->ack_seq = b->res_peak = 0;
     for (uint32_t k = 0; k < b->res_next - b->res_acked; k++)
         free(b->res[k].bytes);
     b->res_acked = b->res_sent = b->res_next = 0;
@@ -595,6 +703,8 @@ void ef_board_get_stats(const ef_board *b, ef_board_stats *s)
     *s = b->st;
     s->res_next = b->res_next;
     s->res_acked = b->res_acked;
+    s->res_peak = b->res_peak;
+    s->held = b->nheld;
 }
 
 ef_board *ef_board_new(const ef_proto_info *info, ef_board_dut dut)
@@ -606,6 +716,7 @@ ef_board *ef_board_new(const ef_proto_info *info, ef_board_dut dut)
     if (!b->info.window)
         b->info.window = 16;
     b->dut = dut;
+    b->queue_max = EF_BOARD_RESULT_QUEUE;
     b->cur = malloc(RESULT_PAYLOAD);
     if (!b->cur) {
         free(b);
@@ -622,6 +733,7 @@ void ef_board_free(ef_board *b)
     if (b->dut.destroy)
         b->dut.destroy(b->dut.self);
     free(b->res);
+    free(b->held);
     free(b->rx);
     free(b->tx);
     free(b->cur);

@@ -24,7 +24,11 @@ typedef struct ef_board ef_board;
 
 /* The DUT behind the engine.  push() takes one cmd word (13 bytes); results
  * are handed back through emit(), one vectors.bin record at a time, in cycle
- * order.  finish() is called at END.  Return 0 or a negative error. */
+ * order.  finish() is called at END.  Return 0 or a negative error; push()
+ * and finish() may also return 1: busy (the command not taken, the DUT not
+ * finished), and the engine calls them again later with the same command.
+ * While ef_board_results_full() the DUT holds its records (back-pressure)
+ * and says busy rather than wait: the engine never blocks. */
 typedef struct ef_board_dut {
     void *self;
     int (*start)(void *self, ef_board *b, uint32_t iface_mask, int samples);
@@ -58,6 +62,14 @@ void ef_board_link_lost(ef_board *b);
  * not taken for its payload.  Keeps everything else. */
 void ef_board_rx_idle(ef_board *b);
 
+/* Whether the run's result queue is full (docs/board.md 4.2: at most
+ * EF_BOARD_RESULT_QUEUE result frames made and not acknowledged, default
+ * 32): the engine gives the DUT no command then, and the DUT should hold its
+ * records until it is not. */
+int ef_board_results_full(const ef_board *b);
+/* Sets that bound (result frames; 0: none).  For tests. */
+void ef_board_set_result_queue(ef_board *b, uint32_t frames);
+
 /* Called by the DUT for every output record (vectors.bin layout). */
 int ef_board_emit(ef_board *b, const uint8_t *record, size_t len);
 /* Called by the DUT when it fails: the run stops with an ERROR frame. */
@@ -72,6 +84,8 @@ typedef struct ef_board_stats {
     uint32_t input_crc; /* CRC-32 of every accepted DATA payload, in order */
     uint32_t rx_seq, res_next, res_acked;
     int state;
+    uint32_t res_peak; /* the most result frames kept at once in this run */
+    uint32_t held;     /* host frames received and waiting for the DUT */
 } ef_board_stats;
 void ef_board_get_stats(const ef_board *b, ef_board_stats *s);
 

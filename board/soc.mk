@@ -8,6 +8,8 @@
 #   make firmware [BOARD=...]   the firmware alone (its size printed)
 #   make board-sim              the simulated board (build/board/sim-ns8/obj/board_sim)
 #   make board-sim-test         verify through the simulated board (tests/board/soc_sim.sh)
+#   make board-sim-faults       the same with the whole fault set (EF_SOCSIM_FULL=1: digest mode's
+#                               faults, an open shape refused, the bounded result queue on the SoC)
 #   make board-gpio-test        edgeflag-host over emulated GPIO into its gateware (tests/board/gpio_cosim.sh)
 #   BOARD_GPIO=0                the SoC without the GPIO bus slave (build/board/...-nogpio)
 #   BOARD_USB=0                 the SoC without the USB device (build/board/...-nousb)
@@ -27,7 +29,7 @@ BOARD_SOC_SRC := board/soc/soc.py board/soc/ef_periph.py board/soc/ef_gpio.py bo
                  $(wildcard rtl/*.v) $(wildcard rtl/*.vh)
 BOARD_TOOLS := $(EF_VENV)/.installed-soc build/fpga-bin/nextpnr-ecp5
 
-.PHONY: board-tools firmware bitstream board-sim board-sim-test board-gpio-test board-sim-usb-test
+.PHONY: board-tools firmware bitstream board-sim board-sim-test board-sim-faults board-gpio-test board-sim-usb-test
 
 # the tools: Debian's cross compiler and picolibc, the pinned PyPI groups, the PATH shims (one
 # grouped recipe for both files: under make -j two copies of pip would race on one venv)
@@ -72,7 +74,8 @@ BOARD_SIM_CPP := board/sim/board_sim.cpp board/sim/gpio_link.cpp board/sim/usb_l
 $(BOARD_SIM_DIR)/obj/board_sim: $(BOARD_SIM_DIR)/gateware/sim.v $(BOARD_SIM_CPP) $(wildcard board/sim/*.h)
 	verilator $(BOARD_SIM_VFLAGS) -Mdir $(BOARD_SIM_DIR)/obj -o board_sim \
 	    $$(cat $(BOARD_SIM_DIR)/gateware/sources.txt) $(BOARD_SIM_DIR)/gateware/sim.v \
-	    $(abspath $(BOARD_SIM_CPP)) -CFLAGS -O2 -CFLAGS -I$(abspath board/sim) >$(BOARD_SIM_DIR)/verilate.log 2>&1 || \
+	    $(abspath $(BOARD_SIM_CPP)) -CFLAGS -O2 -CFLAGS -I$(abspath board/sim) -LDFLAGS -lz \
+	    >$(BOARD_SIM_DIR)/verilate.log 2>&1 || \
 	    { tail -n 30 $(BOARD_SIM_DIR)/verilate.log; exit 1; }
 $(BOARD_SIM_DIR)/gateware/sim_rom.init: $(BOARD_SIM_DIR)/firmware.bin $(BOARD_SIM_DIR)/gateware/sim.v
 	od -An -v -tx4 -w4 $< | tr -d ' ' >$@.tmp && mv $@.tmp $@
@@ -83,6 +86,8 @@ board-sim: $(BOARD_TOOLS)
 
 board-sim-test: all board-sim $(PTYBOARD)
 	bash tests/board/soc_sim.sh $(BOARD_SIM_DIR)
+board-sim-faults: all board-sim $(PTYBOARD)
+	EF_SOCSIM_FULL=1 bash tests/board/soc_sim.sh $(BOARD_SIM_DIR)
 
 # edgeflag-host over emulated GPIO into the simulated board's gateware (docs/board-gpio.md section 8)
 board-gpio-test: all board-sim gpio-cosim

@@ -28,7 +28,7 @@ typedef struct dut_soc {
     ef_board *b;
     uint32_t mask;
     int running; /* between start and stop, no failure */
-    int in_frame, flushed;
+    int in_frame, in_shape, flushed, flush_sent;
     uint32_t edges;
     uint32_t npix; /* pix records of this run (EF_SOC_FAULT_PIX) */
 } dut_soc;
@@ -51,10 +51,12 @@ static uint32_t next_word(void)
     return w;
 }
 
-/* Empties the record FIFO into records (or, stopped, drops them). */
+/* Empties the record FIFO into records (or, stopped, drops them), while the
+ * engine's result queue has room: when it is full the FIFO fills, and the
+ * peripheral stops ef_raster's clock (back-pressure, docs/board.md 4.2). */
 static void drain(dut_soc *d)
 {
-    while (ef_status_read() & ST_REC) {
+    while ((ef_status_read() & ST_REC) && !(d->running && ef_board_results_full(d->b))) {
         const uint32_t w = next_word();
         if ((w & 0xFFu) == MARK) {
             const uint32_t code = w >> 16;
@@ -105,7 +107,7 @@ static int start(void *self, ef_board *b, uint32_t mask, int samples)
     dut_soc *d = self;
     d->b = b;
     d->mask = mask;
-    d->in_frame = d->flushed = 0;
+    d->in_frame = d->in_shape = d->flushed = d->flush_sent = 0;
     d->edges = 0;
     d->npix = 0;
     d->running = 0;
@@ -121,6 +123,13 @@ static int push(void *self, const uint8_t c[EF_PROTO_CMD_BYTES])
     dut_soc *d = self;
     if (!d->running)
         return -1;
+    while (!(ef_status_read() & ST_CMD_ROOM)) { /* busy (not taken) while the engine is full */
+        if (ef_board_results_full(d->b))
+            return 1;
+        drain(d);
+        if (!d->running)
+            return -1;
+    }
     if (c[12] >> 4)
         return fail(d, "a command word has bits above bit 99");
     const unsigned op = c[12] & 0xFu;
@@ -135,23 +144,27 @@ static int push(void *self, const uint8_t c[EF_PROTO_CMD_BYTES])
         d->in_frame = 1;
     } else if (!d->in_frame) {
         return fail(d, "a command outside a frame (before FRAME)");
-    } else if (op == EF_OP_SHAPE) {
-        d->edges = 0;
-    } else if (op == EF_OP_EDGE && ++d->edges > EF_E_MAX) {
-        return fail(d, "a shape of more EDGE commands than the board's E_MAX (identify says it)");
     } else if (op < EF_OP_FRAME || op > EF_OP_FRAME_END) {
         return fail(d, "unknown command op");
+    } else if ((op == EF_OP_SHAPE || op == EF_OP_FRAME_END) && d->in_shape) {
+        /* FRAME_END inside a shape: the peripheral ends the frame at FRAME_END's transfer,
+         * which is drained only after a closed shape (board/soc/ef_periph.py) */
+        return fail(d, op == EF_OP_SHAPE ? "SHAPE inside a shape" : "FRAME_END inside a shape (no SHAPE_END)");
+    } else if ((op == EF_OP_EDGE || op == EF_OP_SHAPE_END) && !d->in_shape) {
+        return fail(d, op == EF_OP_EDGE ? "EDGE outside a shape" : "SHAPE_END outside a shape");
+    } else if (op == EF_OP_SHAPE) {
+        d->edges = 0;
+        d->in_shape = 1;
+    } else if (op == EF_OP_SHAPE_END) {
+        d->in_shape = 0;
+    } else if (op == EF_OP_EDGE && ++d->edges > EF_E_MAX) {
+        return fail(d, "a shape of more EDGE commands than the board's E_MAX (identify says it)");
     }
     if (op == EF_OP_FRAME_END)
         d->in_frame = 0;
     uint32_t w[4] = { 0, 0, 0, 0 };
     for (int i = 0; i < EF_PROTO_CMD_BYTES; i++)
         w[i / 4] |= (uint32_t)c[i] << (8 * (i % 4));
-    while (!(ef_status_read() & ST_CMD_ROOM)) {
-        drain(d);
-        if (!d->running)
-            return -1;
-    }
     ef_cmd0_write(w[0]);
     ef_cmd1_write(w[1]);
     ef_cmd2_write(w[2]);
@@ -168,16 +181,25 @@ static int finish(void *self)
         return -1;
     if (d->in_frame)
         return fail(d, "END inside a frame (no FRAME_END)");
-    while (!(ef_status_read() & ST_CMD_ROOM))
+    if (!d->flush_sent) {
+        while (!(ef_status_read() & ST_CMD_ROOM)) {
+            if (ef_board_results_full(d->b))
+                return 1; /* busy: called again once the host took results */
+            drain(d);
+        }
+        ef_cmd0_write(0);
+        ef_cmd1_write(0);
+        ef_cmd2_write(0);
+        ef_cmd3_write(OP_FLUSH);
+        ef_push_write(1);
+        d->flushed = 0;
+        d->flush_sent = 1;
+    }
+    while (!d->flushed && d->running) {
+        if (ef_board_results_full(d->b))
+            return 1;
         drain(d);
-    ef_cmd0_write(0);
-    ef_cmd1_write(0);
-    ef_cmd2_write(0);
-    ef_cmd3_write(OP_FLUSH);
-    ef_push_write(1);
-    d->flushed = 0;
-    while (!d->flushed && d->running)
-        drain(d);
+    }
     return d->running ? 0 : -1;
 }
 
@@ -186,7 +208,7 @@ static void stop(void *self)
     dut_soc *d = self;
     d->running = 0;
     hw_reset(d, 0);
-    d->in_frame = 0;
+    d->in_frame = d->in_shape = 0;
 }
 
 static void destroy(void *self) { stop(self); }

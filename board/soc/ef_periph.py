@@ -25,13 +25,17 @@ the CPU's and the link's speed.  Cycle 0 is the first cycle after the edge
 at which init_done is seen after the reset that each FRAME starts with.
 
 Frame memory: W_MAX x H_MAX words of block RAM on the ef clock (read data one
-DUT cycle after fb_re, held), cleared during that reset.  A frame ends when
-FRAME_END was taken and no interface has been valid for `quiet` DUT cycles:
-the pipeline's drained condition is internal to ef_raster (dv/tb/dut_rtl.v
-reaches into its hierarchy), so the board waits for a quiet stretch longer
-than any gap between a frame's transfers; the next FRAME (its reset) and the
-FLUSH marker wait for it.  A bound too short would cut a frame's records,
-which `verify` reports; it never passes silently.
+DUT cycle after fb_re, held), cleared during that reset.  A frame ends at the
+DUT clock edge at which FRAME_END is taken: the pipeline is drained there.
+ef_raster's DEC takes the command after a SHAPE_END only in the cycle T_free in
+which the shape has drained (its eos et_wr passed, AET, SLB+FILL and COV idle:
+`shape_done`, docs/microarch.md section 3 "Drain" and section 4 items 1 and 7),
+so a FRAME_END that follows a closed shape (or no shape) passes DEC, the only
+block it enters, with every other block empty, and is the frame's last
+transfer.  The firmware (board/firmware/dut_soc.c) refuses a FRAME_END inside
+an open shape, the one stream after which something could still move.  The
+DUT's clock stops there; the next FRAME (its reset) and the FLUSH marker wait
+for the frame's records to be serialised.
 """
 
 from migen import *
@@ -65,8 +69,8 @@ def log2(n):
 
 
 class EFRaster(LiteXModule):
-    def __init__(self, ns=8, w_max=64, h_max=64, e_max=255, quiet=4096, fifo_depth=512):
-        self.ns, self.w_max, self.h_max, self.e_max, self.quiet = ns, w_max, h_max, e_max, quiet
+    def __init__(self, ns=8, w_max=64, h_max=64, e_max=255, fifo_depth=512):
+        self.ns, self.w_max, self.h_max, self.e_max = ns, w_max, h_max, e_max
         # CSRs (sys domain)
         self.ctrl = CSRStorage(16, description="bit 0: reset; bits 14:8: interfaces to return")
         self.cmd0 = CSRStorage(32)
@@ -197,18 +201,15 @@ class EFRaster(LiteXModule):
         # the frame sequencer
         IDLE, RST, INIT, RUN = 0, 1, 2, 3
         state = Signal(2)
-        fe_taken = Signal()
-        quiet_n = Signal(max=quiet + 2)
+        fe_taken = Signal()  # FRAME_END was taken: the frame is over (the pipeline is drained)
         n_clear = max(w_max * h_max, 3)
-        any_valid = Signal()
-        self.comb += any_valid.eq(reduce(or_, [p[n + "_valid"] for n, _ in IFACES[1:]]))
         taken = Signal()
         self.comb += [
             clearing.eq(state == RST),
             cmd_valid.eq((state == RUN) & ~fe_taken),
             taken.eq(tick & cmd_valid & cmd_ready),
             en.eq(~soft_rst & ~ser_busy & ~mark & (
-                (state == RST) | (state == INIT) | ((state == RUN) & (fe_taken | head.valid)))),
+                (state == RST) | (state == INIT) | ((state == RUN) & ~fe_taken & head.valid))),
             head.ready.eq(soft_rst | taken |
                           ((state == IDLE) & ~ser_busy & ~mark & head.valid & (op != OP_FRAME))),
         ]
@@ -247,7 +248,7 @@ class EFRaster(LiteXModule):
                             If(clr == n_clear - 1, state.eq(INIT), dut_rst.eq(0)))
                     ],
                     INIT: [
-                        If(tick & init_done, state.eq(RUN), t.eq(0), fe_taken.eq(0), quiet_n.eq(0))
+                        If(tick & init_done, state.eq(RUN), t.eq(0), fe_taken.eq(0))
                     ],
                     RUN: [
                         If(tick,
@@ -256,9 +257,9 @@ class EFRaster(LiteXModule):
                             If(Cat(*valids) != 0,
                                 held_v.eq(Cat(*valids)), held_t.eq(t), ser_busy.eq(1), idx.eq(0), k.eq(0),
                                 *[held[i].eq(payloads[i]) for i in range(7)]),
-                            If(any_valid, quiet_n.eq(0)).Elif(quiet_n != quiet + 1, quiet_n.eq(quiet_n + 1)),
                             If(err, mark.eq(1), mark_code.eq(1), state.eq(IDLE), dut_rst.eq(1))),
-                        If(fe_taken & (quiet_n >= quiet) & ~ser_busy, state.eq(IDLE))
+                        # the FRAME_END's cycle captured and serialised: the frame is over
+                        If(fe_taken & ~ser_busy, state.eq(IDLE))
                     ],
                 })
             )

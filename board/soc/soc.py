@@ -211,7 +211,8 @@ def main():
     ap.add_argument("--headers-only", action="store_true")
     ap.add_argument("--sys-clk", type=float, default=None,
                     help="sys clock (a multiple of 3 MHz): default 30 MHz on a ULX3S (the 60 MHz placement "
-                         "reached 44.68 MHz, docs/board-ulx3s.md), 60 MHz in the simulation")
+                         "reached 44.68 MHz, docs/board-ulx3s.md), 60 MHz in the simulation (its USB clock is a "
+                         "fifth of it; --sys-clk 30e6 and board_sim --sys-clk 30e6 simulate the board's clocks)")
     ap.add_argument("--ef-clk", type=float, default=15e6)
     ap.add_argument("--main-ram", type=lambda s: int(s, 0), default=None,
                     help="block RAM main RAM bytes (sim default 4 MiB; the board: 0, the heap in SRAM)")
@@ -262,8 +263,10 @@ def main():
         builder.build(run=False, build_name="sim")
         # the Verilog the harness compiles, in order (the CPU's, the RTL's, the SoC's)
         with open(os.path.join(a.out, "gateware", "sources.txt"), "w") as f:
+            top = os.path.abspath(os.path.join(a.out, "gateware", "sim.v"))  # the harness names it last
             for src in soc.platform.sources:
-                f.write(os.path.abspath(src[0]) + "\n")
+                if os.path.abspath(src[0]) != top:
+                    f.write(os.path.abspath(src[0]) + "\n")
 
 
 if __name__ == "__main__":

@@ -18,7 +18,9 @@
 //
 // The bench compares nothing against the vectors (`edgeflag check` does, on
 // its dumps); its own checks are the DUT's readiness for every command at
-// its stamp, `err` never raised and no timeout.  Result, the last line:
+// its stamp, `err` never raised, no timeout, frame_start and frame_end high
+// exactly in the cycle after a FRAME's and a FRAME_END's transfer, and no
+// valid on any interface between reset and the first command.  Result, the last line:
 //   "tb_raster: DONE ..." (exit 0): the dumps are written and closed, the
 //        bench's own checks held; the verdict is edgeflag check's;
 //   "tb_raster: FAIL ..." (exit non-zero): a bench check failed, a file
@@ -333,7 +335,23 @@ module tb_raster #(
         end
     endtask
 
+    // Port checks of the control pulses (docs/microarch.md 3.1): frame_start and frame_end
+    // are high exactly in the cycle after a FRAME's and a FRAME_END's transfer, and nothing
+    // moves on an interface (nor is err raised) between reset and the first command.
+    reg exp_fs = 1'b0, exp_fe = 1'b0;
     always @(posedge clk) begin
+        exp_fs <= running && cmd_valid && cmd_ready && cmd_op == 4'd1;
+        exp_fe <= running && cmd_valid && cmd_ready && cmd_op == 4'd5;
+        if (!rst && (frame_start !== exp_fs || frame_end !== exp_fe)) begin
+            if (errors < 10) $display("tb_raster: cycle %0d: frame_start %b frame_end %b, expected %b %b (the cycle after FRAME, FRAME_END)",
+                                      cyc, frame_start, frame_end, exp_fs, exp_fe);
+            errors = errors + 1;
+        end
+        if (!rst && !running && (seg_valid || et_wr_valid || et_rd_valid || plot_valid || span_valid || pix_valid || err)) begin
+            if (errors < 10) $display("tb_raster: a valid or err before the first command (seg %b et_wr %b et_rd %b plot %b span %b pix %b err %b)",
+                                      seg_valid, et_wr_valid, et_rd_valid, plot_valid, span_valid, pix_valid, err);
+            errors = errors + 1;
+        end
         if (!running) begin
             if (!rst && init_done) begin
                 running <= 1'b1;

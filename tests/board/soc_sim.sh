@@ -14,14 +14,29 @@
 #      duplicated, in one run: recovered (exit 0), results byte-identical to run 2's;
 #   5. a planted firmware fault (dut_soc.c built with EF_SOC_FAULT_PIX: one pix record's alpha
 #      changed on its way to the engine), in the same simulated SoC's ROM: verify (in digest mode
-#      when the host has it: the differing window fetched whole) exits 1 and names pix, nothing else.
+#      when the host has it: the differing window fetched whole) exits 1 and names pix, nothing else;
+#   6. the board's own faults of docs/board.md section 6, played by the simulated board itself
+#      (board_sim --faults, serial only): the board stalls mid-commands (exit 5 "stopped
+#      answering", then --resume: PASS), the line is unplugged mid-commands while the board runs on
+#      (exit 5 "went away", then --resume: PASS), the SoC is reset mid-run (exit 6 "reset or lost
+#      its state", then a new run: PASS); every PASS byte-identical to run 2's results;
+#   7. (EF_SOCSIM_FULL=1, `make board-sim-faults`) the same faults in digest mode, a FRAME_END
+#      inside an open shape refused by the firmware (exit 6), and the engine's bounded result queue
+#      (docs/board.md 4.2) on the SoC: a full-record run whose results are many times the bound,
+#      with firmware built with a small bound, PASS cycle-exact (the DUT back-pressured).
 # usage: bash tests/board/soc_sim.sh SIM_DIR   (`make board-sim-test`: SIM_DIR is
-#        build/board/sim-ns8, built by `make board-sim`)
+#        build/board/sim-ns8, built by `make board-sim`; EF_SOCSIM_FULL=1 adds section 7)
 # Ends with "N passed, M failed"; exit status 0 only if nothing failed.
 set -u
 export LC_ALL=C
 sim=${1:?usage: tests/board/soc_sim.sh SIM_DIR}
 root=$(cd "$(dirname "$0")/../.." && pwd)
+# shellcheck source=tests/host/waits.sh disable=SC1091
+. "$root/tests/host/waits.sh"
+full_set=${EF_SOCSIM_FULL:-0}
+# the host's --timeout for runs that must not time out: a simulated second of the board takes
+# minutes of wall time on a busy machine, and a frame's results come after its whole frame ran
+LINK_MS=$((3 * EF_LINK_MS))
 case $sim in /*) ;; *) sim=$root/$sim ;; esac
 build=${EF_BUILD:-$root/build}
 E=$build/edgeflag H=$build/edgeflag-host BS=$sim/obj/board_sim
@@ -35,7 +50,7 @@ for f in "$E" "$H" "$BS" "$sim/firmware.elf"; do
 done
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/edgeflag-socsim.XXXXXX") || exit 1
 chmod 700 "$tmp"
-bpid=
+bpid="" boot_ms=0
 stop_board() {
     if [ -n "$bpid" ]; then
         kill "$bpid" 2>/dev/null
@@ -51,24 +66,34 @@ if "$H" --help 2>&1 | grep -q -- '--transport.*serial\|serial.*--port'; then
 else
     mode=socket
 fi
-# start_board GATEWARE_DIR: the simulated board, its link in $link (LINK OPTIONS in ${L[@]})
+# start_board GATEWARE_DIR [BOARD_SIM OPTIONS]: the simulated board, its link in ${L[@]}.  The
+# harness publishes the link only once the firmware has answered its own identify (a readiness
+# handshake), so this waits for that, however slow the machine is, while the board process lives
+# (bounded by EF_GUARD_S, tests/host/waits.sh, only for a board that hangs).
 start_board() {
+    local gw=$1 t0 t0ns
+    shift
     stop_board
-    rm -f "$tmp/pty" "$tmp/sock"
+    rm -f "$tmp/tty" "$tmp/sock" "$tmp/board.out" # (the last board's line must not count)
     if [ $mode = serial ]; then
-        "$BS" --dir "$1" --pty-link "$tmp/pty" --baud 0 >"$tmp/board.log" 2>&1 &
-        bpid=$!
-        for _ in $(seq 100); do [ -s "$tmp/pty" ] && break; sleep 0.1; done
-        [ -s "$tmp/pty" ] || return 1
-        L=(--transport serial --port "$(cat "$tmp/pty")")
+        "$BS" --dir "$gw" --link "$tmp/tty" --baud 0 "$@" >"$tmp/board.out" 2>"$tmp/board.log" &
     else
-        "$BS" --dir "$1" --listen "$tmp/sock" --baud 0 >"$tmp/board.log" 2>&1 &
-        bpid=$!
-        for _ in $(seq 100); do [ -S "$tmp/sock" ] && break; sleep 0.1; done
-        [ -S "$tmp/sock" ] || return 1
+        "$BS" --dir "$gw" --listen "$tmp/sock" --baud 0 "$@" >"$tmp/board.out" 2>"$tmp/board.log" &
+    fi
+    bpid=$!
+    t0=$(date +%s) t0ns=$(date +%s%N)
+    until [ -s "$tmp/board.out" ]; do
+        kill -0 "$bpid" 2>/dev/null || { bpid=; return 1; }
+        [ $(($(date +%s) - t0)) -lt "$EF_GUARD_S" ] || return 1
+        sleep 0.05
+    done
+    boot_ms=$((($(date +%s%N) - t0ns) / 1000000)) # the model's start and the firmware's boot, on this machine now
+    if [ $mode = serial ]; then
+        L=(--transport serial --port "$tmp/tty")
+    else
         L=(--transport socket --connect "unix:$tmp/sock")
     fi
-    L+=(--timeout 30000)
+    L+=(--timeout "$LINK_MS")
 }
 echo "test: the simulated board over the $mode transport"
 # full records: verify on a serial line defaults to digest mode once the host has it
@@ -83,7 +108,7 @@ fi
 
 # ---------------------------------------------------------------- 1. identify
 start_board "$sim/gateware" || { bad "the simulated board did not come up"; cat "$tmp/board.log"; finish; }
-if [ $mode = serial ]; then addr=$(cat "$tmp/pty"); else addr=unix:$tmp/sock; fi
+if [ $mode = serial ]; then addr=$tmp/tty; else addr=unix:$tmp/sock; fi
 python3 "$root/tests/board/identify.py" "$addr" >"$tmp/id.out" 2>&1
 rc=$?
 soc=$sim/software/include/generated/soc.h
@@ -131,12 +156,13 @@ fi
 PB=$build/tests/host/ptyboard
 if [ $mode = serial ] && [ -x "$PB" ]; then
     start_board "$sim/gateware" || { bad "the simulated board did not come up"; finish; }
-    "$PB" --to "$(cat "$tmp/pty")" --link "$tmp/tty" --faults flip=300,drop-down=4000,dup-down=8000 \
+    rm -f "$tmp/relay.out"
+    "$PB" --to "$tmp/tty" --link "$tmp/relay" --faults flip=300,drop-down=4000,dup-down=8000 \
         >"$tmp/relay.out" 2>"$tmp/relay.err" &
     rpid=$!
-    for _ in $(seq 100); do [ -s "$tmp/relay.out" ] && break; sleep 0.1; done
+    until [ -s "$tmp/relay.out" ] || ! kill -0 "$rpid" 2>/dev/null; do sleep 0.05; done
     t0=$(date +%s%N)
-    "$H" verify "$tmp/v/vectors.bin" --transport serial --port "$tmp/tty" --timeout 30000 "${full[@]}" \
+    "$H" verify "$tmp/v/vectors.bin" --transport serial --port "$tmp/relay" --timeout "$LINK_MS" "${full[@]}" \
         --results "$tmp/wire" >"$tmp/wire.out" 2>&1
     rc=$?
     ms=$((($(date +%s%N) - t0) / 1000000))
@@ -177,5 +203,164 @@ if make -C "$root" --no-print-directory -f board/firmware/firmware.mk FW_SOC="$s
     stop_board
 else
     tail -n 20 "$tmp/fault-build.log"; bad "build the faulty firmware"
+fi
+# ---------------------------------------------------------------- 6. the board's own faults
+# played by the simulated board itself (board_sim --faults): the run cut into DATA frames of 4
+# commands so that the faults land mid-commands; every PASS compared with run 2's results
+if [ $mode = serial ]; then
+    P=(--transport serial --port "$tmp/tty" --frame-cmds 4)
+    STALL_MS=$((1500 * EF_SCALE)) # the stalled run's own --timeout: 4 of them end it (what it tests)
+
+    # hrun NAME WANT_EXIT REGEX -- COMMAND...: the exit status and what the host said
+    hrun() {
+        local name=$1 want=$2 re=$3 rc=0
+        shift 4
+        timeout "$EF_GUARD_S" "$@" >"$tmp/h.out" 2>"$tmp/h.err" || rc=$?
+        if [ "$rc" = "$want" ] && { [ -z "$re" ] || grep -Eq "$re" "$tmp/h.err" "$tmp/h.out"; }; then
+            ok "$name"
+        else
+            bad "$name" "exit $rc (want $want); $(tail -n 4 "$tmp/h.err" | tr '\n' ' ')"
+        fi
+    }
+    # hjson KEY: the last run's --json counter KEY
+    hjson() { sed -n 's/.*"'"$1"'": \([0-9]*\).*/\1/p' "$tmp/h.out" | tail -n 1; }
+    same() { # NAME FILE: FILE is byte-identical to run 2's results
+        if cmp -s "$2" "$tmp/full/vectors.actual.bin"; then ok "$1"; else bad "$1" "$2 differs from run 2's"; fi
+    }
+    # board_faults LABEL [--digest N]: the three faults, full records or digest mode
+    board_faults() {
+        local label=$1 r
+        shift
+        local dg=("${full[@]}")
+        [ $# -gt 0 ] && dg=("$@")
+        # the board stalls after the host's 5th frame (identify, reset, START, 2 DATA)
+        r=$tmp/stall$label
+        if start_board "$sim/gateware" --faults stall=5; then
+            hrun "the board stalls mid-commands$label: exit 5" 5 'stopped answering.*--resume' -- \
+                "$H" verify "$tmp/v/vectors.bin" "${P[@]}" "${dg[@]}" --timeout "$STALL_MS" --results "$r" --json
+            if grep -q "stalled after the host's frame 5" "$tmp/board.log" && [ "$(hjson timeouts)" = 4 ] &&
+               ! [ -e "$r/vectors.actual.bin" ]; then
+                ok "the board stalls$label: after the host's frame 5, 4 timeouts, no results written"
+            else
+                bad "the board stalls$label" "timeouts $(hjson timeouts); $(cat "$tmp/board.log")"
+            fi
+            kill -USR1 "$bpid" # the stall ends
+            hrun "the board stalls$label: --resume: PASS" 0 'check: PASS: 6 comparisons.*cycle-exact' -- \
+                "$H" verify "$tmp/v/vectors.bin" "${P[@]}" "${dg[@]}" --timeout "$LINK_MS" --results "$r" --resume
+            same "the board stalls$label: --resume's results byte-identical" "$r/vectors.actual.bin"
+        else
+            bad "the simulated board (stall) did not come up"
+        fi
+        # the line unplugged after the host's 5th frame; the board runs on
+        r=$tmp/unplug$label
+        if start_board "$sim/gateware" --faults unplug=5; then
+            hrun "the line unplugged mid-commands$label: exit 5" 5 'went away.*--resume' -- \
+                "$H" verify "$tmp/v/vectors.bin" "${P[@]}" "${dg[@]}" --timeout "$LINK_MS" --results "$r" --json
+            if grep -q "unplugged after the host's frame 5" "$tmp/board.log" && [ "$(hjson timeouts)" = 0 ]; then
+                ok "the line unplugged$label: after the host's frame 5, the hang-up seen (no timeout)"
+            else
+                bad "the line unplugged$label" "timeouts $(hjson timeouts); $(cat "$tmp/board.log")"
+            fi
+            hrun "the line unplugged$label: --resume: PASS" 0 'check: PASS: 6 comparisons.*cycle-exact' -- \
+                "$H" verify "$tmp/v/vectors.bin" "${P[@]}" "${dg[@]}" --timeout "$LINK_MS" --results "$r" --resume
+            same "the line unplugged$label: --resume's results byte-identical" "$r/vectors.actual.bin"
+        else
+            bad "the simulated board (unplug) did not come up"
+        fi
+        # the SoC reset (a power cycle) once its 4th frame reached the host (acknowledgements)
+        r=$tmp/reset$label
+        # (the frames the host sent while the SoC boots again are lost: its timeout, RESET_MS, sends
+        # them again, and the rebooted firmware's NAK names frame 0, which the host had acknowledged)
+        if start_board "$sim/gateware" --faults reset=4; then
+            # the reset run's --timeout: twice the board's boot as measured now (at least 3 s), so
+            # that its 4 timeouts outlast the reboot however loaded the machine is
+            RESET_MS=$((2 * boot_ms > 3000 ? 2 * boot_ms : 3000))
+            RESET_MS=$((RESET_MS * EF_SCALE))
+            hrun "the SoC reset mid-run$label: exit 6" 6 'reset or lost its state.*without --resume' -- \
+                "$H" verify "$tmp/v/vectors.bin" "${P[@]}" "${dg[@]}" --timeout "$RESET_MS" --results "$r" --json
+            if grep -q "reset after the board's frame 4" "$tmp/board.log" && [ "$(hjson naks)" -ge 1 ] &&
+               ! [ -e "$r/vectors.actual.bin" ]; then
+                ok "the SoC reset$label: its NAK asked for an acknowledged frame ($(hjson timeouts) timeouts), no results written"
+            else
+                bad "the SoC reset$label" "naks $(hjson naks); $(cat "$tmp/board.log")"
+            fi
+            hrun "the SoC reset$label: the same command again: PASS" 0 'check: PASS: 6 comparisons.*cycle-exact' -- \
+                "$H" verify "$tmp/v/vectors.bin" "${P[@]}" "${dg[@]}" --timeout "$LINK_MS" --results "$r"
+            same "the SoC reset$label: the new run's results byte-identical" "$r/vectors.actual.bin"
+        else
+            bad "the simulated board (reset) did not come up"
+        fi
+        stop_board
+    }
+    board_faults ""
+    if [ "$full_set" = 1 ] && [ ${#full[@]} -gt 0 ]; then
+        board_faults " (digest mode)" --digest 64
+    fi
+else
+    echo "SKIP - the board's own faults: need the serial transport (not counted)"
+fi
+
+# ---------------------------------------------------------------- 7. the full set's extras
+if [ "$full_set" = 1 ]; then
+    # a FRAME_END inside an open shape (the last SHAPE_END made an EDGE, the vectors' CRCs made
+    # good again): the peripheral ends a frame at FRAME_END's transfer, drained only after a closed
+    # shape, so the firmware refuses the stream
+    python3 - "$tmp/v/vectors.bin" "$tmp/open.bin" <<'PYEOF'
+import struct, sys, zlib
+b = bytearray(open(sys.argv[1], 'rb').read())
+o, last = 104, None
+while o < len(b):
+    if b[o] == 0 and b[o + 10 + 12] & 0xF == 4:
+        last = o
+    o += 10 + b[o + 1]
+b[last + 10 + 12] = (b[last + 10 + 12] & 0xF0) | 3
+struct.pack_into('<I', b, 96, zlib.crc32(bytes(b[104:])))
+struct.pack_into('<I', b, 100, zlib.crc32(bytes(b[:100])))
+open(sys.argv[2], 'wb').write(b)
+PYEOF
+    if start_board "$sim/gateware"; then
+        "$H" verify "$tmp/open.bin" "${L[@]}" "${full[@]}" --results "$tmp/open" >"$tmp/open.out" 2>&1
+        rc=$?
+        if [ $rc = 6 ] && grep -q 'code 16: FRAME_END inside a shape' "$tmp/open.out"; then
+            ok "a FRAME_END inside an open shape: refused by the firmware (exit 6, ERROR 16)"
+        else
+            bad "a FRAME_END inside an open shape" "exit $rc; $(tail -n 3 "$tmp/open.out")"
+        fi
+        stop_board
+    else
+        bad "the simulated board did not come up"
+    fi
+fi
+if [ "$full_set" = 1 ] && [ $mode = serial ]; then
+    # the bounded result queue on the SoC: firmware built with 1 KiB RESULT frames and a queue of 4
+    # (EF_BOARD_RESULT_QUEUE) and, to show the bound is what holds it, with none (0); run 2's
+    # 15 KiB of full records (16 frames) on a line of 300,000 baud in simulated time (30 kB/s:
+    # slower than the firmware makes results): PASS cycle-exact, results byte-identical, and the
+    # board's own status (asked by board_sim every 200,000 cycles between the host's frames) never
+    # says more than 4 result frames kept; unbounded it says more
+    for q in 4 0; do
+        qdir=$tmp/queue$q-gw
+        mkdir -p "$qdir"
+        cp "$sim"/gateware/*.init "$qdir/"
+        if ! make -C "$root" --no-print-directory -f board/firmware/firmware.mk FW_SOC="$sim" FW_OUT="$tmp/queue$q" \
+                FW_EXTRA="-DEF_BOARD_RESULT_QUEUE=$q -DEF_BOARD_RESULT_PAYLOAD=1024" \
+                EF_VENV_PY="$root/build/venv/bin/python" "$tmp/queue$q.bin" >"$tmp/queue-build.log" 2>&1; then
+            tail -n 20 "$tmp/queue-build.log"; bad "build the firmware with a result queue of $q"; continue
+        fi
+        od -An -v -tx4 -w4 "$tmp/queue$q.bin" | tr -d ' ' >"$qdir/sim_rom.init"
+        start_board "$qdir" --baud 300000 --probe-status 200000 ||
+            { bad "the simulated board (result queue $q) did not come up"; continue; }
+        "$H" verify "$tmp/v/vectors.bin" "${L[@]}" "${full[@]}" --results "$tmp/queue$q" >"$tmp/queue.out" 2>&1
+        rc=$?
+        stop_board
+        most=$(sed -n 's/.*result frames kept at most \([0-9]*\) (\([0-9]*\) status probes).*/\1 \2/p' "$tmp/board.log")
+        if [ $rc = 0 ] && grep -q 'check: PASS: 6 comparisons.*cycle-exact' "$tmp/queue.out" &&
+            cmp -s "$tmp/queue$q/vectors.actual.bin" "$tmp/full/vectors.actual.bin" &&
+            { { [ $q = 4 ] && [ "${most%% *}" -le 4 ]; } || { [ $q = 0 ] && [ "${most%% *}" -gt 4 ]; }; }; then
+            ok "a result queue of $q (0: none) on the SoC, 1 KiB frames: PASS cycle-exact, identical, at most ${most%% *} result frames kept (${most#* } probes)"
+        else
+            bad "a result queue of $q on the SoC" "exit $rc, at most '$most' kept; $(tail -n 3 "$tmp/queue.out") $(cat "$tmp/board.log")"
+        fi
+    done
 fi
 finish

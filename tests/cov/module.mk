@@ -2,8 +2,9 @@
 #   make test-coverage   `edgeflag coverage` (functional cover points of dv/coverage/points.tsv):
 #                        its own checks, then the shared SVGs + gen level 1 must hit every point
 #   make test-fusesoc    ef_raster.core: fusesoc lint and the Icarus sim target (build/venv)
-#   make test-rtl-mutants  the slice in make test: 8 RTL mutants drawn with seed 2027, under Icarus,
-#                        on rtl-test's small cases (<= 4,000 cycles)
+#   make test-rtl-mutants  the slice in make test: the RTL mutants of tests/mutants/slice_keys.tsv
+#                        under Icarus on rtl-test's small cases (<= 4,000 cycles) and tb_err, each
+#                        with its verdict; then the score check must fail without an equivalent line
 #   make test-rtl-cov    a slice of the code coverage (Verilator --coverage at NS 8 over a third of
 #                        rtl-test's cases, the per-module summary; a Verilator build: not in make test)
 #   make rtl-coverage    the full code coverage (rtl-test's cases + the level-1 regression at
@@ -18,8 +19,7 @@ test-fusesoc: cli
 test-rtl-cov: cli
 	@EF_COV_NS=8 EF_COV_REGRESS=0 EF_COV_SLICE_ONLY=3 bash tests/cov/rtl-coverage.sh $(BUILD) $(BUILD)/rtl-coverage-slice
 test-rtl-mutants: cli
-	@EF_MUT_SIM=icarus EF_MUT_NS=8 EF_MUT_SAMPLE=8 EF_MUT_SEED=2027 EF_MUT_SVGS=6 EF_MUT_GEN_SLICE=40 \
-	    EF_MUT_REGRESS=0 EF_MUT_MAXCYC=4000 EF_MUT_SVG_SIZE=16x12 bash tests/mutants/rtl-mutants.sh $(BUILD)
+	@bash tests/mutants/rtl-mutants-slice.sh $(BUILD)
 rtl-coverage: cli
 	@EF_COV_REQUIRE=1 bash tests/cov/rtl-coverage.sh $(BUILD)
 rtl-mutants: cli

@@ -10,7 +10,7 @@
 #      every 11th `edgeflag gen` level-1 case, rotating over NS x rule, the
 #      tiger with random back-pressure on pix, the tiger at W_MAX x H_MAX at
 #      NS 8/16/32 and tests/cov/max_canvas.scene: the top rows and columns of the
-#      build) and make rtl-regress's (every
+#      build), dv/tb/tb_err.v (rtl-test's DUT limit checks) and make rtl-regress's (every
 #      level-1 case at 8/16/32 x the three rule settings, those that fit the
 #      build), each passing `edgeflag check` (a run that does not pass fails
 #      this script: coverage of a failing run means nothing);
@@ -25,7 +25,8 @@
 #                        EF_COV_SLICE_ONLY=N: every Nth of them at NS 8);
 #                        EF_COV_REGRESS=3: each level-1 case at three settings
 #                        (NS 8/16/32, the rule rotating) instead of all nine
-#   EF_COV_MAXCYC=N      leave out cases of more than N cycles (default: none)
+#   EF_COV_MAXCYC=N      leave out cases of more than N cycles (default: none);
+#                        EF_COV_REG_MAXCYC=N only the level-1 regression's
 #   EF_COV_REUSE=DIR     a work folder kept (EF_COV_KEEP=1) by an earlier run of
 #                        the same tree: its --coverage builds are reused
 #   EF_COV_REQUIRE=1     exit 1 unless the targets are met (every line and
@@ -69,7 +70,17 @@ buildone() {
         "$root/dv/tb/tb_raster.v" "${RTL[@]}" "$root/dv/coverage/vl_cov_main.cpp" >"$work/build_$1.log" 2>&1 ||
         { tail -20 "$work/build_$1.log"; return 1; }
 }
+# and dv/tb/tb_err.v (make rtl-test's DUT limit checks: the error paths that tb_raster's
+# refusals keep from the DUT), W_MAX = H_MAX = 16, E_MAX = 8; --prefix gives its model the
+# class name vl_cov_main.cpp runs
+builderr() {
+    [ -n "${EF_COV_REUSE:-}" ] && [ -x "$work/vl_err/Vtb_raster" ] && return 0
+    verilator --cc --exe --build --timing -O1 -Wno-fatal -Wno-WIDTH -I"$root/rtl" --coverage --Mdir "$work/vl_err" \
+        --top-module tb_err --prefix Vtb_raster "$root/dv/tb/tb_err.v" "${RTL[@]}" "$root/dv/coverage/vl_cov_main.cpp" \
+        >"$work/build_err.log" 2>&1 || { tail -20 "$work/build_err.log"; return 1; }
+}
 pids=()
+builderr & pids+=($!)
 for ns in $nslist; do buildone "$ns" & pids+=($!); done
 for p in "${pids[@]}"; do wait "$p" || { echo "FAIL rtl-coverage: Verilator --coverage build"; echo "0 passed, 1 failed"; exit 1; }; done
 echo "rtl-coverage: --coverage builds at NS $nslist in $(( $(date +%s) - t0 )) s"
@@ -89,6 +100,7 @@ rules=(scene nonzero evenodd)
         fi
     done < <(tail -n +3 "$work/gen/index.tsv")
     echo "bp_tiger|$root/tests/data/svg/tiger.svg|8|scene|24x18|424242"
+    echo "tb_err|-|8|-|-|-"
     # directed (added after the first measurement): no case above reaches the build's top
     # rows and columns (coordinate bits 8 and up, occupancy rows past 138): the tiger filling
     # W_MAX x H_MAX does
@@ -115,6 +127,11 @@ else
 fi
 one() {   # one NAME INPUT NS RULE SIZE BP: "PASS NAME", "SKIP NAME why" or "FAIL NAME why"
     local d=$work/c/$1 a=$work/c/$1/act args=() w h me mode=--cycles pa=() r cyc
+    if [ "$1" = tb_err ]; then
+        r=$("$work/vl_err/Vtb_raster" +covfile="$work/dat/$1.dat" 2>&1)
+        if echo "$r" | grep -q '^tb_err: PASS'; then echo "PASS $1"; else echo "FAIL $1 $(echo "$r" | grep 'tb_err' | head -n 1)"; fi
+        return
+    fi
     case " $nslist " in *" $3 "*) ;; *) echo "SKIP $1 NS $3 not built"; return ;; esac
     mkdir -p "$a"
     [ "$4" != scene ] && args+=(--rule "$4"); [ "$5" != - ] && args+=(--size "$5")
@@ -125,6 +142,8 @@ one() {   # one NAME INPUT NS RULE SIZE BP: "PASS NAME", "SKIP NAME why" or "FAI
     if [ "$me" -gt $EM ]; then echo "SKIP $1 a shape of $me edges"; rm -rf "$d"; return; fi
     cyc=$(sed -n 's/.*"cycles": \([0-9]*\).*/\1/p' "$d/manifest.json")
     if [ "${EF_COV_MAXCYC:-0}" -gt 0 ] && [ "$cyc" -gt "$EF_COV_MAXCYC" ]; then echo "SKIP $1 $cyc cycles"; rm -rf "$d"; return; fi
+    case $1 in reg_*) if [ "${EF_COV_REG_MAXCYC:-0}" -gt 0 ] && [ "$cyc" -gt "$EF_COV_REG_MAXCYC" ]; then
+        echo "SKIP $1 $cyc cycles"; rm -rf "$d"; return; fi ;; esac
     [ "$6" != - ] && { pa=(+bp="$6"); mode=--transactions; }
     r=$(cd "$d" && "$work/vl_$3/Vtb_raster" +cmd="$d/cmd.stim.hex" +out="$a/" +covfile="$work/dat/$1.dat" "${pa[@]}" 2>&1)
     if ! echo "$r" | grep -q '^tb_raster: DONE'; then echo "FAIL $1 bench: $(echo "$r" | grep 'tb_raster' | head -n 1)"
@@ -167,6 +186,19 @@ python3 "$root/dv/coverage/cov_summary.py" "$out/coverage.dat" "$root/rtl" "$roo
     --holes "$out/holes.txt" "${req[@]}" | tee "$out/summary.txt"
 if [ "${PIPESTATUS[0]}" = 0 ]; then pass=$((pass + 1)); echo "PASS rtl-coverage: summary $out/summary.txt${req:+ (targets met)}"
 else fail=$((fail + 1)); echo "FAIL rtl-coverage: summary (targets not met or unreadable)"; fi
+# The hole check must bite (issue 27): the same counters against the waivers without their first
+# line waiver must give one unwaived hole more and fail --require.
+wv=$root/dv/coverage/waivers.tsv
+w1=$(awk -F'\t' '$1 == "line" { print $3; exit }' "$wv")
+awk -F'\t' '!d && $1 == "line" { d = 1; next } { print }' "$wv" >"$work/waivers-1.tsv"
+python3 "$root/dv/coverage/cov_summary.py" "$out/coverage.dat" "$root/rtl" "$work/waivers-1.tsv" \
+    --holes "$work/holes-1.txt" --require >"$work/summary-1.txt" 2>&1; rc=$?
+n0=$(grep -c '^HOLE' "$out/holes.txt" 2>/dev/null); n1=$(grep -c '^HOLE' "$work/holes-1.txt" 2>/dev/null)
+if [ -n "$w1" ] && [ "$rc" = 1 ] && [ "${n1:-0}" -gt "${n0:-0}" ]; then
+    pass=$((pass + 1)); echo "PASS rtl-coverage: the hole check bites: without the waiver '$w1' the summary has $n1 unwaived holes instead of $n0 and --require fails"
+else
+    fail=$((fail + 1)); echo "FAIL rtl-coverage: without the waiver '$w1' the hole check did not fail (exit $rc, $n0 -> $n1 unwaived holes)"
+fi
 echo "rtl-coverage: $(( $(date +%s) - t0 )) s"
 echo "$pass passed, $fail failed"
 [ $fail = 0 ]

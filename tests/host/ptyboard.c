@@ -23,6 +23,9 @@
  *                     frame sent to it, docs/board.md 5.5)
  *   --stall-ms MS     how long a stall lasts (default 3000)
  *   --serial NAME     the engine's identify serial (default EFPTY0001)
+ *   --result-queue N  the engine's result queue bound in frames (docs/board.md
+ *                     4.2; 0: none); at exit the most frames it kept at once
+ *                     is printed on standard error
  */
 #define _GNU_SOURCE
 #include <errno.h>
@@ -166,6 +169,7 @@ int main(int argc, char **argv)
     const char *link = NULL, *to = NULL, *serial = "EFPTY0001";
     double rate = 0;
     int stall_ms = 3000;
+    long queue = -1;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
         if (!v) {
@@ -183,6 +187,8 @@ int main(int argc, char **argv)
             rate = strtod(v, NULL);
         else if (strcmp(a, "--stall-ms") == 0)
             stall_ms = atoi(v);
+        else if (strcmp(a, "--result-queue") == 0)
+            queue = atol(v);
         else if (strcmp(a, "--faults") == 0) {
             char buf[512];
             snprintf(buf, sizeof buf, "%s", v);
@@ -199,7 +205,8 @@ int main(int argc, char **argv)
                 }
             }
         } else {
-            fprintf(stderr, "usage: ptyboard [--to TTY] [--link PATH] [--rate B] [--faults LIST] [--stall-ms MS]\n");
+            fprintf(stderr, "usage: ptyboard [--to TTY] [--link PATH] [--rate B] [--faults LIST] [--stall-ms MS] "
+                            "[--serial NAME] [--result-queue N]\n");
             return 2;
         }
     }
@@ -230,6 +237,8 @@ int main(int argc, char **argv)
         b = ef_board_new(&info, ef_board_dut_model());
         if (!b)
             return 1;
+        if (queue >= 0)
+            ef_board_set_result_queue(b, (uint32_t)queue);
     }
     char name[256];
     int m = new_pty(link, name, sizeof name);
@@ -352,7 +361,11 @@ int main(int argc, char **argv)
     }
     if (link)
         unlink(link);
-    if (b)
+    if (b) {
+        ef_board_stats st;
+        ef_board_get_stats(b, &st);
+        fprintf(stderr, "ptyboard: result frames kept at most %u at once (the last run)\n", (unsigned)st.res_peak);
         ef_board_free(b);
+    }
     return 0;
 }

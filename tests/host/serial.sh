@@ -3,7 +3,8 @@
 # pseudo-terminal: the unmodified binary with --transport serial --port PTY against a board, with
 # tests/host/ptyboard as a relay in front of it that limits the rate and plays the wire's faults.
 #   1. verify at small canvases over every interface: PASS, results byte-identical to the
-#      simulated board's; --baud through termios2; the wire at 3 Mbaud's 300 kB/s (measured);
+#      simulated board's; --baud through termios2; the engine's result queue bound (4 frames
+#      kept at most, the DUT back-pressured); the wire at 3 Mbaud's 300 kB/s (measured);
 #   2. the fault matrix of docs/board.md section 6 on the wire: a flipped bit, a dropped and a
 #      duplicated byte each way (recovered: exit 0), a stalled board and the line unplugged
 #      (exit 5, then --resume: exit 0 and byte-identical results), the board reset (exit 6);
@@ -154,6 +155,30 @@ run "verify at --baud 115200 (the standard code) : PASS" 0 'check: PASS' -- \
     "$H" verify small/vectors.bin "${LINK[@]}" --baud 115200 --results rb1
 run "verify at --baud 1234567 (termios2 BOTHER): PASS" 0 'check: PASS' -- \
     "$H" verify small/vectors.bin "${LINK[@]}" --baud 1234567 --results rb2
+# the engine's result queue bound (docs/board.md 4.2): the tiger's full records (61 frames of
+# 32 KiB) through an engine that keeps at most 4 result frames (the DUT held back while the host
+# has not acknowledged them) pass with the same results and never keep more than 4; the same run
+# unbounded keeps more (so the bound is what held it)
+for q in 4 0; do
+    rm -f qtty q.port
+    "$PB" --link "$tmp/qtty" --result-queue $q >q.port 2>q.err &
+    qpid=$!
+    wait_line q.port >/dev/null || bad "the ptyboard with --result-queue $q started" "$(cat q.err)"
+    run "full records through a result queue of $q frames (0: none): PASS" 0 '"check": "pass"' -- \
+        "$H" verify tiger/vectors.bin --transport serial --port "$tmp/qtty" --timeout "$EF_LINK_MS" --digest off \
+        --results rq$q --json --quiet
+    tq=$(hstat timeouts)
+    stop_pid "$qpid"
+    peak=$(sed -n 's/.*kept at most \([0-9]*\) at once.*/\1/p' q.err)
+    same "a result queue of $q: results identical to the simulated board's" rq$q/vectors.actual.bin sim-tiger/vectors.actual.bin
+    if [ $q = 4 ] && [ "${peak:-99}" -le 4 ] && [ "$tq" = 0 ]; then
+        ok "a result queue of 4: at most $peak result frames kept at once, no timeout"
+    elif [ $q = 0 ] && [ "${peak:-0}" -gt 4 ]; then
+        ok "no bound: $peak result frames kept at once (more than the bound of 4)"
+    else
+        bad "the result queue of $q" "at most '${peak}' frames kept, $tq timeouts"
+    fi
+done
 # the wire of a 3 Mbaud 8N1 line: 300,000 bytes a second each way
 relay --rate 300000
 for mode in off 1024; do

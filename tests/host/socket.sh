@@ -149,6 +149,14 @@ if [ -x "$SB" ]; then
     run "bench against the engine behind a socket" 0 'sink|source|loopback' -- \
         "$H" bench --transport socket --connect "unix:$tmp/e.sock" --mib 16 --timeout "$EF_LINK_MS"
     sed 's/^/# engine: /' out.txt
+    # what no correct host sends (issue 27: the engine's mutants that the host's runs cannot
+    # reach): tests/board/probe.py, written from docs/board.md alone, checks the engine's ERROR
+    # codes for refused STARTs, DATA and END, its single NAK per gap, status and ACKR
+    if "$PY" "$root/tests/board/probe.py" "unix:$tmp/e.sock" >probe.txt 2>&1 && tail -n 1 probe.txt | grep -q ' 0 failed$'; then
+        ok "the engine answers tests/board/probe.py's $(tail -n 1 probe.txt | cut -d' ' -f1) protocol checks"
+    else
+        bad "tests/board/probe.py against the engine" "$(grep -v '^ok - ' probe.txt | head -n 5 | tr '\n' ' ')"
+    fi
     stop_board
 else
     bad "sockboard not built" "$SB"

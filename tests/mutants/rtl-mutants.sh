@@ -24,6 +24,14 @@
 # usage: bash tests/mutants/rtl-mutants.sh BUILD_DIR
 #   EF_MUT_SAMPLE=N   run N mutants drawn with EF_MUT_SEED (default 27) instead
 #                     of all (the draw is deterministic: python's random.Random)
+#   EF_MUT_STRAT=F,M  a stratified sample instead: per block (file) ceil(F x its
+#                     mutants), at least M (all when fewer), each block drawn
+#                     with its own generator seeded by EF_MUT_SEED and the file;
+#                     the report adds the population estimate (combined ratio
+#                     estimator, 95 % interval) and per block Wilson intervals
+#   EF_MUT_KEYS=FILE  exactly the mutants of these keys (make test's slice)
+#   EF_MUT_EQUIV=FILE the equivalent mutants' list (default dv/mutants/equivalent.tsv)
+#   EF_MUT_REQUIRE=1  fail unless every non-equivalent mutant is killed
 #   EF_MUT_OPS=LIST   only these operators (comma-separated)
 #   EF_MUT_FILES=LIST only these rtl/ files (comma-separated, e.g. ef_plot.v)
 #   EF_MUT_REGRESS=0  skip stage 5;  EF_MUT_JOBS (2);  EF_MUT_TIMEOUT (s, 30, plus a second per 10,000 cycles of the case)
@@ -76,6 +84,7 @@ files=(ef_raster.v ef_dec.v ef_setup.v ef_div.v ef_etm.v ef_aet.v ef_plot.v ef_s
 # an RTL variant (dv/rtl-variant.sh: a copy of rtl/ with its include files), whose .v files
 # rtl_mutate.py then replaces by their schemata in place
 bash "$root/dv/rtl-variant.sh" "$work/mut" >/dev/null || { echo "FAIL rtl-mutants: dv/rtl-variant.sh"; echo "0 passed, 1 failed"; exit 1; }
+mkdir -p "$work/orig" && cp "$work/mut"/*.v "$work/mut"/*.vh "$work/orig/"   # the sources as mutated, for the report
 # and the n-rooks table, a function included in ef_plot's body
 nall=$(python3 "$root/dv/mutants/rtl_mutate.py" "$work/mut" "${files[@]/#/$work/mut/}" "$work/mut/ef_rooks.vh") ||
     { echo "0 passed, 1 failed"; exit 1; }
@@ -83,7 +92,7 @@ MUTRTL=("${files[@]/#/$work/mut/}")
 
 # ------------------------------------------------------------ 2. builds
 buildone() {
-    [ -x "$work/vl_$1/Vtb_raster" ] && [ -n "${EF_MUT_REUSE:-}" ] && return 0
+    { [ -x "$work/vl_$1/Vtb_raster" ] || [ -f "$work/vl_$1/t.vvp" ]; } && [ -n "${EF_MUT_REUSE:-}" ] && return 0
     if [ "$sim" = icarus ]; then
         mkdir -p "$work/vl_$1"
         iverilog -g2005 -I"$work/mut" -o "$work/vl_$1/t.vvp" -Ptb_raster.NS="$1" -Ptb_raster.W_MAX=$WM -Ptb_raster.H_MAX=$HM \
@@ -95,7 +104,15 @@ buildone() {
         -GNS="$1" -GW_MAX=$WM -GH_MAX=$HM -GE_MAX=$EM -GFB_BITS=16 "$root/dv/tb/tb_raster.v" "${MUTRTL[@]}" \
         >"$work/build_$1.log" 2>&1 || { tail -20 "$work/build_$1.log"; return 1; }
 }
+# dv/tb/tb_err.v (make rtl-test's DUT limit checks) on the schemata, under Icarus in either mode
+# (as rtl-test runs it; it compiles in a second)
+builderr() {
+    [ -f "$work/err.vvp" ] && [ -n "${EF_MUT_REUSE:-}" ] && return 0
+    iverilog -g2005 -I"$work/mut" -o "$work/err.vvp" "$root/dv/tb/tb_err.v" "${MUTRTL[@]}" >"$work/build_err.log" 2>&1 ||
+        { tail -20 "$work/build_err.log"; return 1; }
+}
 pids=()
+builderr & pids+=($!)
 for ns in $nslist; do buildone "$ns" & pids+=($!); done
 for p in "${pids[@]}"; do wait "$p" || { echo "FAIL rtl-mutants: Verilator did not build the schemata"; echo "0 passed, 1 failed"; exit 1; }; done
 echo "rtl-mutants: $nall mutants in $(( $(echo "${files[@]}" | wc -w) + 1 )) files; schemata built ($sim) at NS $nslist in $(( $(date +%s) - t0 )) s"
@@ -134,6 +151,7 @@ mkcase() {   # mkcase STAGE NAME INPUT NS RULE SIZE [BP]
             mkcase r "reg_$num" "$work/gen/$file" $((8 << (num % 3))) "${rules[$(( (num / 3) % 3 ))]}" -
         fi
     done < <(tail -n +3 "$work/gen/index.tsv")
+    echo "t 0 tb_err 8 -"     # the DUT's limit checks (dv/tb/tb_err.v), first: it takes a second
     case " $nslist " in *" 8 "*) mkcase t bp_tiger "$root/tests/data/svg/tiger.svg" 8 scene 24x18 424242 ;; esac
     # directed (added after the first run, where it killed 3 of the 31 survivors): the tiger
     # filling the build's W_MAX x H_MAX, a FRAME of exactly the largest canvas, rows past 64
@@ -146,16 +164,22 @@ echo "rtl-mutants: stage rtl-test: $nt cases; stage regression: $nr level-1 case
 
 # runmut K STAGE: "K killed CASE" at the first case that fails, else "K survived"
 runmut() {
-    local k=$1 st=$2 s cyc n ns bp a out mode
+    local k=$1 st=$2 s cyc n ns bp a out mode ci=0
     while read -r s cyc n ns bp; do
+        ci=$((ci + 1))
         [ "$s" = "$st" ] || continue
         a=$work/act/$k.$n; mkdir -p "$a"; mode=--cycles
         local t=$((tmo + cyc / 10000))   # the timeout grows with the case: ~30,000 cycles/s on a busy core
+        if [ "$n" = tb_err ]; then
+            rm -rf "$a"
+            timeout "$t" vvp -n "$work/err.vvp" +mut="$k" 2>&1 | grep -q '^tb_err: PASS' || { echo "$k killed $n"; return; }
+            continue
+        fi
         local pa=(); [ "$bp" != - ] && { pa=(+bp="$bp"); mode=--transactions; }
         if [ "$sim" = icarus ]; then
             out=$(timeout "$t" vvp -n "$work/vl_$ns/t.vvp" +mut="$k" +cmd="$work/vec/$n/cmd.stim.hex" +out="$a/" "${pa[@]}" 2>&1)
         else
-            out=$(timeout "$t" "$work/vl_$ns/Vtb_raster" +verilator+rand+reset+2 +verilator+seed+$((k + 1)) +mut="$k" \
+            out=$(timeout "$t" "$work/vl_$ns/Vtb_raster" +verilator+rand+reset+2 +verilator+seed+$((k * 1000 + ci)) +mut="$k" \
                 +cmd="$work/vec/$n/cmd.stim.hex" +out="$a/" "${pa[@]}" 2>&1)
         fi
         if ! echo "$out" | grep -q '^tb_raster: DONE' || ! "$EF" check "$work/vec/$n" "$a" $mode --errors 1 >/dev/null 2>&1; then
@@ -178,20 +202,51 @@ done
 pass=$((pass + 1)); echo "PASS rtl-mutants: mutant 0 (the design) passes every case of both stages"
 
 # ------------------------------------------------------------ selection
-python3 - "$work/mut/mutants.tsv" "${EF_MUT_SAMPLE:-0}" "${EF_MUT_SEED:-27}" "${EF_MUT_OPS:-}" "${EF_MUT_FILES:-}" >"$work/selected.tsv" <<'EOF'
-import random, sys
+python3 - "$work/mut/mutants.tsv" "${EF_MUT_SAMPLE:-0}" "${EF_MUT_SEED:-27}" "${EF_MUT_OPS:-}" "${EF_MUT_FILES:-}" \
+    "${EF_MUT_STRAT:-}" "$work/strata.tsv" "${EF_MUT_KEYS:-}" >"$work/selected.tsv" <<'EOF' || { echo "FAIL rtl-mutants: the selection"; echo "$pass passed, $((fail + 1)) failed"; exit 1; }
+import math, random, sys
 rows = [l.rstrip("\n").split("\t") for l in open(sys.argv[1])][1:]
+if sys.argv[8]:
+    # EF_MUT_KEYS=FILE: exactly the mutants of these keys (one a line), each of which must exist
+    keys = [l.strip() for l in open(sys.argv[8]) if l.strip() and not l.startswith("#")]
+    have = {r[4] for r in rows}
+    missing = [k for k in keys if k not in have]
+    if missing:
+        raise SystemExit("rtl-mutants: no mutant has the key %s (the RTL changed?)" % missing[0])
+    rows = [r for r in rows if r[4] in set(keys)]
 n, seed = int(sys.argv[2]), int(sys.argv[3])
 ops = set(sys.argv[4].split(",")) if sys.argv[4] else None
 fs = set(sys.argv[5].split(",")) if sys.argv[5] else None
 rows = [r for r in rows if (not ops or r[3] in ops) and (not fs or r[1] in fs)]
-if 0 < n < len(rows):
+pop = {}
+for r in rows:
+    pop[r[1]] = pop.get(r[1], 0) + 1
+if sys.argv[6]:
+    # stratified: per block (file) n_h = min(N_h, max(MIN, ceil(FRAC * N_h))), each stratum drawn
+    # with its own generator seeded by (seed, file), so a block's draw does not depend on the others
+    frac, mn = sys.argv[6].split(",")
+    frac, mn = float(frac), int(mn)
+    out = []
+    for f in sorted(pop):
+        st = [r for r in rows if r[1] == f]
+        k = min(len(st), max(mn, math.ceil(frac * len(st))))
+        out += random.Random("%d:%s" % (seed, f)).sample(st, k)
+    rows = sorted(out, key=lambda r: int(r[0]))
+elif 0 < n < len(rows):
     rows = sorted(random.Random(seed).sample(rows, n), key=lambda r: int(r[0]))
+with open(sys.argv[7], "w") as st:
+    for f in sorted(pop):
+        st.write("%s\t%d\n" % (f, pop[f]))     # stratum sizes N_h (of the operators/files chosen)
 for r in rows:
     print("\t".join(r))
 EOF
 nsel=$(grep -c . "$work/selected.tsv")
-echo "rtl-mutants: $nsel of $nall mutants selected${EF_MUT_SAMPLE:+ (seeded sample, seed ${EF_MUT_SEED:-27})}"
+[ "$nsel" -gt 0 ] || { echo "FAIL rtl-mutants: no mutant selected"; echo "$pass passed, $((fail + 1)) failed"; exit 1; }
+if [ -n "${EF_MUT_STRAT:-}" ]; then
+    echo "rtl-mutants: $nsel of $nall mutants selected (stratified per block, EF_MUT_STRAT=$EF_MUT_STRAT, seed ${EF_MUT_SEED:-27})"
+else
+    echo "rtl-mutants: $nsel of $nall mutants selected${EF_MUT_SAMPLE:+ (seeded sample, seed ${EF_MUT_SEED:-27})}"
+fi
 
 # ------------------------------------------------------------ 4. + 5.
 # EF_MUT_CACHE=FILE: stage-1 results ("K killed CASE" / "K survived") of an earlier run of the
@@ -215,8 +270,8 @@ else
 fi
 
 # ------------------------------------------------------------ 6. report
-python3 - "$work/selected.tsv" "$work/stage1.txt" "$work/stage2.txt" "$root/dv/mutants/equivalent.tsv" \
-    "${EF_MUT_REGRESS:-1}" >"$work/report.txt" 2>"$work/results.tsv" <<'EOF'
+python3 - "$work/selected.tsv" "$work/stage1.txt" "$work/stage2.txt" "${EF_MUT_EQUIV:-$root/dv/mutants/equivalent.tsv}" \
+    "${EF_MUT_REGRESS:-1}" "$work/strata.tsv" "$work/orig" >"$work/report.txt" 2>"$work/results.tsv" <<'EOF' || { cat "$work/report.txt" "$work/results.tsv"; echo "FAIL rtl-mutants: the report"; echo "$pass passed, $((fail + 1)) failed"; exit 1; }
 import sys
 sel = [l.rstrip("\n").split("\t") for l in open(sys.argv[1]) if l.strip()]
 def res(p):
@@ -232,10 +287,25 @@ try:
     for l in open(sys.argv[4]):
         if l.startswith("#") or not l.strip() or l.startswith("key\t"):
             continue
-        k, why = l.rstrip("\n").split("\t", 1)
-        eqv[k] = why
+        k, src, why = l.rstrip("\n").split("\t", 2)
+        eqv[k] = (src, why)
 except FileNotFoundError:
     pass
+# an entry holds while the mutated line reads as it did when it was triaged (a key's occurrence
+# number can move to other code when the file changes): else the mutant counts as a survivor
+rtl_src = {}
+def line_of(f, ln):
+    if f not in rtl_src:
+        rtl_src[f] = open(sys.argv[7] + "/" + f).read().split("\n")
+    return " ".join(rtl_src[f][int(ln) - 1].split())
+stale = []
+def is_eqv(f, ln, key):
+    if key not in eqv:
+        return False
+    if eqv[key][0] != line_of(f, ln):
+        stale.append("stale equivalence (the line changed, triage it again): %s rtl/%s:%s '%s'" % (key, f, ln, line_of(f, ln)))
+        return False
+    return True
 regress = sys.argv[5] == "1"
 blocks = {}
 surv = []
@@ -250,7 +320,7 @@ for mid, f, line, op, key, old, new in sel:
         b[1] += 1; verdict = "killed-rtl-test " + s1[mid][1]
     elif st2 == "killed":
         b[2] += 1; verdict = "killed-regression " + s2[mid][1]
-    elif key in eqv:
+    elif is_eqv(f, line, key):
         b[3] += 1; verdict = "equivalent"
     else:
         b[4] += 1; verdict = "SURVIVED"; surv.append((f, line, op, old, new, key))
@@ -269,6 +339,62 @@ for f in sorted(blocks):
 line("all", tot)
 if not regress:
     print("(stage regression skipped: EF_MUT_REGRESS=0)")
+# the population's score from the sample: the combined ratio estimator of a stratified sample
+# (Cochran, Sampling Techniques, 6.11): R = sum N_h k_h/n_h / sum N_h e_h/n_h (k killed, e
+# non-equivalent), its variance by linearisation with the finite-population correction; per
+# block the Wilson 95 % interval of killed / non-equivalent in the sample
+import math
+pop = {}
+for l in open(sys.argv[6]):
+    f, nn = l.split("\t")
+    pop[f] = int(nn)
+def wilson(k, n):
+    if not n:
+        return "-"
+    z, p = 1.96, k / n
+    c = (p + z * z / (2 * n)) / (1 + z * z / n)
+    h = z * math.sqrt(p * (1 - p) / n + z * z / (4 * n * n)) / (1 + z * z / n)
+    return "[%.1f, %.1f] %%" % (100 * max(0, c - h), 100 * min(1, c + h))
+per = {}
+for mid, f, line_, op, key, old, new in sel:
+    st1 = s1[mid][0]
+    st2 = s2.get(mid, ("", ""))[0]
+    eq = st1 != "killed" and st2 != "killed" and key in eqv and eqv[key][0] == line_of(f, line_)
+    per.setdefault(f, []).append((0 if eq else 1, 1 if st1 == "killed" else 0,
+                                  1 if st1 == "killed" or st2 == "killed" else 0))
+for which, name in ((1, "rtl-test"), (2, "+regression")):
+    if which == 2 and not regress:
+        continue
+    Y = sum(pop[f] * sum(r[which] for r in rs) / len(rs) for f, rs in per.items())
+    X = sum(pop[f] * sum(r[0] for r in rs) / len(rs) for f, rs in per.items())
+    if not X:
+        continue
+    R = Y / X
+    v = 0.0
+    for f, rs in per.items():
+        nh, Nh = len(rs), pop[f]
+        if nh < 2:
+            continue
+        d = [r[which] - R * r[0] for r in rs]
+        m = sum(d) / nh
+        v += Nh * Nh * (1 - nh / Nh) * sum((x - m) ** 2 for x in d) / (nh - 1) / nh
+    se = math.sqrt(v) / X
+    if se > 0:
+        ci = "95 %% interval [%.1f, %.1f] %%" % (100 * max(0, R - 1.96 * se), 100 * min(1, R + 1.96 * se))
+    else:
+        # every sampled mutant killed (or none): the normal interval collapses; the Wilson interval
+        # of the pooled sample stands instead
+        k = sum(sum(r[which] for r in rs) for rs in per.values())
+        n = sum(sum(r[0] for r in rs) for rs in per.values())
+        ci = "Wilson 95 %% of the pooled sample %s" % wilson(k, n)
+    print("estimate over all %d mutants (%s): %.1f %% of non-equivalent killed, %s"
+          % (sum(pop.values()), name, 100 * R, ci))
+for f in sorted(per):
+    rs = per[f]
+    print("  %-14s sample %3d of %3d; rtl-test killed %3d of %3d non-equivalent, Wilson 95 %% %s"
+          % (f, len(rs), pop[f], sum(r[1] for r in rs), sum(r[0] for r in rs), wilson(sum(r[1] for r in rs), sum(r[0] for r in rs))))
+for l in stale:
+    print(l)
 for f, ln, op, old, new, key in surv:
     print("survivor: rtl/%s:%s %s: '%s' -> '%s'  key %s" % (f, ln, op, old[:60], new[:60], key))
 print("SURVIVORS %d" % len(surv))

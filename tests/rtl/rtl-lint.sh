@@ -172,6 +172,7 @@ vl tb_raster --top-module tb_raster $TB/tb_raster.v $RTL || l_ok=0
 vl "tb_raster (ef_raster_fast)" -DEF_FAST --top-module tb_raster $TB/tb_raster.v $FAST || l_ok=0
 vl "tb_raster (a user DUT)" -DEF_TB_USER_DUT --top-module tb_raster $TB/tb_raster.v $RTL || l_ok=0
 vl tb_dec --top-module tb_dec $TB/tb_dec.v $R/ef_dec.v || l_ok=0
+vl tb_err --top-module tb_err $TB/tb_err.v $RTL || l_ok=0
 vl tb_setup --top-module tb_setup $TB/tb_setup.v $R/ef_setup.v $R/ef_div.v $R/ef_slb_ram.v || l_ok=0
 vl tb_etm --top-module tb_etm $TB/tb_etm.v $R/ef_etm.v $R/ef_slb_ram.v || l_ok=0
 vl tb_slb_fill --top-module tb_slb_fill $TB/tb_slb_fill.v $R/ef_slb_fill.v $R/ef_slb_ram.v || l_ok=0

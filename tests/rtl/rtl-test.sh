@@ -126,7 +126,9 @@ build_vl() {
     local key=$1 ns=${1#f} o=$work/vl_$1 files=$RTL def=() top=
     [ "$key" != "$ns" ] && { files=$(rtl_files_fast "$R"); def=(-DEF_FAST); top="fast "; }
     mkdir -p "$o"
-    verilator --binary --timing -O1 -Wno-fatal -Wno-WIDTH -I"$R" "${def[@]}" --Mdir "$o/obj" --top-module tb_raster \
+    # random initial state (run with +verilator+rand+reset+2, a seed per case): a register the
+    # reset forgets, or a wrong reset value, shows instead of hiding behind zeroes (issue 27)
+    verilator --binary --timing -O1 -Wno-fatal -Wno-WIDTH -I"$R" "${def[@]}" --x-assign unique --x-initial unique --Mdir "$o/obj" --top-module tb_raster \
         -GNS="$ns" -GW_MAX=$WM -GH_MAX=$HM -GE_MAX=$EM -GFB_BITS=16 "$TB/tb_raster.v" $files >"$o/build.log" 2>&1 &&
         echo "RESULT PASS build verilator ${top}NS=$ns" || { tail -20 "$o/build.log"; echo "RESULT FAIL build verilator ${top}NS=$ns"; }
 }
@@ -155,6 +157,10 @@ while IFS=$'\t' read -r num file kind _ name _; do
     ns=$((8 << (k % 3))); rule=$(echo scene nonzero evenodd | cut -d' ' -f$(( (k / 3) % 3 + 1 )))
     cases+=("gen_${num}_${name}_${ns}_$rule|$work/gen/$file|$ns|$rule|-"); k=$((k + 1))
 done < <(tail -n +3 "$work/gen/index.tsv")
+# directed (issue 27, a mutant survivor): the tiger filling the build's W_MAX x H_MAX (a FRAME
+# of exactly the largest canvas, rows past 64 for AET's occupancy search, enough edges to wrap
+# AET's ring); Verilator only (445,000 cycles)
+cases+=("max_tiger_8_scene|$root/tests/data/svg/tiger.svg|8|scene|${WM}x$HM")
 
 vectors() {      # vectors NAME INPUT NS RULE SIZE [SCHEDULE]
     local d=$work/vec/$1 args=()
@@ -197,7 +203,7 @@ collect
 sim_run() {
     local sim=$1 ns=$2; shift 2
     if [ "$sim" = icarus ]; then ( vvp -n "$work/iv_$ns/t.vvp" "$@" 2>&1 ) 2>/dev/null
-    else ( "$work/vl_$ns/obj/Vtb_raster" "$@" 2>&1 ) 2>/dev/null; fi
+    else ( "$work/vl_$ns/obj/Vtb_raster" +verilator+rand+reset+2 +verilator+seed+$(( $(printf '%s' "$*" | cksum | cut -d' ' -f1) % 2000000000 + 1 )) "$@" 2>&1 ) 2>/dev/null; fi
 }
 run() {
     local sim=$1 n=$2 ns=$3 bp=${4:-} v=$work/vec/$2 a=$work/act_$1_$2 mode=--cycles pa=() t0 t1 out rc
@@ -259,6 +265,23 @@ refusal() {      # refusal KIND SIM
 for k in canvas edges backwards; do
     for sim in icarus verilator; do submit "refusal_${k}_$sim" refusal $k $sim; done
 done
+
+# The DUT's own limit checks, which tb_raster's refusals keep from it (issue 27: mutants of
+# DEC's and ETM's error paths survived every case): dv/tb/tb_err.v drives ef_raster (W_MAX =
+# H_MAX = 16, E_MAX = 8) with FRAMEs of size 0 and over the limits, exactly at them, and shapes
+# of E_MAX and E_MAX + 1 edges; err must rise, stick and clear exactly as docs/microarch.md says.
+dut_err() {
+    local d=$work/err out rc
+    mkdir -p "$d"
+    iverilog -g2005 -I"$R" -o "$d/t.vvp" "$TB/tb_err.v" $RTL >"$d/build.log" 2>&1 ||
+        { cat "$d/build.log"; echo "RESULT FAIL dut-err (icarus): the build"; return; }
+    out=$( (vvp -n "$d/t.vvp" 2>&1) 2>/dev/null); rc=$?
+    echo "$out"
+    { [ "$rc" = 0 ] && echo "$out" | grep -q '^tb_err: PASS'; } &&
+        echo "RESULT PASS dut-err (icarus): $(echo "$out" | sed -n 's/^tb_err: PASS //p'): a FRAME of size 0 or over W_MAX x H_MAX and a shape over E_MAX raise the sticky err (the canvas clamped to 1 x 1), reset clears it" ||
+        echo "RESULT FAIL dut-err (icarus): tb_err did not pass (exit $rc)"
+}
+submit dut_err dut_err
 
 # Every other exit of the bench (docs/testing.md): non-zero with its FAIL
 # line for no +cmd, no +out, a command file that is missing or holds no
