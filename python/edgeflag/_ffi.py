@@ -150,6 +150,7 @@ uint32_t ef_gen_total(const ef_gen_config *c);
 typedef struct ef_gen_case {
     uint32_t number; uint32_t total; int directed; uint32_t index; ef_gen_category category; const char *name;
     int grid; int rules_swapped; uint64_t case_seed; ef_gen_expect expect; char desc[768]; ef_scene scene;
+    char fit_note[400];
 } ef_gen_case;
 ef_status ef_gen_build(const ef_gen_config *c, uint32_t k, ef_gen_case *out);
 void ef_gen_case_destroy(ef_gen_case *gc);
