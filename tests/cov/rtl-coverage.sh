@@ -79,9 +79,9 @@ if [ -n "${EF_COV_KEEP:-}" ]; then echo "rtl-coverage: keeping $work"; else trap
 t0=$(date +%s)
 files=(ef_raster.v ef_dec.v ef_setup.v ef_div.v ef_etm.v ef_aet.v ef_plot.v ef_slb_fill.v ef_slb_ram.v ef_cov.v)
 RTL=("${files[@]/#/$root/rtl/}")
-# the fast configuration (rtl-test's rtl_files_fast and its define)
-ffiles=(ef_raster_fast.v ef_dec.v ef_setup.v ef_div.v ef_etm.v ef_aet.v ef_plot.v ef_slb_fill_skip.v ef_slb_ram.v ef_spanq.v ef_cov.v)
-FRTL=("${ffiles[@]/#/$root/rtl/}")
+# the fast configuration (rtl-test's rtl_files_fast and its define): the same files and the span
+# queue, tb_raster's EF_FAST (ef_raster SCHEDULE = 1: ef_slb_fill SKIP = 1, ef_spanq)
+FRTL=("${RTL[@]}" "$root/rtl/ef_spanq.v")
 FDEF=(-DEF_FAST)
 
 # ------------------------------------------------------------ 1. builds
