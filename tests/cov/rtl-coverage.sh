@@ -116,6 +116,9 @@ echo "rtl-coverage: --coverage builds $keys (fN: the fast top) in $(( $(date +%s
 # ------------------------------------------------------------ 2. runs
 [ -f "$work/gen/index.tsv" ] || "$EF" gen -o "$work/gen" >/dev/null 2>&1 || { echo "FAIL rtl-coverage: edgeflag gen"; echo "0 passed, 1 failed"; exit 1; }
 rules=(scene nonzero evenodd)
+awk 'BEGIN { print "scene 128 64"; print "shape evenodd 255 255 255 255"; printf "contour"
+    for (i = 0; i < 1050; i++) printf " %.2f 1 %.2f 2", i * 0.1, i * 0.1 + 0.05; printf "\n"
+    print "contour 10 40 20 45 12 50" }' >"$work/late_head.scene"
 fastp=; case " $configs " in *" fast "*) fastp=f ;; esac
 refon=; case " $configs " in *" ref "*) refon=1 ;; esac
 # a case line: NAME|INPUT|KEY|RULE|SIZE|BP, KEY the build (NS, or fNS: the fast top, whose
@@ -140,6 +143,10 @@ refon=; case " $configs " in *" ref "*) refon=1 ;; esac
     for ns in 8 16 32; do echo "max_tiger_$ns|$root/tests/data/svg/tiger.svg|$ns|scene|${WM}x$HM|-"; done
     # and the full width with the sink cell and the right clamp (tests/cov/max_canvas.scene)
     echo "max_rect_8|$root/tests/cov/max_canvas.scene|8|scene|${WM}x$HM|-"
+    # a row whose first record is number 2,048 or more (bit 11 of ETM's slot-list head, which
+    # no level-1 case sets: their big shapes start every row's list early): a zigzag of 2,100
+    # edges in pixel rows 1-2, then a triangle from row 40 (its records 2,100-2,102)
+    echo "late_head_8|$work/late_head.scene|8|scene|-|-"
 } >"$work/cases.base"
 {
     [ -n "$refon" ] && cat "$work/cases.base"
