@@ -184,12 +184,11 @@ A_SETUP="$R/ef_setup.v $R/ef_div.v $R/ef_slb_ram.v"
 A_RASTER="$R/ef_raster.v $R/ef_dec.v $A_SETUP $R/ef_etm.v $R/ef_aet.v $R/ef_plot.v $R/ef_slb_fill.v $R/ef_cov.v"
 # The fast configuration (the overlap schedule, docs/microarch.md section 6): the whole design's
 # top, the parameters it takes besides NS/W_MAX/H_MAX/E_MAX, its files; and its SLB + FILL (the
-# skipping scan) and span queue, the blocks it does not share with the reference.  One place to
-# change when the schedule becomes a parameter of ef_raster (FAST_TOP=ef_raster,
-# FAST_PARAMS="THE_PARAM=VALUE", the SLB likewise).
-FAST_TOP=ef_raster_fast FAST_PARAMS=""
-A_FAST="$R/ef_raster_fast.v $R/ef_dec.v $A_SETUP $R/ef_etm.v $R/ef_aet.v $R/ef_plot.v $R/ef_slb_fill_skip.v $R/ef_spanq.v $R/ef_cov.v"
-SKIP_TOP=ef_slb_fill_skip SKIP_PARAMS="" A_SKIP="$R/ef_slb_fill_skip.v $R/ef_slb_ram.v"
+# skipping scan) and span queue, the logic it does not share with the reference: ef_raster with
+# SCHEDULE=1 (the reference's files and ef_spanq.v), ef_slb_fill with SKIP=1.
+FAST_TOP=ef_raster FAST_PARAMS="SCHEDULE=1"
+A_FAST="$A_RASTER $R/ef_spanq.v"
+SKIP_TOP=ef_slb_fill SKIP_PARAMS="SKIP=1" A_SKIP="$R/ef_slb_fill.v $R/ef_slb_ram.v"
 # both TAG TOP 'PARAMS' FILES...: the iCE40 steps and the ECP5 step, as EF_SYNTH_TARGETS asks
 both() {
     case " $targets " in *" ice40 "*) synth "$@" ;; esac
