@@ -520,7 +520,7 @@ int ef_cli_gen(int argc, char **argv)
     refused.len = 0;
     if (a.fit && ((st = ef_gen_text_append(&refused, "# edgeflag gen: cases the DUT's limits refuse (")) != EF_OK ||
                   (st = ef_gen_text_append(&refused, limits)) != EF_OK ||
-                  (st = ef_gen_text_append(&refused, "; docs/gen.md section 11)\ncase\tname\treason\n")) != EF_OK)) {
+                  (st = ef_gen_text_append(&refused, "; docs/gen.md section 11)\ncase\tkind\tcategory\tname\tgrid\tseed\treason\n")) != EF_OK)) {
         ef_cli_error("out of memory");
         rc = EF_CLI_EXIT_INTERNAL;
         goto out;
@@ -537,8 +537,12 @@ int ef_cli_gen(int argc, char **argv)
         if (st == EF_OK && a.fit)
             st = ef_gen_fit(&a.lim, &gc, &fr);
         if (st == EF_OK && fr == EF_GEN_FIT_REFUSED) {
-            char row[600];
-            snprintf(row, sizeof row, "%" PRIu32 "\t%s%s\t%s\n", k, gc.name, gc.rules_swapped ? "/swapped" : "",
+            char row[700], seed[24] = "-";
+            /* the index's columns for the case (what it would have been), then the reason */
+            if (!gc.directed)
+                snprintf(seed, sizeof seed, "0x%016" PRIx64, gc.case_seed);
+            snprintf(row, sizeof row, "%" PRIu32 "\t%s\t%s\t%s%s\t%d\t%s\t%s\n", k, gc.directed ? "directed" : "random",
+                     ef_gen_category_name(gc.category), gc.name, gc.rules_swapped ? "/swapped" : "", gc.grid, seed,
                      gc.fit_note);
             /* one line each; on stderr under --list, whose standard output is the index */
             fprintf(a.list ? stderr : stdout, "edgeflag gen: case %" PRIu32 " (%s%s) refused by the DUT's limits: %s\n",
