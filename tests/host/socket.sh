@@ -11,7 +11,9 @@
 #      then --resume: exit 0 and byte-identical results), a reset (6), another protocol
 #      version and another device (6), a board that never answers identify (5);
 #   3. nobody listening (exit 7 naming the address), a malformed --connect (2);
-#   4. bench --transport socket against pyboard and against the engine (numbers printed).
+#   4. bench --transport socket against pyboard and against the engine (numbers printed);
+#   and identify --save from the engine and from a pyboard of small limits, whose saved record
+#   `edgeflag gen --dut-file` fits and refuses by as the same limits given as flags.
 # Recovery is asserted by how it happened (the host's NAK, retransmission and timeout counts,
 # the board's gap, damage, duplicate and resend counters), never by how fast: every run that must
 # not time out gets a generous --timeout (tests/host/waits.sh, EF_TEST_TIMEOUT_SCALE), and only the
@@ -157,9 +159,32 @@ if [ -x "$SB" ]; then
     else
         bad "tests/board/probe.py against the engine" "$(grep -v '^ok - ' probe.txt | head -n 5 | tr '\n' ' ')"
     fi
+    run "identify --save over a socket, from the engine: exit 0" 0 '' -- \
+        "$H" identify --transport socket --connect "unix:$tmp/e.sock" --save eng.bin --timeout "$EF_LINK_MS"
+    if grep -q '^socket: serial EFSOCK0001, protocol 1, samples 8/16/32, canvas up to 16384x16384' out.txt &&
+       [ "$(wc -c <eng.bin)" = 48 ] && [ "$(head -c 10 eng.bin | tail -c 6 | od -An -tx1 | tr -d ' ')" = 010010000f00 ]; then
+        ok "the engine's identify over the socket's control frame: decoded, saved whole (48 bytes)"
+    else
+        bad "identify from the engine" "$(cat out.txt)"
+    fi
     stop_board
 else
     bad "sockboard not built" "$SB"
+fi
+# A board with small limits (pyboard, written from docs/board.md alone: 64x64, 200 edges, and the
+# one sample count of its vectors, 16): identify --save, then gen --dut-file on the saved record
+# fits and refuses exactly as the same limits given as flags do, neither nothing nor everything.
+board --unix b.sock --vectors small/vectors.bin --limits 64,64,200
+run "identify --save from a board of 64x64, 200 edges, 16 samples" 0 '' -- \
+    "$H" identify --transport socket --connect "$SOCK" --save small_board.bin --timeout "$EF_LINK_MS"
+"$E" gen --list --dut-file small_board.bin >gf.tsv 2>gf.err
+"$E" gen --list --dut-limits 64x64 --dut-edges 200 --dut-samples 16 >gl.tsv 2>gl.err
+nfit=$(grep -c 'fitted to the DUT' gf.tsv) nref=$(grep -c "refused by the DUT's limits" gf.err)
+if grep -q 'samples 16, canvas up to 64x64, 200 edges' out.txt && cmp -s gf.tsv gl.tsv && cmp -s gf.err gl.err &&
+   [ "$nfit" -gt 0 ] && [ "$nref" -gt 0 ]; then
+    ok "gen --dut-file on that board's saved identify: $nfit cases fitted and $nref refused, exactly as --dut-limits 64x64 --dut-edges 200 --dut-samples 16"
+else
+    bad "gen --dut-file on pyboard's identify" "fitted $nfit, refused $nref; $(cat out.txt; head -n 2 gf.err)"
 fi
 
 # ------------------------------------------------------------------ 2. faults
