@@ -37,6 +37,7 @@
 #include <time.h>
 
 #include "ef_frame.h"
+#include "emu_check.h"
 #include "gpio_chip.h"
 #include "host_link.h"
 #include "transport.h"
@@ -52,22 +53,6 @@ static const unsigned WIRING[EMU_SIGNALS] = {
 };
 static const char *LINES = "clk=EF_CLK,valid=EF_VALID,take=EF_TAKE,ctl=EF_CTL,d=4-11,q=20:21:22:23:24:25:26:27,"
                            "ready=EF_READY,avail=13,done=EF_DONE,err=15";
-
-static int checks, failed;
-
-static void check(int ok, const char *fmt, ...)
-{
-    va_list ap;
-    checks++;
-    if (ok)
-        return;
-    failed++;
-    fprintf(stderr, "FAIL: ");
-    va_start(ap, fmt);
-    vfprintf(stderr, fmt, ap);
-    va_end(ap);
-    fputc('\n', stderr);
-}
 
 /* Reads what the board sends until a frame of type `want` is whole (or the
  * link fails); returns 1 when it came. */

@@ -33,28 +33,14 @@
 #include "gpio_bus.h"
 #include "ef_frame.h"
 #include "ef_trace.h"
+#include "emu_check.h"
 #include "gpio_chip.h"
 #include "host_link.h"
 #include "transport.h"
 #include "transport_gpio.h"
 
-static int checks, failed;
 static int scale = 1; /* EF_TEST_TIMEOUT_SCALE */
 #define LONG_MS (10000 * scale)
-
-static void check(int ok, const char *fmt, ...)
-{
-    va_list ap;
-    checks++;
-    if (ok)
-        return;
-    failed++;
-    fprintf(stderr, "FAIL: ");
-    va_start(ap, fmt);
-    vfprintf(stderr, fmt, ap);
-    va_end(ap);
-    fputc('\n', stderr);
-}
 
 /* The board's wiring: control lines first, data bytes in the middle, and the
  * --lines map the user would write for it (some by name, some by offset). */
