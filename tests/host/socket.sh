@@ -13,7 +13,8 @@
 #   3. nobody listening (exit 7 naming the address), a malformed --connect (2);
 #   4. bench --transport socket against pyboard and against the engine (numbers printed);
 #   and identify --save from the engine and from a pyboard of small limits, whose saved record
-#   `edgeflag gen --dut-file` fits and refuses by as the same limits given as flags.
+#   `edgeflag gen --dut-file` fits and refuses by as the same limits given as flags; SIGTERM
+#   to the engine spinning in its DUT and SIGINT to it idle: it dies of the signal at once.
 # Recovery is asserted by how it happened (the host's NAK, retransmission and timeout counts,
 # the board's gap, damage, duplicate and resend counters), never by how fast: every run that must
 # not time out gets a generous --timeout (tests/host/waits.sh, EF_TEST_TIMEOUT_SCALE), and only the
@@ -175,6 +176,38 @@ if [ -x "$SB" ]; then
         bad "identify from the engine" "$(cat out.txt)"
     fi
     stop_board
+    # SIGTERM while the engine spins (sockboard --hang-dut: its DUT never returns from the first
+    # command, as a mutant of the engine that loops forever; c-mutants.sh runs those): the board
+    # must die of the signal at once and leave no socket file; SIGINT when idle the same.
+    # died PID: waits up to 5 s for PID to end; its exit status in $drc ("" if it did not end)
+    died() { local i; drc=; for ((i = 0; i < 50; i++)); do kill -0 "$1" 2>/dev/null || { wait "$1"; drc=$?; return 0; }; sleep 0.1; done; return 1; }
+    rm -f h.sock
+    "$SB" --hang-dut "$tmp/h.sock" 2>hang.err &
+    bpid=$!
+    listening h.sock
+    "$H" stream small/vectors.bin --transport socket --connect "unix:$tmp/h.sock" --timeout 300 --results rh >hang.out 2>&1
+    hrc=$?
+    spin=$(ps -o stat= -p "$bpid" | cut -c1)
+    kill -TERM "$bpid"
+    if died "$bpid" && [ "$hrc" = 5 ] && [ "$spin" = R ] && [ "$drc" = 143 ] && [ ! -e h.sock ]; then
+        ok "SIGTERM while the engine spins in its DUT (the host gave up: exit 5): the board died of it (143) at once, its socket file removed"
+    else
+        bad "SIGTERM to a spinning board" "host exit $hrc, board state '$spin', board exit '${drc}' ($(kill -0 "$bpid" 2>/dev/null && echo still running)), socket $(ls h.sock 2>/dev/null || echo gone)"
+        kill -9 "$bpid" 2>/dev/null
+    fi
+    bpid=
+    rm -f h.sock
+    "$SB" "$tmp/h.sock" 2>hang.err &
+    bpid=$!
+    listening h.sock
+    kill -INT "$bpid"
+    if died "$bpid" && [ "$drc" = 130 ] && [ ! -e h.sock ]; then
+        ok "SIGINT to an idle board: died of it (130), its socket file removed"
+    else
+        bad "SIGINT to an idle board" "exit '${drc}', socket $(ls h.sock 2>/dev/null || echo gone)"
+        kill -9 "$bpid" 2>/dev/null
+    fi
+    bpid=
 else
     bad "sockboard not built" "$SB"
 fi
