@@ -36,7 +36,7 @@ static void usage(FILE *f)
           "  --sim S         verilator (default) or icarus\n"
           "  --ns N          the build's samples per pixel (default: the vectors' own)\n"
           "  --top FILE      your DUT's Verilog instead of rtl/ (repeat for every file)\n"
-          "  --fast          rtl/'s ef_raster_fast (the overlap schedule): give it vectors\n"
+          "  --fast          rtl/'s ef_raster SCHEDULE=1 (the overlap schedule): give it vectors\n"
           "                  of `edgeflag vectors --schedule overlap` (or --transactions)\n"
           "  --out DIR       where the dumps go (default CACHE/out/NAME)\n"
           "  --w-max W, --h-max H, --e-max E   the build's limits (default 2048, 2048, 8192)\n"

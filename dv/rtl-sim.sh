@@ -16,8 +16,8 @@
 #               of them defines module ef_raster with ef_raster's ports and
 #               parameters NS, W_MAX, H_MAX, E_MAX; `include files are looked
 #               up beside each file and in rtl/)
-#   --fast      rtl/'s ef_raster_fast (the overlap schedule, docs/microarch.md
-#               section 6) instead of ef_raster: give it vectors written with
+#   --fast      rtl/'s ef_raster with SCHEDULE=1 (the overlap schedule,
+#               docs/microarch.md section 6): give it vectors written with
 #               `edgeflag vectors --schedule overlap` (or --transactions)
 #   --out DIR   where the dumps go (default CACHE/out/NAME, NAME the vectors'
 #               folder name); emptied of *.actual.hex first
@@ -98,8 +98,8 @@ if [ ${#tops[@]} -gt 0 ]; then
     done
     defs=(-DEF_TB_USER_DUT)
 elif [ $fast = 1 ]; then
-    src=("$R"/ef_raster_fast.v "$R"/ef_dec.v "$R"/ef_setup.v "$R"/ef_div.v "$R"/ef_etm.v "$R"/ef_aet.v "$R"/ef_plot.v
-         "$R"/ef_slb_fill_skip.v "$R"/ef_slb_ram.v "$R"/ef_spanq.v "$R"/ef_cov.v)
+    src=("$R"/ef_raster.v "$R"/ef_dec.v "$R"/ef_setup.v "$R"/ef_div.v "$R"/ef_etm.v "$R"/ef_aet.v "$R"/ef_plot.v
+         "$R"/ef_slb_fill.v "$R"/ef_slb_ram.v "$R"/ef_spanq.v "$R"/ef_cov.v)
     defs=(-DEF_FAST)
 else
     src=("$R"/ef_raster.v "$R"/ef_dec.v "$R"/ef_setup.v "$R"/ef_div.v "$R"/ef_etm.v "$R"/ef_aet.v "$R"/ef_plot.v

@@ -15,6 +15,14 @@
 // the shape has passed and AET, SLB+FILL and COV hold nothing (registers
 // only, so cmd_ready can rise in the cycle T_free itself).
 //
+// SCHEDULE selects the cycle rules: 0 (the default) the reference schedule
+// (docs/microarch.md section 4), 1 the overlap schedule (section 6, 6.1;
+// `edgeflag vectors --schedule overlap`): SLB + FILL with the skipping scan
+// (ef_slb_fill SKIP = 1) and a queue of `EF_SPANQ spans (ef_spanq) between
+// FILL and COV.  The observed `span` is FILL's output (the queue's input),
+// and the drain's cov_busy includes "the queue is not empty".  Any other
+// value fails elaboration naming ef_error_SCHEDULE_must_be_0_or_1.
+//
 // Synthesizable Verilog-2005.
 `include "ef_ifaces.vh"
 
@@ -22,7 +30,8 @@ module ef_raster #(
     parameter NS    = 8,
     parameter W_MAX = 16384,
     parameter H_MAX = 16384,
-    parameter E_MAX = 4096
+    parameter E_MAX = 4096,
+    parameter SCHEDULE = 0      // 0 reference, 1 overlap (see above)
 ) (
     input  wire        clk,
     input  wire        rst,
@@ -105,6 +114,11 @@ module ef_raster #(
     output wire [`EF_SPAN_MASK_W-1:0] span_mask
 );
     `include "ef_ns.vh"
+    generate
+        if (SCHEDULE != 0 && SCHEDULE != 1) begin : schedule_check
+            ef_error_SCHEDULE_must_be_0_or_1 u_schedule_must_be_0_or_1 ();
+        end
+    endgenerate
     wire        cfg_rule, cfg_err;
     wire [23:0] cfg_rgb;
     wire [7:0]  cfg_alpha;
@@ -178,7 +192,7 @@ module ef_raster #(
     );
 
     wire slb_idle, slb_idle_unused;
-    ef_slb_fill #(.NS(NS), .W_MAX(W_MAX)) u_slb (
+    ef_slb_fill #(.NS(NS), .W_MAX(W_MAX), .SKIP(SCHEDULE)) u_slb (
         .clk(clk), .rst(rst), .init_done(slb_init),
         .cfg_width(cfg_width), .cfg_rule(cfg_rule),
         .plot_valid(plot_valid), .plot_ready(plot_ready), .plot_last(plot_last),
@@ -188,15 +202,43 @@ module ef_raster #(
         .scan_done(slb_idle)
     );
 
+    // What COV takes: FILL's span itself (reference), or the head of the
+    // span queue (overlap, section 6).
+    wire        cs_valid, cs_ready;
+    wire [`EF_SPAN_Y_W-1:0] cs_y;
+    wire [`EF_SPAN_X_W-1:0] cs_x;
+    wire [`EF_SPAN_LEN_W-1:0] cs_len;
+    wire [`EF_SPAN_MASK_W-1:0] cs_mask;
+    wire cov_core_busy;
+    // COV holds something: a span in its pipeline (or, overlap, in its queue).
     wire cov_busy;
+    generate
+        if (SCHEDULE == 1) begin : spanq
+            wire q_empty;
+            wire [`EF_SPAN_W-1:0] q_data;
+            ef_spanq u_spanq (
+                .clk(clk), .rst(rst),
+                .in_valid(span_valid), .in_ready(span_ready), .in_data({span_y, span_x, span_len, span_mask}),
+                .out_valid(cs_valid), .out_ready(cs_ready), .out_data(q_data), .empty(q_empty)
+            );
+            assign {cs_y, cs_x, cs_len, cs_mask} = q_data;
+            assign cov_busy = cov_core_busy || !q_empty;
+        end else begin : direct
+            assign cs_valid   = span_valid;
+            assign span_ready = cs_ready;
+            assign {cs_y, cs_x, cs_len, cs_mask} = {span_y, span_x, span_len, span_mask};
+            assign cov_busy   = cov_core_busy;
+        end
+    endgenerate
+
     ef_cov #(.NS(NS)) u_cov (
         .clk(clk), .rst(rst), .cfg_rgb(cfg_rgb), .cfg_alpha(cfg_alpha),
-        .span_valid(span_valid), .span_ready(span_ready), .span_y(span_y), .span_x(span_x),
-        .span_len(span_len), .span_mask(span_mask),
+        .span_valid(cs_valid), .span_ready(cs_ready), .span_y(cs_y), .span_x(cs_x),
+        .span_len(cs_len), .span_mask(cs_mask),
         .pix_valid(pix_valid), .pix_ready(pix_ready), .pix_y(pix_y), .pix_x(pix_x),
         .pix_alpha(pix_alpha), .pix_rgba(pix_rgba),
         .fb_re(fb_re), .fb_ry(fb_ry), .fb_rx(fb_rx), .fb_rdata(fb_rdata),
-        .fb_we(fb_we), .fb_wy(fb_wy), .fb_wx(fb_wx), .fb_wdata(fb_wdata), .busy(cov_busy)
+        .fb_we(fb_we), .fb_wy(fb_wy), .fb_wx(fb_wx), .fb_wdata(fb_wdata), .busy(cov_core_busy)
     );
 
     assign init_done = etm_init && slb_init;

@@ -56,12 +56,32 @@
 // that clears cells 0..W_MAX one per cycle (microarch 2); init_done rises when
 // the buffer is clean and plots may be accepted.
 //
+// SKIP = 1: the overlap schedule's scan (docs/microarch.md section 6, 6.1;
+// ef_raster with SCHEDULE = 1).  The scan visits only the cells plotted in
+// the row instead of every cell of xmin .. xmax; everything else above
+// holds.  Plotted cells: a bit per cell, in NG = (W_MAX+1)/64 words of 64
+// bits (flip-flops), and a bit per word that says it is non-zero: a plot
+// sets its cell's bit and its word's bit in its stage 1; a scan step clears
+// its cell's bit (and the word's when the word becomes zero) in its stage 1,
+// and in the same cycle finds the next plotted cell: the least set bit of
+// the rest of the word, else of the least non-zero other word.  Cells are
+// visited in increasing order and cleared as they go, so "the next one" is
+// "the least set bit left".  Plots and scan steps never share a cycle
+// (plot_ready is low while scanning), so the bitmap has one writer at a
+// time; the reset sweep clears it with the cells.  Spans are unchanged: a
+// cell never plotted is empty, so stepping over it changes no mask, and a
+// span closed at a visited cell p is start .. p-1.  The scan's first step
+// is at xmin in the cycle after the row's last plot, as in the reference;
+// the flush step follows the last plotted cell.  SKIP = 0 (the default) is
+// the reference scan above, and none of this logic exists.
+//
 // Synthesizable Verilog-2005.
 `include "ef_ifaces.vh"
 
 module ef_slb_fill #(
     parameter NS    = 8,       // samples per pixel: 8, 16 or 32
-    parameter W_MAX = 16384    // largest canvas width (cells 0..W_MAX)
+    parameter W_MAX = 16384,   // largest canvas width (cells 0..W_MAX)
+    parameter SKIP  = 0        // 1: the skipping scan of the overlap schedule (see above)
 ) (
     input  wire        clk,
     input  wire        rst,
@@ -111,7 +131,10 @@ module ef_slb_fill #(
 
     // Filler: scan cursor and accumulator of the row being scanned.
     reg          scanning;
-    reg [14:0]   ptr;          // next cell to issue (up to xmax + 1)
+    reg [14:0]   ptr;          // next cell to issue (SKIP = 0: up to xmax + 1;
+                               // SKIP = 1: a plotted one)
+    wire         ptr_in;       // ptr is a cell to visit (else the flush is next)
+    wire [14:0]  ptr_step;     // the cell after ptr's step
     reg [14:0]   xend;         // xmax of the row
     reg [14:0]   start;        // first cell of the open span
     reg [13:0]   fy;           // row being scanned
@@ -216,16 +239,17 @@ module ef_slb_fill #(
     assign plot_ready = init_done && !scanning && !flush_stall;
     wire take_plot  = plot_valid && plot_ready;
     wire scan_go    = init_done && scanning && !stall;
-    wire scan_cell  = scan_go && (ptr <= xend);
-    wire scan_flush = scan_go && !(ptr <= xend);
+    wire scan_cell  = scan_go && ptr_in;
+    wire scan_flush = scan_go && !ptr_in;
 
     // The read and write enables do not wait for the stall (issue 25: the
     // stall comes from the cell just read and from COV, and gating the
     // memory's enables with it made the block's critical path): a stalled
     // CELL op rewrites its cell's zero, the same write it makes when it
     // completes, and the read of the next cell is issued again when the
-    // stall ends; stage 2 keeps its cell in hold_d meanwhile.
-    wire scan_rd    = init_done && scanning && (ptr <= xend);
+    // stall ends; stage 2 keeps its cell in hold_d meanwhile.  (ptr and,
+    // with SKIP, the bitmap still move only when the step is taken.)
+    wire scan_rd    = init_done && scanning && ptr_in;
     assign ram_re = take_plot || scan_rd;
     assign ram_ra = take_plot ? plot_q[AW-1:0] : ptr[AW-1:0];
 
@@ -245,6 +269,82 @@ module ef_slb_fill #(
     // step, or the flush span's transfer cycle.  The drain (item 6) counts it.
     assign scan_done = init_done && !scanning && !trk_any
                     && ((s2_op == OP_NONE) || ((s2_op == OP_FLUSH) && !flush_stall));
+
+    // ------------------------------------------------------------ the scan's next cell
+    generate
+        if (SKIP == 0) begin : scan_all
+            // The reference scan: every cell of xmin .. xmax.
+            assign ptr_in   = (ptr <= xend);
+            assign ptr_step = ptr + 15'd1;
+        end else begin : scan_skip
+            // The skipping scan: only the plotted cells (see the head comment).
+            localparam NG = (W_MAX + 1 + 63) / 64;  // words of the plotted-cell bitmap
+            localparam GW = (NG > 1) ? $clog2(NG) : 1;
+            reg [63:0]   bm [0:NG-1];
+            reg [NG-1:0] gnz;          // word g of bm is non-zero
+            reg          ptr_ok;       // ptr holds a plotted cell (else: the flush is next)
+
+            // The next plotted cell after ptr (the scan step at ptr clears ptr's bit).
+            function [5:0] low64;           // index of the least set bit (0 if none)
+                input [63:0] v;
+                integer k;
+                begin
+                    low64 = 6'd0;
+                    for (k = 63; k >= 0; k = k - 1)
+                        if (v[k]) low64 = k[5:0];
+                end
+            endfunction
+            function [GW-1:0] lowg;         // index of the least set bit (0 if none)
+                input [NG-1:0] v;
+                integer k;
+                begin
+                    lowg = {GW{1'b0}};
+                    for (k = NG - 1; k >= 0; k = k - 1)
+                        if (v[k]) lowg = k[GW-1:0];
+                end
+            endfunction
+            wire [GW-1:0] pg     = ptr[6 +: GW];
+            wire [63:0]   pbit   = 64'd1 << ptr[5:0];
+            wire [63:0]   w_rest = bm[pg] & ~pbit;
+            wire [NG-1:0] g_rest = gnz & ~({{(NG-1){1'b0}}, 1'b1} << pg);
+            wire [GW-1:0] g2     = lowg(g_rest);
+            wire          nxt_ok = (|w_rest) || (|g_rest);
+            wire [GW-1:0] nxt_g  = (|w_rest) ? pg : g2;
+            wire [5:0]    nxt_b  = low64((|w_rest) ? w_rest : bm[g2]);
+            wire [14:0]   nxt    = {9'd0, nxt_b} | ({{(15-GW){1'b0}}, nxt_g} << 6);
+            wire [GW-1:0] qg     = plot_q[6 +: GW];
+            /* verilator lint_off UNUSEDSIGNAL */
+            wire [31:0]   sweep32 = {{(32-AW){1'b0}}, sweep_addr};
+            /* verilator lint_on UNUSEDSIGNAL */
+            wire [GW-1:0] sweep_g = sweep32[6 +: GW];
+
+            assign ptr_in   = ptr_ok;
+            assign ptr_step = nxt;
+
+            always @(posedge clk) begin
+                if (rst) begin
+                    gnz    <= {NG{1'b0}};
+                    ptr_ok <= 1'b0;
+                end else begin
+                    if (!init_done)
+                        bm[sweep_g] <= 64'd0;
+                    if (scan_cell) begin
+                        bm[pg]  <= w_rest;
+                        gnz[pg] <= |w_rest;
+                        ptr_ok  <= nxt_ok;
+                    end
+                    // (No scan step at this edge: plots are taken only
+                    // when the scan is over.)
+                    if (take_plot) begin
+                        bm[qg]  <= bm[qg] | (64'd1 << plot_q[5:0]);
+                        gnz[qg] <= 1'b1;
+                        if (plot_last)
+                            ptr_ok <= 1'b1;
+                    end
+                end
+            end
+        end
+    endgenerate
 
     // ------------------------------------------------------------ registers
     always @(posedge clk) begin
@@ -300,7 +400,7 @@ module ef_slb_fill #(
             end
 
             if (scan_cell)
-                ptr <= ptr + 15'd1;
+                ptr <= ptr_step;
             if (scan_flush)
                 scanning <= 1'b0;
 

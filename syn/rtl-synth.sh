@@ -5,7 +5,9 @@
 #   1. every block alone (ef_dec, ef_setup with ef_div, ef_etm, ef_aet with
 #      ef_plot, ef_slb_fill, ef_cov; SETUP's ef_div alone, and SETUP with a
 #      register stage in the divider's place: SETUP does not fit) and the whole
-#      ef_raster at each NS:
+#      ef_raster at each NS (and, named in EF_SYNTH_ONLY only, the fast
+#      configuration of docs/microarch.md section 6: "fast" the whole design,
+#      "slbskip" its SLB + FILL, "spanq" its span queue):
 #      Yosys synth_ice40 (with ABC) for W_MAX 320, H_MAX 240, E_MAX 255;
 #      prints SB_LUT4, flip-flops, SB_RAM40_4K and SB_CARRY; fails on a
 #      latch, on any line of the Yosys log starting "Warning" or on a
@@ -33,7 +35,7 @@
 # blocks run at the first), EF_SYNTH_E (255), EF_SYNTH_W (320), EF_SYNTH_H
 # (240), EF_SYNTH_DEVICE (hx8k), EF_SYNTH_PKG (ct256), EF_SYNTH_LCS (7680,
 # the device's logic cells), EF_SYNTH_BRAMS (32), EF_SYNTH_ONLY (a subset of
-# "dec setup div setupregs etm aet slb cov raster"; div is SETUP's divider
+# "dec setup div setupregs etm aet slb cov raster", or fast, slbskip, spanq; div is SETUP's divider
 # alone, as SETUP instantiates it; setupregs is SETUP with
 # syn/ef_div_regs.v, a register stage, in the divider's place, to
 # place and time SETUP's own logic), EF_SYNTH_OUT (build/synth).
@@ -100,7 +102,7 @@ ecp5() {
     fi
     local c s=""
     for c in LUT4 TRELLIS_FF DP16KD TRELLIS_DPR16X4 CCU2C MULT18X18D; do s="$s, $(count "$out/$tag.stat" $c) $c"; done
-    echo "rtl-synth: $tag ($top $params): synth_ecp5${s#,} ($((SECONDS - t0)) s)"
+    echo "rtl-synth: $tag ($top${params:+ $params}): synth_ecp5${s#,} ($((SECONDS - t0)) s)"
     echo "    yosys -p 'read_verilog -Irtl -defer ${files//$root\//}; chparam$chp $top; hierarchy -top $top; synth_ecp5 -top $top; stat'"
     t0=$SECONDS
     wrap "$tag" "$top" "$params" "$chp" "$files" &&
@@ -180,6 +182,13 @@ YS
 ns0=${nss%% *}
 A_SETUP="$R/ef_setup.v $R/ef_div.v $R/ef_slb_ram.v"
 A_RASTER="$R/ef_raster.v $R/ef_dec.v $A_SETUP $R/ef_etm.v $R/ef_aet.v $R/ef_plot.v $R/ef_slb_fill.v $R/ef_cov.v"
+# The fast configuration (the overlap schedule, docs/microarch.md section 6): the whole design's
+# top, the parameters it takes besides NS/W_MAX/H_MAX/E_MAX, its files; and its SLB + FILL (the
+# skipping scan) and span queue, the logic it does not share with the reference: ef_raster with
+# SCHEDULE=1 (the reference's files and ef_spanq.v), ef_slb_fill with SKIP=1.
+FAST_TOP=ef_raster FAST_PARAMS="SCHEDULE=1"
+A_FAST="$A_RASTER $R/ef_spanq.v"
+SKIP_TOP=ef_slb_fill SKIP_PARAMS="SKIP=1" A_SKIP="$R/ef_slb_fill.v $R/ef_slb_ram.v"
 # both TAG TOP 'PARAMS' FILES...: the iCE40 steps and the ECP5 step, as EF_SYNTH_TARGETS asks
 both() {
     case " $targets " in *" ice40 "*) synth "$@" ;; esac
@@ -200,6 +209,13 @@ for b in $only; do
             # shellcheck disable=SC2086
             both raster_ns${ns}_w${W}_h${H}_e$E ef_raster "NS=$ns W_MAX=$W H_MAX=$H E_MAX=$E" $A_RASTER
         done ;;
+    fast)
+        for ns in $nss; do
+            # shellcheck disable=SC2086
+            both fast_ns${ns}_w${W}_h${H}_e$E $FAST_TOP "NS=$ns W_MAX=$W H_MAX=$H E_MAX=$E${FAST_PARAMS:+ $FAST_PARAMS}" $A_FAST
+        done ;;
+    slbskip) both slbskip_ns${ns0}_w$W $SKIP_TOP "NS=$ns0 W_MAX=$W${SKIP_PARAMS:+ $SKIP_PARAMS}" $A_SKIP ;;
+    spanq) both spanq ef_spanq "" "$R/ef_spanq.v" ;;
     *) echo "rtl-synth: unknown block $b"; rc=1 ;;
     esac
 done

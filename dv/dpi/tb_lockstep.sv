@@ -24,8 +24,9 @@
 // block alone (ef_slb_fill.v): its plots come from the model's expected plot
 // transactions at their stamps, its configuration from the model's cmd
 // transactions, and its spans are checked.  With -DEF_FAST the DUT is
-// ef_raster_fast (the overlap schedule, docs/microarch.md section 6) checked
-// in transaction order against the model's reference schedule: every
+// ef_raster with SCHEDULE = 1 (the overlap schedule, docs/microarch.md
+// section 6) checked in transaction order against the model's reference
+// schedule: every
 // transaction's payload and per-interface order, not its cycle; the bench
 // presents each command as soon as the DUT can take it (not at the model's
 // stamp), and the frame length printed is the DUT's.  Everything that names
@@ -170,12 +171,12 @@ module tb_lockstep #(
     plot_t     plot;
     span_t     span;
 
-`ifdef EF_FAST
-    ef_raster_fast
-`else
     ef_raster
-`endif
+`ifdef EF_FAST
+        #(.NS(NS), .W_MAX(W_MAX), .H_MAX(H_MAX), .E_MAX(E_MAX), .SCHEDULE(1)) dut (
+`else
         #(.NS(NS), .W_MAX(W_MAX), .H_MAX(H_MAX), .E_MAX(E_MAX)) dut (
+`endif
         .clk(clk), .rst(rst), .init_done(init_done),
         .cmd_valid(cmd_valid), .cmd_ready(cmd_ready), .cmd_op(cmd.op),
         .cmd_a(cmd.a), .cmd_b(cmd.b), .cmd_c(cmd.c), .cmd_d(cmd.d),
@@ -459,7 +460,7 @@ module tb_lockstep #(
                              NS, fed, n_checked[IF_CMD], n_checked[IF_SEG], n_checked[IF_ET_WR], n_checked[IF_ET_RD],
                              n_checked[IF_PLOT], n_checked[IF_SPAN], n_checked[IF_PIX],
                              CHECK_CYCLE != 0 || KEEP != 0 ? ef_dpi_frame_cycles(model) : frame_len,
-                             CHECK_CYCLE == 0 && KEEP == 0 ? " (the DUT's, ef_raster_fast: in transaction order; the model's reference frame is longer)"
+                             CHECK_CYCLE == 0 && KEEP == 0 ? " (the DUT's, ef_raster SCHEDULE=1: in transaction order; the model's reference frame is longer)"
                              : WHOLE ? "" : " (the model's: the DUT is SLB + FILL alone)");
                     done = 1'b1;
                     $finish;

@@ -3,7 +3,9 @@
 // `err` and its clamped configuration (docs/microarch.md 3.1, DEC's "Canvas
 // limits"; ETM's E_MAX records per shape), under Icarus and Verilator.
 //
-//   1. after reset err is low;
+//   1. after reset err is low and, before any FRAME, cfg_width x
+//      cfg_height is 1 x 1 (DEC's reset value: no memory addressed out of
+//      range before the first FRAME);
 //   2. a FRAME of width 0, W_MAX + 1, height 0 or H_MAX + 1 raises err, and
 //      cfg_width x cfg_height hold the clamped 1 x 1; err stays high through
 //      a following good FRAME (sticky), whose size is then taken; reset
@@ -172,6 +174,8 @@ module tb_err #(
     endtask
 
     initial begin : main
+        do_reset;
+        check(!err && cfg_width == 15'd1 && cfg_height == 15'd1, "after reset, before any FRAME: err low, 1 x 1");
         bad_frame(24'd0, 24'd5);
         bad_frame(W_MAX + 1, 24'd5);
         bad_frame(24'd5, 24'd0);

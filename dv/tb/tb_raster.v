@@ -32,7 +32,7 @@
 //
 // Defines: EF_TB_USER_DUT for a DUT other than rtl/'s ef_raster with its
 // ports (the bench then reaches into nothing inside it; dv/rtl-sim.sh --top);
-// EF_FAST for rtl/'s ef_raster_fast, the overlap schedule's top
+// EF_FAST for rtl/'s ef_raster with SCHEDULE = 1, the overlap schedule
 // (docs/microarch.md section 6; dv/rtl-sim.sh --fast).
 // Plusargs: +cmd=FILE (required) +out=DIR (required: the dumps go to
 // DIR/IFACE.actual.hex, nothing else is written) +bp=SEED
@@ -89,12 +89,12 @@ module tb_raster #(
     wire [14:0] span_len;
     wire [31:0] span_mask;
 
-`ifdef EF_FAST
-    ef_raster_fast
-`else
     ef_raster
-`endif
+`ifdef EF_FAST
+        #(.NS(NS), .W_MAX(W_MAX), .H_MAX(H_MAX), .E_MAX(E_MAX), .SCHEDULE(1)) dut (
+`else
         #(.NS(NS), .W_MAX(W_MAX), .H_MAX(H_MAX), .E_MAX(E_MAX)) dut (
+`endif
         .clk(clk), .rst(rst), .init_done(init_done),
         .cmd_valid(cmd_valid), .cmd_ready(cmd_ready), .cmd_op(cmd_op),
         .cmd_a(cmd_a), .cmd_b(cmd_b), .cmd_c(cmd_c), .cmd_d(cmd_d),

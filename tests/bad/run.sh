@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # tests/bad/run.sh BUILD_DIR - runs the bad-input catalogue (CATALOGUE.tsv;
 # README.md explains it).  For every entry, `edgeflag render FILE -o OUT ARGS`
-# (or, for an entry whose command column says check, `edgeflag check ARGS`)
+# (or, for an entry whose command column says check, `edgeflag check ARGS`; gen:
+# `edgeflag gen --list --dut-file FILE ARGS`; host: `edgeflag-host stream FILE ...`)
 # must:
 #   - exit with the documented code, never by a signal (no crash), within 60 s;
 #   - print "edgeflag: FILE:LINE:COL: MESSAGE" (or "edgeflag: FILE: MESSAGE"
@@ -115,6 +116,39 @@ host_entry() {
     echo "ok   - $what -> $want"
 }
 
+# gen_entry: one `edgeflag gen --list --dut-file FILE ARGS` entry (command column "gen"): a DUT
+# limits file (docs/gen.md section 11) -- exit 2 with `edgeflag: FILE:LINE:COL: MESSAGE` (or the
+# identify record's byte offset in MESSAGE, where "-") and nothing on standard output; or, for
+# class ok, exit 0 with the index on standard output and no error message.
+gen_entry() {
+    # shellcheck disable=SC2086
+    timeout 60 "$EF" gen --list --dut-file "$file" $args >stdout 2>err
+    rc=$?
+    what="gen --dut-file $file${args:+ $args}"
+    msg=$(grep -m1 '^edgeflag: ' err)
+    if [ $rc -ge 124 ]; then
+        bad "$what" "exit $rc: killed by a signal or timed out (want $want)"; return
+    fi
+    if [ "$rc" != "$want" ]; then
+        bad "$what" "exit $rc, want $want"; return
+    fi
+    if [ "$want" = 0 ]; then
+        if ! grep -q '^case	file	kind' stdout || [ -n "$msg" ]; then bad "$what" "exit 0 but no index, or an error message"; return; fi
+    else
+        if [ -s stdout ]; then bad "$what" "exit $rc but an index on standard output"; return; fi
+        if [ "$where" = - ]; then prefix="edgeflag: $file: "; else prefix="edgeflag: $file:$where: "; fi
+        case $msg in
+        "$prefix"*) text=${msg#"$prefix"} ;;
+        *) bad "$what" "message does not start with '$prefix'"; return ;;
+        esac
+        if ! printf '%s\n' "$text" | grep -Eq -- "$regex"; then
+            bad "$what" "message '$text' does not match /$regex/"; return
+        fi
+    fi
+    pass=$((pass + 1))
+    echo "ok   - $what -> $want"
+}
+
 n=0
 while IFS=$'\t' read -r file want class regex where args command; do
     case $file in ''|'#'*|file) continue ;; esac
@@ -125,6 +159,10 @@ while IFS=$'\t' read -r file want class regex where args command; do
     fi
     if [ "${command:-render}" = host ]; then
         host_entry
+        continue
+    fi
+    if [ "${command:-render}" = gen ]; then
+        gen_entry
         continue
     fi
     out=out$n.$ext

@@ -44,8 +44,9 @@ R=${EF_DPI_RTL:-$root/rtl}     # EF_DPI_RTL: another RTL folder (the same file n
 # rtl_slb DIR, rtl_raster DIR: the DUT's files in an RTL folder
 rtl_slb() { echo "$1/ef_slb_fill.v $1/ef_slb_ram.v"; }
 rtl_raster() { echo "$1/ef_raster.v $1/ef_dec.v $1/ef_setup.v $1/ef_div.v $1/ef_etm.v $1/ef_aet.v $1/ef_plot.v $(rtl_slb "$1") $1/ef_cov.v"; }
-# the fast top (docs/microarch.md section 6), checked in transaction order
-rtl_fast() { echo "$1/ef_raster_fast.v $1/ef_dec.v $1/ef_setup.v $1/ef_div.v $1/ef_etm.v $1/ef_aet.v $1/ef_plot.v $1/ef_slb_fill_skip.v $1/ef_slb_ram.v $1/ef_spanq.v $1/ef_cov.v"; }
+# the fast configuration (ef_raster SCHEDULE=1, docs/microarch.md section 6): the
+# same files and the span queue, checked in transaction order
+rtl_fast() { echo "$(rtl_raster "$1") $1/ef_spanq.v"; }
 for f in "$EF" "$build/tests/test_model_stream"; do
     [ -e "$f" ] || { echo "test-dpi: $f not built (make test-dpi builds it)"; exit 1; }
 done
@@ -153,12 +154,11 @@ bash "$root/dv/rtl-variant.sh" "$work/rtl_span" span || bad "dv/rtl-variant.sh s
 vl_build short $DUT 8 160 120 "$work/rtl_span" &
 [ $DUT = raster ] && vl_build slb8 slb 8 160 120 &
 wait
-# the fast top in transaction order, and with its copy of the span fault
+# the fast configuration in transaction order, and with the span fault
 FAST=0
-if [ -e "$R/ef_raster_fast.v" ]; then
+if [ -e "$R/ef_spanq.v" ]; then
     FAST=1
-    bash "$root/dv/rtl-variant.sh" "$work/rtl_span_skip" span_skip || bad "dv/rtl-variant.sh span_skip"
-    vl_build fast8 fast 8 160 120 & vl_build fastshort fast 8 160 120 "$work/rtl_span_skip" &
+    vl_build fast8 fast 8 160 120 & vl_build fastshort fast 8 160 120 "$work/rtl_span" &
     wait
 fi
 
@@ -181,10 +181,10 @@ pass_run() {
         printf '%s\n' "$line" | grep -Eq "[:,] $n ${i}[,;]" || miss="$miss $i($n)"
     done
     # one frame length (docs/microarch.md 4, item 7): the bench's, the manifest's and edgeflag vectors'
-    # own line (not for the fast top, whose frame is its own, shorter: the line says so)
+    # own line (not for the fast configuration, whose frame is its own, shorter: the line says so)
     local mc
     mc=$(sed -n 's/.*"cycles": \([0-9]*\).*/\1/p' "$dir/manifest.json")
-    case $line in *"(the DUT's, ef_raster_fast"*) mc=fast ;; esac
+    case $line in *"(the DUT's, ef_raster SCHEDULE=1"*) mc=fast ;; esac
     [ "$mc" = fast ] || { [ -n "$mc" ] && printf '%s\n' "$line" | grep -q "; a frame of $mc cycles" && grep -q ", $mc cycles; " "$dir.log"; } ||
         miss="$miss frame($mc: the manifest's; the vectors line: $(grep -o ', [0-9]* cycles; ' "$dir.log"))"
     if [ "$(cat "$work/$name.rc")" = 0 ] && [ "${line#tb_lockstep: PASS}" != "$line" ] && [ -z "$miss" ]; then
@@ -304,9 +304,9 @@ if vl short; then
     fi
 fi
 
-# The fast top (ef_raster_fast) against the model in transaction order
-# (docs/dpi.md): every transaction of the files checked, and its copy of the
-# span fault stopping at the first span of 2+ pixels, len one short.
+# The fast configuration (ef_raster SCHEDULE=1) against the model in
+# transaction order (docs/dpi.md): every transaction of the files checked,
+# and the span fault stopping at the first span of 2+ pixels, len one short.
 if [ $FAST = 1 ] && vl fast8; then
     run fast8 fast_tiger8 "$work/t8";  pass_run fast_tiger8 "$work/t8"
     run fast8 fast_gen8 "$work/g8";    pass_run fast_gen8 "$work/g8"
@@ -320,9 +320,9 @@ if [ $FAST = 1 ] && vl fastshort; then
     if [ "$(cat "$work/fastshort.rc")" != 0 ] &&
        printf '%s\n' "$line" | grep -Eq "^tb_lockstep: FAIL at time [0-9]+ ns, cycle [0-9]+: span: cycle [0-9]+, y [0-9]+, x [0-9]+: fields differ: " &&
        [ -n "$el" ] && [ -n "$al" ] && [ "$el" = $((al + 1)) ] && [ "$stars" = 1 ]; then
-        ok "fast top, RTL fault span_skip (transaction order) caught: ${line#tb_lockstep: FAIL }"
+        ok "fast configuration, RTL fault span (transaction order) caught: ${line#tb_lockstep: FAIL }"
     else
-        cat "$work/fastshort.sim"; bad "fault span_skip in the fast top: want a span reported with len one short, exit != 0"
+        cat "$work/fastshort.sim"; bad "fault span in the fast configuration: want a span reported with len one short, exit != 0"
     fi
 fi
 echo "test-dpi: $(( $(date +%s) - t0 )) s"

@@ -4,7 +4,9 @@
 # tools/requirements/fusesoc.txt, installed into build/venv) finds the core in
 # the tree, its lint target (Verilator -Wall on ef_raster) passes, and its
 # sim_icarus target runs the whole-pipeline bench on an `edgeflag vectors` set
-# (a shared SVG at 16x12, 8 samples) whose dumps pass `edgeflag check --cycles`.
+# (a shared SVG at 16x12, 8 samples) whose dumps pass `edgeflag check --cycles`;
+# and the same two with the overlap schedule (lint --SCHEDULE=1, sim_icarus
+# --EF_FAST on `edgeflag vectors --schedule overlap`, docs/microarch.md section 6).
 # usage: bash tests/fusesoc/run.sh BUILD_DIR.  Ends with "N passed, M failed".
 set -u
 export LC_ALL=C
@@ -31,6 +33,10 @@ if "$FS" --cores-root "$root" run --build-root "$work/lint" --target lint "$core
    ! grep -q '%Warning\|%Error' "$work/lint.log"; then
     ok "fusesoc run --target lint $core: Verilator -Wall on ef_raster silent"
 else tail -15 "$work/lint.log"; ko "fusesoc run --target lint $core"; fi
+if "$FS" --cores-root "$root" run --build-root "$work/lintf" --target lint "$core" --SCHEDULE=1 >"$work/lintf.log" 2>&1 &&
+   ! grep -q '%Warning\|%Error' "$work/lintf.log"; then
+    ok "fusesoc run --target lint $core --SCHEDULE=1: Verilator -Wall on ef_raster (the overlap schedule) silent"
+else tail -15 "$work/lintf.log"; ko "fusesoc run --target lint $core --SCHEDULE=1"; fi
 
 "$EF" vectors "$root/tests/data/svg/stress_pixi_bowtie.svg" -o "$work/vec" --samples 8 --size 16x12 --formats hex >/dev/null 2>&1 ||
     ko "edgeflag vectors"
@@ -41,6 +47,17 @@ if "$FS" --cores-root "$root" run --build-root "$work/sim" --target sim_icarus "
    "$EF" check "$work/vec" "$work/act" --cycles >"$work/check.log" 2>&1; then
     ok "fusesoc run --target sim_icarus $core: the bench's dumps pass edgeflag check --cycles ($(tail -n 1 "$work/check.log" | sed 's/^edgeflag check: //'))"
 else tail -15 "$work/sim.log"; tail -3 "$work/check.log" 2>/dev/null; ko "fusesoc run --target sim_icarus $core"; fi
+
+svg=$root/tests/data/svg/stress_pixi_bowtie.svg
+"$EF" vectors "$svg" -o "$work/vecf" --samples 8 --size 16x12 --formats hex --schedule overlap >/dev/null 2>&1 ||
+    ko "edgeflag vectors --schedule overlap"
+mkdir -p "$work/actf"
+if "$FS" --cores-root "$root" run --build-root "$work/simf" --target sim_icarus "$core" --EF_FAST \
+        --cmd="$work/vecf/cmd.stim.hex" --out="$work/actf/" >"$work/simf.log" 2>&1 &&
+   grep -q '^tb_raster: DONE' "$work/simf.log" &&
+   "$EF" check "$work/vecf" "$work/actf" --cycles >"$work/checkf.log" 2>&1; then
+    ok "fusesoc run --target sim_icarus $core --EF_FAST: the overlap schedule's dumps pass edgeflag check --cycles ($(tail -n 1 "$work/checkf.log" | sed 's/^edgeflag check: //'))"
+else tail -15 "$work/simf.log"; tail -3 "$work/checkf.log" 2>/dev/null; ko "fusesoc run --target sim_icarus $core --EF_FAST"; fi
 
 echo "$pass passed, $fail failed"
 [ $fail = 0 ]

@@ -314,9 +314,12 @@ for f in $(rows dl2/index.tsv | awk -F'\t' '$8 ~ /split into/ && $8 !~ /scaled/ 
 done
 nref=$(rows dl2/refused.tsv | wc -l); nlines=$(grep -c 'refused by the DUT.s limits: ' out)
 ref_ok=1
-while IFS=$'\t' read -r k _ why; do
+# refused.tsv: case kind category name grid seed reason; the first six as the unfitted index says
+while IFS=$'\t' read -r k kind cat name grid seed why; do
     f=$(printf 'case_%06d.scene' "$k")
     [ ! -e "dl2/$f" ] && [ "$(maxedges "l1/$f")" -gt 40 ] && [ -n "$why" ] || ref_ok=0
+    [ "$(rows l1/index.tsv | awk -F'\t' -v k="$k" '$1 == k { print $3, $4, $5, $6, $7 }')" = "$kind $cat $name $grid $seed" ] ||
+        { ref_ok=0; echo "       refused.tsv's row of case $k: $kind $cat $name $grid $seed, not the index's"; }
 done < <(rows dl2/refused.tsv)
 nw=$(find dl2 -name 'case_*.scene' | wc -l)
 if [ $rc -eq 0 ] && [ $lim_ok = 1 ] && [ $split_ok = 1 ] && [ $nsplit -gt 0 ] && [ $ref_ok = 1 ] && [ "$nref" -gt 0 ] &&

@@ -24,6 +24,8 @@ Faults (each flag may repeat; N counts from 1):
   --protocol V        identify answers protocol version V
   --not-ours          identify answers without the magic
   --mute              accepts connections and never answers anything (not even identify)
+--limits W,H,E makes identify state W_MAX, H_MAX and E_MAX (default 16384,16384,4194304): the board
+a `edgeflag-host identify --save` test reads (the replay DUT does not check them).
 --stats FILE gets one line of counters (JSON) after every connection and every DONE/ERROR.
 """
 import argparse
@@ -194,7 +196,7 @@ class Board:
         magic = b"USB\0" if self.a.not_ours else MAGIC
         serial = self.a.serial.encode("ascii")[:16].ljust(16, b"\0")
         return magic + struct.pack("<HHIIIIII", self.a.protocol, self.window, 7, self.iface_mask,
-                                   self.samples_mask, 16384, 16384, 1 << 22) + serial
+                                   self.samples_mask, *self.a.limits) + serial
 
     def status(self):
         return MAGIC + struct.pack("<HBBIIIIQQ", 1, self.state, 0, self.E, self.res_made, self.res_acked,
@@ -431,6 +433,8 @@ def main():
     ap.add_argument("--not-ours", action="store_true")
     ap.add_argument("--mute", action="store_true")
     ap.add_argument("--stats")
+    ap.add_argument("--limits", type=lambda v: [int(x) for x in v.split(",")], default=[16384, 16384, 1 << 22],
+                    metavar="W,H,E", help="the W_MAX, H_MAX, E_MAX identify states (the replay DUT does not check them)")
     for name in ("drop", "corrupt", "drop-reply", "corrupt-reply", "disconnect", "disconnect-reply", "stall",
                  "reset"):
         ap.add_argument("--" + name, type=int, action="append", default=[], metavar="N")

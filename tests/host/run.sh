@@ -11,7 +11,9 @@
 #   3. wrong use: --resume with nothing to resume or another file's state, auto with no
 #      board, bad vector files (missing, truncated, bad CRC, other format version, hex,
 #      no cmd), a results folder that cannot be made, a mismatching board result;
-#   4. bench over the null and sim transports, list, --version.
+#   4. bench over the null and sim transports, list, --version;
+#   5. identify and identify --save (the record `edgeflag gen --dut-file` reads): decoded, saved
+#      whole and atomically, refused from another device or protocol (nothing saved), exit 4.
 # usage: bash tests/host/run.sh BUILD_DIR   (`make test-host`)
 # Ends with "N passed, M failed"; exit status 0 only if nothing failed.
 set -u
@@ -208,6 +210,48 @@ grep -Eq 'no board found|^usb ' out.txt && ok "list says what it found" || bad "
 run "--version names every transport" 0 '' -- "$H" --version
 grep -q '^  usb ' out.txt && grep -q '^  gpio ' out.txt && grep -q '^  sim ' out.txt && ok "--version lists transports" ||
     bad "--version" "$(cat out.txt)"
+
+# ------------------------------------------------------ 5. identify, and --save for gen --dut-file
+# le32 FILE OFFSET: a little-endian 32-bit field of a file, read by od (not the host's code)
+le32() { od -An -tu4 -j "$2" -N4 --endian=little "$1" | tr -d ' '; }
+run "identify over sim --save: exit 0" 0 'wrote id.bin .*edgeflag gen --dut-file id.bin' -- \
+    "$H" identify "${SIM[@]}" --save id.bin
+if grep -q '^sim: serial EFSIM0001, protocol 1, samples 8/16/32, canvas up to 16384x16384, 4194304 edges' out.txt &&
+   [ "$(wc -c <id.bin)" = 48 ] && [ "$(head -c 4 id.bin)" = EFB1 ] &&
+   [ "$(le32 id.bin 16)/$(le32 id.bin 20)/$(le32 id.bin 24)/$(le32 id.bin 28)" = 56/16384/16384/4194304 ]; then
+    ok "identify prints the record decoded; id.bin is its 48 bytes (od: samples 0x38, 16384x16384, 4194304 edges)"
+else
+    bad "identify --save" "$(cat out.txt) / $(od -An -tx1 id.bin | head -n 3 | tr '\n' ' ')"
+fi
+"$E" gen --list >gen_plain.tsv 2>&1
+"$E" gen --list --dut-file id.bin >gen_sim.tsv 2>gen_sim.err
+if [ -s gen_sim.tsv ] && [ ! -s gen_sim.err ] && ! grep -q 'fitted to the DUT' gen_sim.tsv && cmp -s gen_plain.tsv gen_sim.tsv; then
+    ok "edgeflag gen --dut-file on the simulated board's saved identify: its limits read, every case fits as it is"
+else
+    bad "gen --dut-file id.bin" "$(head -n 2 gen_sim.err)"
+fi
+run "identify --json" 0 '' -- "$H" identify "${SIM[@]}" --json --save id2.bin --quiet
+python3 - out.txt <<'PY' && cmp -s id.bin id2.bin && ok "identify --json: the fields as JSON, the file named; the same record saved again" || bad "identify --json" "$(cat out.txt)"
+import json, sys
+j = json.load(open(sys.argv[1]))
+assert j["transport"] == "sim" and j["serial"] == "EFSIM0001" and j["samples"] == [8, 16, 32], j
+assert (j["width_max"], j["height_max"], j["edges_max"], j["saved"]) == (16384, 16384, 4194304, "id2.bin"), j
+PY
+printf 'an older file\n' >kept.bin
+run "identify from another device (no magic): exit 6, nothing saved" 6 'did not answer identify as an edgeflag board.*nothing saved' -- \
+    "$H" identify "${SIM[@]}" --sim-faults not-ours=1 --save kept.bin
+run "identify from another protocol version: exit 6, nothing saved" 6 'protocol version 2.*nothing saved' -- \
+    "$H" identify "${SIM[@]}" --sim-faults protocol=2 --save kept.bin
+[ "$(cat kept.bin)" = "an older file" ] && ok "a refused identify leaves an existing --save file as it was" ||
+    bad "identify refused: the existing file was changed"
+: >notdir
+run "identify --save into a path that cannot be written: exit 4" 4 "cannot write 'notdir/id.bin'" -- \
+    "$H" identify "${SIM[@]}" --save notdir/id.bin
+run "identify --save replaces an existing file" 0 '' -- "$H" identify "${SIM[@]}" --save kept.bin --quiet
+cmp -s kept.bin id.bin && [ -z "$(find . -maxdepth 1 -name '.kept.bin.*')" ] && ok "replaced whole, no temporary left" ||
+    bad "identify --save over an existing file"
+run "--save with another command: usage error" 2 "save is identify's" -- "$H" stream small/vectors.bin "${SIM[@]}" --save x.bin
+run "identify takes no file: usage error" 2 'identify takes no file' -- "$H" identify small/vectors.bin "${SIM[@]}"
 
 echo "$pass passed, $fail failed"
 [ $fail = 0 ]

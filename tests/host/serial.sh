@@ -151,6 +151,30 @@ else
     bad "digest and full reports differ" "$(cat full-report.txt digest-report.txt)"
 fi
 same "digest mode's rebuilt results identical to full records'" bd/vectors.actual.bin bf/vectors.actual.bin
+# more differing windows than --digest-fetch's default (docs/board.md 4.5: 16 of each interface): 20 pix
+# windows of 7 transactions differ (each window's first transaction changed): the first 16 are fetched,
+# the report says so, and the run fails (exit 1)
+"$PY" - tiger/vectors.bin many.bin 6 7 20 <<'PYEOF'
+import sys, zlib, struct
+src, dst, iface, win, n = sys.argv[1], sys.argv[2], int(sys.argv[3]), int(sys.argv[4]), int(sys.argv[5])
+b = bytearray(open(src, 'rb').read())
+o, k = 104, 0
+while o < len(b) and k < win * n:
+    if b[o] == iface:
+        if k % win == 0:
+            b[o + 10] ^= 0x01
+        k += 1
+    o += 10 + b[o + 1]
+if k < win * n:
+    sys.exit('too few records')
+struct.pack_into('<I', b, 96, zlib.crc32(bytes(b[104:])))
+struct.pack_into('<I', b, 100, zlib.crc32(bytes(b[:100])))
+open(dst, 'wb').write(b)
+PYEOF
+mkdir -p many && mv many.bin many/vectors.bin
+run "20 pix windows differ, digest mode: exit 1, the default 16 fetched" 1 \
+    'digest: pix: 20 of [0-9]+ windows differ, the first at window 0 .*fetching 16 of them whole' -- \
+    "$H" verify many/vectors.bin "${LINK[@]}" --digest 7 --results dm --errors 5
 run "verify at --baud 115200 (the standard code) : PASS" 0 'check: PASS' -- \
     "$H" verify small/vectors.bin "${LINK[@]}" --baud 115200 --results rb1
 run "verify at --baud 1234567 (termios2 BOTHER): PASS" 0 'check: PASS' -- \

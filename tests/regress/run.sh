@@ -7,7 +7,9 @@
 #      past --timeout fail, with the case's seed and first mismatch line in the summary;
 #   4. shards of another seed (or level) are refused by the merge;
 #   5. the DUT's limits: runs over --dut-limits/--dut-edges are refused by name before any
-#      simulation, and a DUT's own REFUSED is quoted; both counted apart from failures.
+#      simulation, and a DUT's own REFUSED is quoted; both counted apart from failures; with
+#      --fit, gen's refusals reach the merged report with each case's real configuration
+#      (sample count, rule, its own seed) and gen's reason, counted by who refused.
 # usage: bash tests/regress/run.sh BUILD_DIR   (`make test-regress`)
 # Ends with "N passed, M failed"; exit status 0 only if nothing failed.
 set -u
@@ -122,6 +124,7 @@ nsamp=$(refs "^refused before simulation: 32 samples per pixel, the DUT takes 8,
 if [ $lprc = 0 ] && [ $lmrc = 0 ] && [ "$ncanvas" -gt 0 ] && [ "$nedges" -gt 0 ] && [ "$nsamp" -gt 0 ] &&
     [ "$nref" = $((ncanvas + nedges + nsamp)) ] &&
     grep -q "^runs: $ncases in 4 of 4 shards; failed: 0; refused (do not fit the DUT, not failures): $nref;" L/merged/summary.txt &&
+    grep -q "^refused by: edgeflag gen (fitting the cases to the DUT) 0; the DUT's limits before simulation $nref; the DUT itself 0$" L/merged/summary.txt &&
     grep -q '^REFUSED runs' L/merged/summary.txt && grep -q '^RESULT: PASS' L/merged/summary.txt &&
     xmllint --noout L/merged/junit.xml && [ "$(grep -c '<skipped message="refused before simulation' L/merged/junit.xml)" = "$nref" ]; then
     ok "the DUT's limits (64x64, 200 edges, 8 and 16 samples): $nref of $ncases runs refused by name before simulation ($ncanvas canvas, $nedges edges, $nsamp sample count), counted apart, JUnit skipped, merge PASS"
@@ -133,19 +136,38 @@ fi
 # vectors or the DUT.  Shard 2/26 holds zigzag-4096 (case 53: one contour of 4096 edges, over 200).
 "$EDGEFLAG" gen -o Fgen --shard 2/26 >/dev/null 2>&1
 nbig=$(cd Fgen && awk '/^scene/ && ($2 > 64 || $3 > 64) { n++ } END { print n + 0 }' case_*.scene)
-"$SHARD" --out F --shard 2/26 --fit --dut-limits 64x64 --dut-edges 200 --dut-samples 8,16 >f.log 2>&1
+"$SHARD" --out FIT --shard 2/26 --fit --dut-limits 64x64 --dut-edges 200 --dut-samples 8,16 --rules scene,evenodd >f.log 2>&1
 frc=$?
-F=F/shard_2_of_26/cases.tsv
+F=FIT/shard_2_of_26/cases.tsv
 fgen=$(awk -F'\t' '$5 == "refused" && $7 ~ /^refused before simulation: edgeflag gen: / { n++ } END { print n + 0 }' "$F")
 fother=$(awk -F'\t' '$5 == "refused" && $7 !~ /^refused before simulation: edgeflag gen: / { n++ } END { print n + 0 }' "$F")
 fpass=$(awk -F'\t' '$5 == "pass" { n++ } END { print n + 0 }' "$F")
-fs=$(awk -F'\t' 'NR > 1 && $2 != "-" && $2 != 8 && $2 != 16 { n++ } END { print n + 0 }' "$F")
+fs=$(awk -F'\t' 'NR > 1 && $2 != 8 && $2 != 16 { n++ } END { print n + 0 }' "$F")
 if [ $frc = 0 ] && [ "$nbig" -gt 0 ] && [ "$fother" = 0 ] && [ "$fs" = 0 ] && [ "$fpass" -gt 0 ] &&
-   grep -q "^53	-	-	.*	refused	.*edgeflag gen: shape 0 has 4096 edges, over the DUT's 200, and its contour 0 alone has 4096" "$F" &&
-   [ "$(grep -c '<skipped message="refused before simulation: edgeflag gen: ' F/shard_2_of_26/junit.xml)" = "$fgen" ]; then
-    ok "--fit (64x64, 200 edges, 8 and 16 samples): gen fits the shard's $nbig canvases over 64x64 ($fpass runs pass), refuses $fgen case(s) by name (zigzag-4096: a contour of 4096 edges), nothing refused later, every run at 8 or 16 samples"
+   grep -q "^53	16	scene	20070101	refused	.*edgeflag gen: shape 0 has 4096 edges, over the DUT's 200, and its contour 0 alone has 4096" "$F" &&
+   [ "$(grep -c '<skipped message="refused before simulation: edgeflag gen: ' FIT/shard_2_of_26/junit.xml)" = "$fgen" ]; then
+    ok "--fit (64x64, 200 edges, 8 and 16 samples, 2 rules): gen fits the shard's $nbig canvases over 64x64 ($fpass runs pass), refuses $((fgen / 2)) case(s) ($fgen runs) by name (zigzag-4096: a contour of 4096 edges), nothing refused later, every run at 8 or 16 samples"
 else
     bad "--fit" "exit $frc, big $nbig, pass $fpass, gen-refused $fgen, other refusals $fother, other sample counts $fs; $(tail -n 3 "$F")"
+fi
+# The merged report of the --fit shard (two rules, so two runs a case): gen's refusals counted
+# apart from failures and by who refused, each with the configuration the case would have run in
+# (sample count and rule) and its own seed (a random case's, from the unfitted index), gen's
+# reason quoted; the runs add up to the shard's cases times its rules, as without limits.
+"$MERGE" FIT >f2merge.out 2>&1
+F2=FIT/merged/summary.txt
+ncase2=$("$EDGEFLAG" gen --list --shard 2/26 | grep -c '^[0-9]')
+seed105=$("$EDGEFLAG" gen --list --shard 2/26 | awk -F'\t' '$1 == 105 { print $7 }')
+fg2=$(grep -c '^  case [0-9]* ([0-9]* samples, rule [a-z]*, seed [0-9a-fx]*) in shard 2: refused before simulation: edgeflag gen: ' "$F2")
+if grep -q "^runs: $((2 * ncase2)) in 1 of 26 shards; failed: 0; refused (do not fit the DUT, not failures): $fgen;" "$F2" &&
+   grep -q "^refused by: edgeflag gen (fitting the cases to the DUT) $fgen; the DUT's limits before simulation 0; the DUT itself 0$" "$F2" &&
+   grep -q "^    2  complete *$((2 * ncase2)) *0 *$fgen " "$F2" && [ "$fg2" = "$fgen" ] &&
+   grep -q "^  case 53 (16 samples, rule evenodd, seed 20070101) in shard 2: refused before simulation: edgeflag gen: shape 0 has 4096 edges, over the DUT's 200" "$F2" &&
+   [ -n "$seed105" ] && grep -q "^  case 105 (16 samples, rule scene, seed $seed105) in shard 2: refused before simulation: edgeflag gen: shape 2 has" "$F2" &&
+   ! grep -q -- '(- samples' "$F2"; then
+    ok "merged report of a --fit shard: $fgen runs refused by edgeflag gen counted apart (by who refused, per shard), each with its sample count, rule and own seed (case 105: $seed105) and gen's reason; $((2 * ncase2)) runs = the shard's $ncase2 cases x 2 rules"
+else
+    bad "merged report of a --fit shard" "cases $ncase2, gen-refused $fgen, seed105 '$seed105'; $(grep -E '^(runs|refused by|    2 )|case (53|105) ' "$F2" | head -n 6)"
 fi
 # A DUT that refuses a case itself (exit non-zero with its REFUSED line): refused, its own words quoted.
 "$SHARD" --out D --shard 9/130 --run 'echo "tb_raster: REFUSED cmd.stim.hex:5: FRAME canvas over the hardware W_MAX x H_MAX"; exit 1' >d.log 2>&1
@@ -153,8 +175,11 @@ drc=$?
 nd=$(awk -F'\t' '$5 == "refused" && index($7, "the DUT refused it: tb_raster: REFUSED cmd.stim.hex:5: FRAME canvas over") == 1 { n++ }
               END { print n + 0 }' D/shard_9_of_130/cases.tsv)
 nr=$(grep -c '^[0-9]' D/shard_9_of_130/cases.tsv)
-if [ $drc = 0 ] && [ "$nd" = "$nr" ] && [ "$nr" -gt 0 ] && grep -q "^refused	$nr$" D/shard_9_of_130/shard.meta; then
-    ok "a DUT that refuses a case itself: refused ($nd runs), quoting its REFUSED line, not a failure (exit 0)"
+"$MERGE" D >/dev/null 2>&1
+if [ $drc = 0 ] && [ "$nd" = "$nr" ] && [ "$nr" -gt 0 ] && grep -q "^refused	$nr$" D/shard_9_of_130/shard.meta &&
+   grep -q "^refused by: edgeflag gen (fitting the cases to the DUT) 0; the DUT's limits before simulation 0; the DUT itself $nr$" D/merged/summary.txt &&
+   grep -q "^  case [0-9]* ([0-9]* samples, rule scene, seed [0-9a-fx]*) in shard 9: the DUT refused it: tb_raster: REFUSED cmd.stim.hex:5: " D/merged/summary.txt; then
+    ok "a DUT that refuses a case itself: refused ($nd runs), quoting its REFUSED line, not a failure (exit 0); the merge counts it as the DUT's"
 else
     bad "a refusing DUT" "exit $drc, $nd of $nr refused: $(tail -n 2 D/shard_9_of_130/cases.tsv)"
 fi

@@ -11,13 +11,17 @@
 #      with awk) at every N and s;
 #   3. a bad NS fails elaboration: ef_raster with NS = 12 and 64 is an error
 #      naming ef_error_NS_must_be_8_16_or_32 under Verilator and Icarus, and
-#      NS 8/16/32 elaborate;
+#      NS 8/16/32 elaborate; a bad SCHEDULE (2) names
+#      ef_error_SCHEDULE_must_be_0_or_1 in both;
 #   4. RTL variants: every recipe of dv/faults/ applies (dv/rtl-variant.sh)
-#      and its copy compiles under Icarus; a recipe that no longer matches is
+#      and its copy compiles under Icarus in both configurations (SCHEDULE
+#      0 and 1); a recipe that no longer matches is
 #      refused (exit 1, naming its line);
 #   5. `verilator --lint-only -Wall` (with dv/lint/waivers.vlt) of every RTL
 #      and bench file: ef_raster at NS 8/16/32 with the default and small
-#      limits, every block as its own top, every bench, the DPI bench with
+#      limits, and with SCHEDULE=1 (the overlap schedule, docs/microarch.md
+#      section 6) also the tiny ones (and iverilog -g2005 -Wall), every
+#      block as its own top (ef_slb_fill with SKIP 0 and 1), every bench, the DPI bench with
 #      either DUT, the board's DUT wrapper, the generated package through its
 #      lint wrapper (and Icarus -g2012 of the package + wrapper): no output
 #      at all; and every *.v, *.vh, *.sv under rtl/ and dv/ is in some lint.
@@ -44,8 +48,9 @@ bad() { fail=$((fail + 1)); echo "FAIL $1"; [ -n "${2:-}" ] && printf '%s\n' "$2
 
 R=rtl
 RTL="$R/ef_raster.v $R/ef_dec.v $R/ef_setup.v $R/ef_div.v $R/ef_etm.v $R/ef_aet.v $R/ef_plot.v $R/ef_slb_fill.v $R/ef_slb_ram.v $R/ef_cov.v"
-# the overlap schedule's top (docs/microarch.md section 6)
-FAST="$R/ef_raster_fast.v $R/ef_dec.v $R/ef_setup.v $R/ef_div.v $R/ef_etm.v $R/ef_aet.v $R/ef_plot.v $R/ef_slb_fill_skip.v $R/ef_slb_ram.v $R/ef_spanq.v $R/ef_cov.v"
+# the overlap schedule's configuration (ef_raster SCHEDULE=1, docs/microarch.md
+# section 6): the same files and the span queue
+FAST="$RTL $R/ef_spanq.v"
 W=dv/lint/waivers.vlt
 
 # ---------------------------------------------------------------- 1. generated
@@ -99,7 +104,17 @@ for ns in 8 16 32; do
     iverilog -g2005 -I"$R" -Pef_raster.NS=$ns -s ef_raster -o /dev/null $RTL >/dev/null 2>&1 ||
         { ns_ok=0; bad "iverilog refuses ef_raster with NS = $ns"; }
 done
-[ $ns_ok = 1 ] && ok "NS = 12 and 64 fail elaboration under Verilator and Icarus (ef_error_NS_must_be_8_16_or_32), 8/16/32 elaborate"
+# shellcheck disable=SC2086
+out=$(verilator --lint-only -Wall -I"$R" -GSCHEDULE=2 --top-module ef_raster $FAST 2>&1); rc=$?
+if [ $rc = 0 ] || ! printf '%s\n' "$out" | grep -q "ef_error_SCHEDULE_must_be_0_or_1"; then
+    ns_ok=0; bad "verilator accepts ef_raster with SCHEDULE = 2 (exit $rc)" "$out"
+fi
+# shellcheck disable=SC2086
+out=$(iverilog -g2005 -I"$R" -Pef_raster.SCHEDULE=2 -s ef_raster -o /dev/null $FAST 2>&1); rc=$?
+if [ $rc = 0 ] || ! printf '%s\n' "$out" | grep -q "Unknown module type: ef_error_SCHEDULE_must_be_0_or_1"; then
+    ns_ok=0; bad "iverilog accepts ef_raster with SCHEDULE = 2 (exit $rc)" "$out"
+fi
+[ $ns_ok = 1 ] && ok "NS = 12 and 64 fail elaboration under Verilator and Icarus (ef_error_NS_must_be_8_16_or_32), 8/16/32 elaborate; SCHEDULE = 2 fails (ef_error_SCHEDULE_must_be_0_or_1)"
 
 # ---------------------------------------------------------------- 4. variants
 nv=0 v_ok=1
@@ -114,8 +129,8 @@ for f in dv/faults/*.sed; do
         v_ok=0; bad "the variant $n does not compile" "$out"; continue
     fi
     # shellcheck disable=SC2086
-    if ! out=$(iverilog -g2005 -I"$d" -s ef_raster_fast -o /dev/null ${FAST//$R\//$d\/} 2>&1); then
-        v_ok=0; bad "the variant $n does not compile in the fast top" "$out"; continue
+    if ! out=$(iverilog -g2005 -I"$d" -Pef_raster.SCHEDULE=1 -s ef_raster -o /dev/null ${FAST//$R\//$d\/} 2>&1); then
+        v_ok=0; bad "the variant $n does not compile in the fast configuration (SCHEDULE=1)" "$out"; continue
     fi
     cmp -s "$d/$(sed -n 's/^# file: *//p' "$f")" "$R/$(sed -n 's/^# file: *//p' "$f")" && { v_ok=0; bad "the variant $n equals rtl/"; }
     nv=$((nv + 1))
@@ -143,24 +158,27 @@ for ns in 8 16 32; do
     # shellcheck disable=SC2086
     vl "ef_raster NS=$ns small" -GNS=$ns -GW_MAX=320 -GH_MAX=240 -GE_MAX=512 --top-module ef_raster $RTL || l_ok=0
     # shellcheck disable=SC2086
-    vl "ef_raster_fast NS=$ns" -GNS=$ns --top-module ef_raster_fast $FAST || l_ok=0
+    vl "ef_raster SCHEDULE=1 NS=$ns" -GNS=$ns -GSCHEDULE=1 --top-module ef_raster $FAST || l_ok=0
     # shellcheck disable=SC2086
-    vl "ef_raster_fast NS=$ns small" -GNS=$ns -GW_MAX=320 -GH_MAX=240 -GE_MAX=512 --top-module ef_raster_fast $FAST || l_ok=0
+    vl "ef_raster SCHEDULE=1 NS=$ns small" -GNS=$ns -GSCHEDULE=1 -GW_MAX=320 -GH_MAX=240 -GE_MAX=512 --top-module ef_raster $FAST || l_ok=0
     # shellcheck disable=SC2086
-    vl "ef_raster_fast NS=$ns tiny" -GNS=$ns -GW_MAX=40 -GH_MAX=30 -GE_MAX=64 --top-module ef_raster_fast $FAST || l_ok=0
+    vl "ef_raster SCHEDULE=1 NS=$ns tiny" -GNS=$ns -GSCHEDULE=1 -GW_MAX=40 -GH_MAX=30 -GE_MAX=64 --top-module ef_raster $FAST || l_ok=0
     # shellcheck disable=SC2086
-    out=$(iverilog -g2005 -Wall -I"$R" -Pef_raster_fast.NS=$ns -s ef_raster_fast -o /dev/null $FAST 2>&1)
-    [ -z "$out" ] || { l_ok=0; bad "iverilog -g2005 -Wall of ef_raster_fast NS=$ns is not silent" "$out"; }
+    out=$(iverilog -g2005 -Wall -I"$R" -Pef_raster.NS=$ns -Pef_raster.SCHEDULE=1 -s ef_raster -o /dev/null $FAST 2>&1)
+    [ -z "$out" ] || { l_ok=0; bad "iverilog -g2005 -Wall of ef_raster SCHEDULE=1 NS=$ns is not silent" "$out"; }
     n=$((n + 5))
 done
 for t in ef_dec ef_setup ef_div ef_etm ef_aet ef_plot ef_slb_fill ef_slb_ram ef_cov; do
     # shellcheck disable=SC2086
     vl "$t" --top-module $t $RTL || l_ok=0; n=$((n + 1))
 done
-for t in ef_slb_fill_skip ef_spanq; do
-    # shellcheck disable=SC2086
-    vl "$t" --top-module $t $FAST || l_ok=0; n=$((n + 1))
-done
+# shellcheck disable=SC2086
+vl "ef_slb_fill SKIP=1" -GSKIP=1 --top-module ef_slb_fill $FAST || l_ok=0
+# shellcheck disable=SC2086
+vl "ef_slb_fill SKIP=1 tiny" -GSKIP=1 -GW_MAX=40 --top-module ef_slb_fill $FAST || l_ok=0
+# shellcheck disable=SC2086
+vl ef_spanq --top-module ef_spanq $FAST || l_ok=0
+n=$((n + 3))
 # the includes, as the RTL's own files (linted through every module above)
 linted+=("$R/ef_ifaces.vh" "$R/ef_ns.vh" "$R/ef_rooks.vh")
 # the block benches' file helpers, linted through every bench that includes them
@@ -169,7 +187,7 @@ TB=dv/tb
 # shellcheck disable=SC2086
 {
 vl tb_raster --top-module tb_raster $TB/tb_raster.v $RTL || l_ok=0
-vl "tb_raster (ef_raster_fast)" -DEF_FAST --top-module tb_raster $TB/tb_raster.v $FAST || l_ok=0
+vl "tb_raster (ef_raster SCHEDULE=1)" -DEF_FAST --top-module tb_raster $TB/tb_raster.v $FAST || l_ok=0
 vl "tb_raster (a user DUT)" -DEF_TB_USER_DUT --top-module tb_raster $TB/tb_raster.v $RTL || l_ok=0
 vl tb_dec --top-module tb_dec $TB/tb_dec.v $R/ef_dec.v || l_ok=0
 vl tb_err --top-module tb_err $TB/tb_err.v $RTL || l_ok=0
@@ -183,7 +201,7 @@ vl tb_rooks --top-module tb_rooks $TB/tb_rooks.v || l_ok=0
 vl tb_ifaces_pkg --top-module tb_ifaces_pkg $R/ef_ifaces_pkg.sv $TB/tb_ifaces_pkg.sv || l_ok=0
 vl ef_rtl_dut --top-module ef_rtl_dut $TB/dut_rtl.v $RTL || l_ok=0
 vl "tb_lockstep (ef_raster)" --top-module tb_lockstep $R/ef_ifaces_pkg.sv dv/dpi/ef_model_pkg.sv dv/dpi/tb_lockstep.sv $RTL || l_ok=0
-vl "tb_lockstep (ef_raster_fast)" -DEF_FAST --top-module tb_lockstep $R/ef_ifaces_pkg.sv dv/dpi/ef_model_pkg.sv dv/dpi/tb_lockstep.sv $FAST || l_ok=0
+vl "tb_lockstep (ef_raster SCHEDULE=1)" -DEF_FAST --top-module tb_lockstep $R/ef_ifaces_pkg.sv dv/dpi/ef_model_pkg.sv dv/dpi/tb_lockstep.sv $FAST || l_ok=0
 vl "tb_lockstep (ef_slb_fill)" -DEF_TB_DUT_SLB --top-module tb_lockstep $R/ef_ifaces_pkg.sv dv/dpi/ef_model_pkg.sv dv/dpi/tb_lockstep.sv $RTL || l_ok=0
 vl "ef_ifaces_pkg.sv (lint wrapper)" --top-module ef_ifaces_pkg_lint $R/ef_ifaces_pkg.sv dv/lint/ef_ifaces_pkg_lint.sv || l_ok=0
 }

@@ -5,8 +5,8 @@
 # tiger at 640x480 at 8 samples; `edgeflag check --cycles` on all six
 # interfaces for each.  Both configurations (EF_RTL_CONFIGS, default
 # "reference fast"): ef_raster against the reference vectors, and
-# ef_raster_fast against `edgeflag vectors --schedule overlap` (docs/microarch.md
-# section 6), its cases named fast_*.  Prints one line per failure and a summary with the
+# ef_raster with SCHEDULE=1 (-DEF_FAST) against `edgeflag vectors --schedule
+# overlap` (docs/microarch.md section 6), its cases named fast_*.  Prints one line per failure and a summary with the
 # simulated cycles per second.  EF_RTL_JOBS (default 2); EF_RTL_SLICE=N runs
 # every Nth gen case only (default 1: all), the tiger always.
 # One build configuration (EF_RTL_W_MAX, EF_RTL_H_MAX, EF_RTL_E_MAX: default
@@ -29,7 +29,7 @@ case $build in /*) ;; *) build=$PWD/$build ;; esac
 EF=$build/edgeflag
 R=$root/rtl
 RTL="$R/ef_raster.v $R/ef_dec.v $R/ef_setup.v $R/ef_div.v $R/ef_etm.v $R/ef_aet.v $R/ef_plot.v $R/ef_slb_fill.v $R/ef_slb_ram.v $R/ef_cov.v"
-FAST="$R/ef_raster_fast.v $R/ef_dec.v $R/ef_setup.v $R/ef_div.v $R/ef_etm.v $R/ef_aet.v $R/ef_plot.v $R/ef_slb_fill_skip.v $R/ef_slb_ram.v $R/ef_spanq.v $R/ef_cov.v"
+FAST="$RTL $R/ef_spanq.v"
 configs=${EF_RTL_CONFIGS:-reference fast}
 jobs=${EF_RTL_JOBS:-2}
 slice=${EF_RTL_SLICE:-1}
@@ -84,8 +84,8 @@ for cfg in $configs; do
     done
 done | parallel -j "$jobs" --colsep '\|' one '{1}' '{2}' '{3}' '{4}' '{5}' '{6}' >"$work/results.txt"
 grep '^FAIL' "$work/results.txt"
-grep '^PASS fast_tiger' "$work/results.txt" | awk '{ printf "rtl-regress: ef_raster_fast: tiger 640x480, 8 samples: %d cycles in %.1f s of Verilator (%.0f cycles/s), %.2f s of CPU (%.0f cycles/s)\n", $3, $4, $3 / $4, $6, $3 / ($6 > 0 ? $6 : 1e-9) }'
-awk '/^PASS fast_/ { n++; c += $3 } /^(FAIL|REFUSED) fast_/ { f++ } END { if (n + f) printf "rtl-regress: ef_raster_fast (the overlap schedule): %d passed cycle-exact, %d failed or refused (counted in the line below too), %d frame cycles\n", n, f, c }' "$work/results.txt"
+grep '^PASS fast_tiger' "$work/results.txt" | awk '{ printf "rtl-regress: ef_raster SCHEDULE=1: tiger 640x480, 8 samples: %d cycles in %.1f s of Verilator (%.0f cycles/s), %.2f s of CPU (%.0f cycles/s)\n", $3, $4, $3 / $4, $6, $3 / ($6 > 0 ? $6 : 1e-9) }'
+awk '/^PASS fast_/ { n++; c += $3 } /^(FAIL|REFUSED) fast_/ { f++ } END { if (n + f) printf "rtl-regress: ef_raster SCHEDULE=1 (the overlap schedule): %d passed cycle-exact, %d failed or refused (counted in the line below too), %d frame cycles\n", n, f, c }' "$work/results.txt"
 grep '^PASS tiger' "$work/results.txt" | awk '{ printf "rtl-regress: tiger 640x480, 8 samples: %d cycles in %.1f s of Verilator (%.0f cycles/s), %.2f s of CPU (%.0f cycles/s)\n", $3, $4, $3 / $4, $6, $3 / ($6 > 0 ? $6 : 1e-9) }'
 grep '^REFUSED' "$work/results.txt"
 awk -v cfg="W_MAX $WM, H_MAX $HM, E_MAX $EM" -v g="$(tail -n +3 "$work/gen/refused.tsv" | wc -l)" '/^PASS/ { n++; c += $3; s += $4; u += $6 } /^FAIL/ { f++ } /^REFUSED/ { r++ }

@@ -21,13 +21,13 @@
 #      the fault's interface, at the cycle where a plain in-order comparison
 #      of the two hex files (awk, independent of edgeflag check) first
 #      differs, with a field the fault changes marked.
-#   6. the fast top (ef_raster_fast, the overlap schedule of docs/microarch.md
-#      section 6), a slice: the NS 8 cases of stage 2 against `edgeflag
-#      vectors --schedule overlap`, `--cycles`, in Verilator and (those of at
-#      most EF_RTL_IV_CYCLES cycles) Icarus; back-pressure (--transactions) in
-#      both; the faults of stage 5 in the fast top (SLB + FILL's as their
-#      *_skip copies) and two of its own (skipstart, spanq), each caught as
-#      in stage 5.  The fast top's lint is rtl-lint's.
+#   6. the fast configuration (ef_raster SCHEDULE=1, the overlap schedule of
+#      docs/microarch.md section 6), a slice: the NS 8 cases of stage 2
+#      against `edgeflag vectors --schedule overlap`, `--cycles`, in Verilator
+#      and (those of at most EF_RTL_IV_CYCLES cycles) Icarus; back-pressure
+#      (--transactions) in both; the faults of stage 5 in the fast
+#      configuration and two of its own (skipstart, spanq), each caught as
+#      in stage 5.  The fast configuration's lint is rtl-lint's.
 #
 # usage: bash tests/rtl/rtl-test.sh BUILD_DIR   (make rtl-test; EF_RTL_JOBS
 #        (default 2), EF_RTL_SLICE, EF_RTL_KEEP=1 keeps the work directory)
@@ -49,10 +49,10 @@ rtl_files() {
     echo "$d/ef_raster.v $d/ef_dec.v $d/ef_setup.v $d/ef_div.v $d/ef_etm.v $d/ef_aet.v $d/ef_plot.v $d/ef_slb_fill.v $d/ef_slb_ram.v $d/ef_cov.v"
 }
 RTL=$(rtl_files "$R")
-# rtl_files_fast DIR: the fast top's (docs/microarch.md section 6)
+# rtl_files_fast DIR: the fast configuration's (SCHEDULE=1, docs/microarch.md
+# section 6): the same files and the span queue
 rtl_files_fast() {
-    local d=$1
-    echo "$d/ef_raster_fast.v $d/ef_dec.v $d/ef_setup.v $d/ef_div.v $d/ef_etm.v $d/ef_aet.v $d/ef_plot.v $d/ef_slb_fill_skip.v $d/ef_slb_ram.v $d/ef_spanq.v $d/ef_cov.v"
+    echo "$(rtl_files "$1") $1/ef_spanq.v"
 }
 jobs=${EF_RTL_JOBS:-2}
 slice=${EF_RTL_SLICE:-11}
@@ -107,7 +107,7 @@ for ns in 8 16 32; do submit "lint_$ns" lint $ns; done
 
 # ---------------------------------------------------------------- builds
 # build_iv KEY [FAULT]: one Icarus build per sample count (KEY = NS; fN: the
-# fast top at N) and planted fault (the RTL variant dv/rtl-variant.sh makes
+# fast configuration at N) and planted fault (the RTL variant dv/rtl-variant.sh makes
 # from dv/faults/FAULT.sed)
 build_iv() {
     local key=$1 ns=${1#f} fault=${2:-} o=$work/iv_$1${2:+_$2} src=$R files=rtl_files def=() top=
@@ -136,8 +136,8 @@ faults="rooks pad topclip lastedge div_floor sb_ring fwd span"
 for ns in 8 16 32; do submit "build_vl_$ns" build_vl $ns; done
 for ns in 8 16 32; do submit "build_iv_$ns" build_iv $ns; done
 for f in $faults; do submit "build_iv_$f" build_iv 8 "$f"; done
-# the fast top: SLB + FILL's faults in its copy (*_skip), and its own two
-faults_fast="rooks pad_skip topclip lastedge div_floor sb_ring fwd_skip span_skip skipstart spanq"
+# the fast configuration: the same faults, and its own two
+faults_fast="rooks pad topclip lastedge div_floor sb_ring fwd span skipstart spanq"
 submit build_vl_f8 build_vl f8
 submit build_iv_f8 build_iv f8
 for f in $faults_fast; do submit "build_iv_f8_$f" build_iv f8 "$f"; done
@@ -185,7 +185,7 @@ for c in "${cases[@]}"; do
     if [ "$me" -gt $EM ]; then nskip=$((nskip + 1)); continue; fi
     cyc=$(sed -n 's/.*"cycles": \([0-9]*\).*/\1/p' "$work/vec/$n/manifest.json")
     kept+=("$c|$cyc")
-    # the fast top's slice (stage 6): the NS 8 cases, in the overlap schedule
+    # the fast configuration's slice (stage 6): the NS 8 cases, in the overlap schedule
     if [ "$ns" = 8 ]; then
         vectors "fast_$n" "$i" 8 "$rule" "$size" overlap || { echo "FAIL vectors fast_$n"; fail=$((fail + 1)); continue; }
         fast+=("fast_$n|$(sed -n 's/.*"cycles": \([0-9]*\).*/\1/p' "$work/vec/fast_$n/manifest.json")")
@@ -229,7 +229,7 @@ bpcase=$(printf '%s\n' "${cases[@]}" | grep '^svg_tiger' | head -n 1 | cut -d'|'
 bpns=$(printf '%s\n' "${cases[@]}" | grep '^svg_tiger' | head -n 1 | cut -d'|' -f3)
 submit icarus_bp run icarus "$bpcase" "$bpns" 20070101
 submit verilator_bp run verilator "$bpcase" "$bpns" 424242
-# 6. the fast top's slice
+# 6. the fast configuration's slice
 nivf=0
 for c in "${fast[@]}"; do
     IFS='|' read -r n cyc <<<"$c"
@@ -355,9 +355,9 @@ first_diff() {
             "$1/${i%:*}.expected.hex" "$2/${i%:*}.actual.hex"
     done | sort -k2,2n -k1,1 | head -n 1
 }
-fault() {        # fault NAME CASE IFACE FIELDS [KEY: 8, or f8 for the fast top]
+fault() {        # fault NAME CASE IFACE FIELDS [KEY: 8, or f8 for the fast configuration]
     local label=$1 n=$2 want_if=$3 fields=$4 key=${5:-8} v=$work/vec/$2 a=$work/fault_${5:-8}_$1 rc rep got_if got_cyc ind
-    [ "$key" = 8 ] || label="$1 (fast top)"
+    [ "$key" = 8 ] || label="$1 (fast configuration)"
     mkdir -p "$a"
     ( vvp -n "$work/iv_${key}_$1/t.vvp" +cmd="$v/cmd.stim.hex" +out="$a" 2>&1 | tail -n 2 ) 2>/dev/null
     "$EF" check "$v" "$a" --cycles --errors 100000 >"$a/check.out" 2>"$a/check.err"; rc=$?
@@ -408,17 +408,17 @@ submit fault_sbring    fault sb_ring   f_tiger et_wr x,e,qs,rs,dy
 submit fault_fwd       fault fwd       f_tiger span -
 submit fault_span      fault span      f_tiger span len
 submit fault_f_rooks     fault rooks     ff_tiger plot q f8
-submit fault_f_pad       fault pad_skip  ff_tiger_nz span mask,x,len,extra f8
+submit fault_f_pad       fault pad       ff_tiger_nz span mask,x,len,extra f8
 submit fault_f_topclip   fault topclip   ff_outside-crossing et_wr r0,x,e,slot f8
 submit fault_f_lastedge  fault lastedge  ff_tiger plot - f8
 submit fault_f_divfloor  fault div_floor ff_tiger et_wr x,e,qs,rs f8
 submit fault_f_sbring    fault sb_ring   ff_tiger et_wr x,e,qs,rs,dy f8
-submit fault_f_fwd       fault fwd_skip  ff_tiger span - f8
-submit fault_f_span      fault span_skip ff_tiger span len f8
+submit fault_f_fwd       fault fwd       ff_tiger span - f8
+submit fault_f_span      fault span      ff_tiger span len f8
 submit fault_f_skipstart fault skipstart ff_tiger seg - f8
 submit fault_f_spanq     fault spanq     ff_tiger64 span - f8
 collect
 
-echo "rtl-test: ${#cases[@]} cases in Verilator, $niv of them in Icarus; the fast top ${#fast[@]} in Verilator, $nivf in Icarus; $(( $(date +%s) - t_start )) s"
+echo "rtl-test: ${#cases[@]} cases in Verilator, $niv of them in Icarus; the fast configuration ${#fast[@]} in Verilator, $nivf in Icarus; $(( $(date +%s) - t_start )) s"
 echo "rtl-test: $pass passed, $fail failed"
 [ $fail = 0 ]
