@@ -13,6 +13,7 @@
 #include "cli.h"
 
 #include "atomic_file.h"
+#include "dut_file.h"
 #include "ef_gen.h"
 
 #include <errno.h>
@@ -158,128 +159,43 @@ static int parse_sample_list(const char *v, uint32_t *mask)
     return 1;
 }
 
-static uint32_t le32(const unsigned char *p)
-{
-    return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
-}
-
-/* A name that is KEY or ends in _KEY. */
-static int names(const char *name, size_t len, const char *key)
-{
-    const size_t k = strlen(key);
-    return (len == k || (len > k && name[len - k - 1] == '_')) && !memcmp(name + len - k, key, k);
-}
-
-/* --dut-file: a board's identify record (48 bytes from "EFB1", docs/board.md
- * 3.1), or text defining W_MAX, H_MAX, E_MAX, NS (`define, #define,
- * parameter or localparam; a name with any prefix ending in _).  Fills lim;
- * -1 on success, else the usage error reported. */
+/* --dut-file: a board's identify record or a Verilog/C file (dut_file.h,
+ * docs/gen.md section 11).  Fills lim; -1 on success, else the exit code
+ * after the error is reported as every reader's ("FILE:LINE:COL: ...", the
+ * record's byte offset, or the whole file): exit 2, as for the limit flags. */
 static int read_dut_file(const char *path, ef_gen_limits *lim)
 {
-    enum { MAX_BYTES = 1 << 20 };
     unsigned char *raw;
     size_t n;
-    int found = 0, rc = -1;
-    uint32_t got[4] = { 0, 0, 0, 0 }; /* W_MAX, H_MAX, E_MAX, NS */
+    ef_dut_error de;
+    char msg[4400];
     FILE *f = fopen(path, "rb");
-    if (!f)
-        return ef_cli_usage_error(CMD, "--dut-file %s: %s", path, strerror(errno));
-    if (!(raw = malloc(MAX_BYTES + 1))) {
-        fclose(f);
-        return ef_cli_usage_error(CMD, "--dut-file %s: out of memory", path);
-    }
-    n = fread(raw, 1, MAX_BYTES + 1, f);
-    fclose(f);
-    if (n > MAX_BYTES) {
-        free(raw);
-        return ef_cli_usage_error(CMD, "--dut-file %s: larger than %d bytes", path, (int)MAX_BYTES);
-    }
-    raw[n] = '\0';
     memset(lim, 0, sizeof *lim);
-    if (n == 48 && !memcmp(raw, "EFB1", 4)) {
-        const uint32_t sm = le32(raw + 16), w = le32(raw + 20), h = le32(raw + 24), e = le32(raw + 28);
-        if (!(sm & 0x38u) || w < 1 || w > EF_MAX_CANVAS || h < 1 || h > EF_MAX_CANVAS || e < 1 || e > INT32_MAX)
-            rc = ef_cli_usage_error(CMD,
-                                    "--dut-file %s: an identify record with samples 0x%" PRIx32 ", canvas %" PRIu32
-                                    "x%" PRIu32 ", edges %" PRIu32 ": out of range",
-                                    path, sm, w, h, e);
-        lim->samples_mask = sm & 0x38u;
-        lim->width = (int32_t)w;
-        lim->height = (int32_t)h;
-        lim->edges = e;
+    if (!f) {
+        ef_cli_error("%s: %s (--dut-file)", path, strerror(errno));
+        return EF_CLI_EXIT_USAGE;
+    }
+    if (!(raw = malloc(EF_DUT_FILE_MAX + 1))) {
+        fclose(f);
+        ef_cli_error("out of memory");
+        return EF_CLI_EXIT_INTERNAL;
+    }
+    n = fread(raw, 1, EF_DUT_FILE_MAX + 1, f);
+    if (ferror(f)) {
+        const int e = errno;
+        fclose(f);
         free(raw);
-        return rc;
+        ef_cli_error("%s: %s (--dut-file)", path, strerror(e ? e : EIO));
+        return EF_CLI_EXIT_USAGE;
     }
-    for (char *line = (char *)raw, *next; line && *line && rc < 0; line = next) {
-        char *p = line, *name;
-        size_t len, k = 0;
-        int32_t val;
-        char num[16];
-        next = strchr(line, '\n');
-        if (next)
-            *next++ = '\0';
-        while (*p == ' ' || *p == '\t')
-            p++;
-        if (!strncmp(p, "`define", 7) || !strncmp(p, "#define", 7))
-            p += 7;
-        else if (!strncmp(p, "parameter", 9))
-            p += 9;
-        else if (!strncmp(p, "localparam", 10))
-            p += 10;
-        else
-            continue;
-        while (*p == ' ' || *p == '\t')
-            p++;
-        if (!strncmp(p, "integer ", 8))
-            p += 8;
-        while (*p == ' ' || *p == '\t')
-            p++;
-        name = p;
-        while ((*p >= 'A' && *p <= 'Z') || (*p >= 'a' && *p <= 'z') || (*p >= '0' && *p <= '9') || *p == '_')
-            p++;
-        len = (size_t)(p - name);
-        while (*p == ' ' || *p == '\t' || *p == '=')
-            p++;
-        while (k < sizeof num - 1 && *p >= '0' && *p <= '9')
-            num[k++] = *p++;
-        num[k] = '\0';
-        if (!len || !k || !ef_util_parse_int(num, 1, INT32_MAX, &val))
-            continue;
-        static const char *const keys[4] = { "W_MAX", "H_MAX", "E_MAX", "NS" };
-        int which = -1;
-        for (int q = 0; q < 4 && which < 0; q++)
-            if (names(name, len, keys[q]))
-                which = q;
-        if (which < 0)
-            continue;
-        if ((which < 2 && val > EF_MAX_CANVAS) || (which == 3 && val != 8 && val != 16 && val != 32)) {
-            rc =
-                ef_cli_usage_error(CMD, "--dut-file %s: %.*s = %" PRId32 " is out of range", path, (int)len, name, val);
-            break;
-        }
-        if (got[which] && got[which] != (uint32_t)val) {
-            rc = ef_cli_usage_error(CMD, "--dut-file %s: %s defined twice (%" PRIu32 ", %" PRId32 ")", path,
-                                    keys[which], got[which], val);
-            break;
-        }
-        got[which] = (uint32_t)val;
-        found++;
-    }
+    fclose(f);
+    const int bad = ef_dut_file_parse(raw, n, lim, &de) != 0;
     free(raw);
-    if (rc >= 0)
-        return rc;
-    lim->width = (int32_t)got[0];
-    lim->height = (int32_t)got[1];
-    lim->edges = got[2];
-    lim->samples_mask = got[3] ? 1u << (got[3] == 8 ? 3 : got[3] == 16 ? 4 : 5) : 0;
-    if (!found)
-        return ef_cli_usage_error(CMD,
-                                  "--dut-file %s: neither an identify record (48 bytes from \"EFB1\") nor a file "
-                                  "that defines W_MAX, H_MAX, E_MAX or NS",
-                                  path);
-    if ((lim->width == 0) != (lim->height == 0))
-        return ef_cli_usage_error(CMD, "--dut-file %s: defines only one of W_MAX and H_MAX", path);
-    return -1;
+    if (!bad)
+        return -1;
+    ef_dut_error_format(path, &de, msg, sizeof msg);
+    ef_cli_error("%s", msg);
+    return EF_CLI_EXIT_USAGE;
 }
 
 static int on_option(void *p, int val, const char *v)
@@ -518,9 +434,11 @@ int ef_cli_gen(int argc, char **argv)
     }
     describe_limits(&a.lim, limits, sizeof limits);
     refused.len = 0;
-    if (a.fit && ((st = ef_gen_text_append(&refused, "# edgeflag gen: cases the DUT's limits refuse (")) != EF_OK ||
-                  (st = ef_gen_text_append(&refused, limits)) != EF_OK ||
-                  (st = ef_gen_text_append(&refused, "; docs/gen.md section 11)\ncase\tkind\tcategory\tname\tgrid\tseed\treason\n")) != EF_OK)) {
+    if (a.fit &&
+        ((st = ef_gen_text_append(&refused, "# edgeflag gen: cases the DUT's limits refuse (")) != EF_OK ||
+         (st = ef_gen_text_append(&refused, limits)) != EF_OK ||
+         (st = ef_gen_text_append(
+              &refused, "; docs/gen.md section 11)\ncase\tkind\tcategory\tname\tgrid\tseed\treason\n")) != EF_OK)) {
         ef_cli_error("out of memory");
         rc = EF_CLI_EXIT_INTERNAL;
         goto out;

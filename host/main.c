@@ -1,6 +1,6 @@
 /*
  * main.c - `edgeflag-host`: drives an edgeflag board (docs/board.md section 7
- * is its user documentation).  list / stream / verify / bench; everything
+ * is its user documentation).  list / stream / verify / bench / identify; everything
  * protocol-shaped lives in host_link.c and bench_link.c, everything
  * link-shaped in the transports.
  */
@@ -34,7 +34,7 @@ static const ef_transport_ops *const PROBED[] = { &ef_transport_usb, &ef_transpo
 #define NTRANSPORTS (sizeof TRANSPORTS / sizeof TRANSPORTS[0])
 
 typedef struct args {
-    const char *cmd, *vectors, *transport, *results, *junit, *diff_image, *interfaces, *save_frame;
+    const char *cmd, *vectors, *transport, *results, *junit, *diff_image, *interfaces, *save_frame, *save;
     ef_util_format diff_fmt;
     int32_t errors; /* -1: check's default */
     long digest;    /* -1: not given (digest mode on a serial line, full records elsewhere) */
@@ -53,6 +53,7 @@ static void usage(FILE *f)
           "                     [--interfaces LIST] [--junit FILE] [--diff-image FILE.png] [--errors N]\n"
           "                     [--transactions]\n"
           "       edgeflag-host bench [LINK OPTIONS] [--mib N]\n"
+          "       edgeflag-host identify [LINK OPTIONS] [--save FILE] [--json]\n"
           "       edgeflag-host --version | --help\n"
           "\n"
           "Streams an edgeflag vectors.bin's command stream to a board (docs/board.md), collects\n"
@@ -86,6 +87,8 @@ static void usage(FILE *f)
           "                       windows are fetched whole (docs/board.md 4.5; default 1024 on a\n"
           "                       serial line, off elsewhere)   --digest-fetch K  windows fetched (16)\n"
           "  --mib N              bench: MiB per throughput test (default 64)\n"
+          "  --save FILE          identify: write the board's 48-byte identify record to FILE (atomically),\n"
+          "                       the file `edgeflag gen --dut-file FILE` fits cases to\n"
           "  --quiet              no progress bar and no summary     --json  summary as JSON on stdout\n"
           "\n"
           "exit codes: 0 ok, 1 verify found mismatches, 2 usage, 3 bad vectors file, 4 results not\n"
@@ -141,7 +144,8 @@ static int parse(int argc, char **argv, args *a)
         O_BAUD,
         O_DIGEST,
         O_DIGESTFETCH,
-        O_SAVEFRAME
+        O_SAVEFRAME,
+        O_SAVE
     };
     static const struct option opts[] = { { "transport", required_argument, 0, O_TRANSPORT },
                                           { "device", required_argument, 0, O_DEVICE },
@@ -160,6 +164,7 @@ static int parse(int argc, char **argv, args *a)
                                           { "digest", required_argument, 0, O_DIGEST },
                                           { "digest-fetch", required_argument, 0, O_DIGESTFETCH },
                                           { "save-frame", required_argument, 0, O_SAVEFRAME },
+                                          { "save", required_argument, 0, O_SAVE },
                                           { "results", required_argument, 0, O_RESULTS },
                                           { "resume", no_argument, 0, O_RESUME },
                                           { "frame-cmds", required_argument, 0, O_FRAMECMDS },
@@ -244,6 +249,11 @@ static int parse(int argc, char **argv, args *a)
             if (ef_util_format_from_path(optarg) != EF_UTIL_FMT_PNG || !ef_util_format_available(EF_UTIL_FMT_PNG))
                 return usage_error("--save-frame needs a FILE.png (and a build with libpng), not '%s'", optarg);
             a->save_frame = optarg;
+            break;
+        case O_SAVE:
+            if (!*optarg)
+                return usage_error("--save needs a file name, not '%s'", optarg);
+            a->save = optarg;
             break;
         case O_RESULTS: a->results = optarg; break;
         case O_RESUME: a->resume = 1; break;
@@ -630,6 +640,96 @@ static int cmd_bench(args *a)
     return EF_HX_OK;
 }
 
+/* identify: the board's identify record (docs/board.md 3.1), decoded on standard output and,
+ * with --save FILE, written to FILE as the 48 bytes it is, atomically: the file `edgeflag gen
+ * --dut-file` reads (docs/gen.md section 11).  Nothing is written unless the record is an
+ * edgeflag board's of this protocol version. */
+static int cmd_identify(const args *a)
+{
+    const ef_transport_ops *ops;
+    ef_link *l;
+    int code = open_link(a, &ops, &l);
+    if (code)
+        return code;
+    uint8_t raw[EF_PROTO_IDENTIFY_LEN];
+    const int r = ops->identify(l, raw);
+    if (r < 0) {
+        const char *d = ops->detail ? ops->detail(l) : NULL;
+        fprintf(stderr, "edgeflag-host: identify over %s: %s%s%s\n", ops->name, ef_host_strerror(r),
+                d && *d ? ": " : "", d && *d ? d : "");
+        ops->close(l);
+        return ef_host_exit_code(r);
+    }
+    ops->close(l);
+    ef_host_ident id;
+    if (ef_host_ident_parse(raw, &id) != 0) {
+        if (memcmp(raw, EF_PROTO_MAGIC, 4) == 0)
+            fprintf(stderr,
+                    "edgeflag-host: identify: the board speaks protocol version %u; this edgeflag-host speaks %d%s\n",
+                    id.protocol, EF_PROTO_PROTOCOL, a->save ? " (nothing saved)" : "");
+        else
+            fprintf(stderr,
+                    "edgeflag-host: identify: the device did not answer identify as an edgeflag board (no "
+                    "\"EFB1\")%s\n",
+                    a->save ? " (nothing saved)" : "");
+        return EF_HX_BOARD;
+    }
+    if (a->save) {
+        ef_util_atomic af;
+        int bad = ef_util_atomic_open(&af, a->save) != 0;
+        if (!bad && fwrite(raw, 1, sizeof raw, af.fp) != sizeof raw) {
+            const int e = errno;
+            ef_util_atomic_abort(&af);
+            errno = e ? e : EIO;
+            bad = 1;
+        }
+        if (!bad && ef_util_atomic_commit(&af) != 0)
+            bad = 1;
+        if (bad) {
+            fprintf(stderr, "edgeflag-host: identify: cannot write '%s': %s\n", a->save, strerror(errno));
+            return EF_HX_OUTPUT;
+        }
+    }
+    char desc[300], ifaces[128], caps[128] = "";
+    ef_host_ident_describe(&id, desc, sizeof desc);
+    mask_names(id.iface_mask, ifaces, sizeof ifaces);
+    static const char *const CAPS[4] = { "results", "resume", "internal interfaces", "digest" };
+    for (int i = 0; i < 4; i++)
+        if (id.caps >> i & 1u)
+            snprintf(caps + strlen(caps), sizeof caps - strlen(caps), "%s%s", caps[0] ? ", " : "", CAPS[i]);
+    if (a->json) {
+        printf("{\"transport\": \"%s\", \"serial\": \"", ops->name);
+        for (const char *p = id.serial; *p; p++) /* printable ASCII already (ef_host_ident_parse) */
+            printf(*p == '"' || *p == '\\' ? "\\%c" : "%c", *p);
+        printf("\", \"protocol\": %u, \"window\": %u, \"capabilities\": %" PRIu32 ", \"interfaces\": \"%s\", "
+               "\"samples\": [",
+               id.protocol, id.window, id.caps, ifaces);
+        for (unsigned n = 8, k = 0; n <= 32; n *= 2)
+            if (id.samples_mask >> ef_proto_samples_bit(n) & 1u)
+                printf("%s%u", k++ ? ", " : "", n);
+        printf("], \"width_max\": %" PRIu32 ", \"height_max\": %" PRIu32 ", \"edges_max\": %" PRIu32 ", \"saved\": ",
+               id.width_max, id.height_max, id.edges_max);
+        if (a->save) {
+            putchar('"');
+            for (const char *p = a->save; *p; p++)
+                printf(*p == '"' || *p == '\\' ? "\\%c" : (unsigned char)*p < 0x20 ? "?" : "%c", *p);
+            putchar('"');
+        } else {
+            fputs("null", stdout);
+        }
+        puts("}");
+    } else {
+        printf("%s: %s; capabilities: %s; interfaces: %s\n", ops->name, desc, caps[0] ? caps : "none",
+               ifaces[0] ? ifaces : "none");
+    }
+    if (a->save && !a->quiet)
+        fprintf(stderr,
+                "edgeflag-host: identify: wrote %s (the 48-byte record of docs/board.md 3.1): edgeflag gen --dut-file "
+                "%s fits cases to this board\n",
+                a->save, a->save);
+    return fflush(stdout) == 0 ? EF_HX_OK : EF_HX_OUTPUT;
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 2) {
@@ -654,6 +754,8 @@ int main(int argc, char **argv)
     const int r = parse(argc - 1, argv + 1, &a);
     if (r)
         return r;
+    if (a.save && strcmp(a.cmd, "identify") != 0)
+        return usage_error("--save is identify's (verify saves a frame with --save-frame), not %s's", a.cmd);
     if (strcmp(a.cmd, "list") == 0)
         return a.vectors ? usage_error("list takes no file ('%s')", a.vectors) : cmd_list(&a);
     if (strcmp(a.cmd, "stream") == 0)
@@ -662,5 +764,8 @@ int main(int argc, char **argv)
         return cmd_stream(&a, 1);
     if (strcmp(a.cmd, "bench") == 0)
         return a.vectors ? usage_error("bench takes no file ('%s')", a.vectors) : cmd_bench(&a);
-    return usage_error("unknown command '%s' (list, stream, verify, bench)", a.cmd);
+    if (strcmp(a.cmd, "identify") == 0)
+        return a.vectors ? usage_error("identify takes no file ('%s'; --save FILE names the record's file)", a.vectors)
+                         : cmd_identify(&a);
+    return usage_error("unknown command '%s' (list, stream, verify, bench, identify)", a.cmd);
 }

@@ -12,8 +12,8 @@ FUZZ_BUILD ?= build-fuzz
 FUZZ_CC ?= clang
 FUZZ_SECONDS ?= 60
 FUZZ_SMOKE_SECONDS ?= 10
-FUZZ_TARGETS ?= svg scene cli_args decimal render vec_read board host_results
-FUZZ_ALL := svg scene cli_args decimal render vec_read board host_results
+FUZZ_TARGETS ?= svg scene cli_args decimal render vec_read board host_results dut_file
+FUZZ_ALL := svg scene cli_args decimal render vec_read board host_results dut_file
 # ASan + UBSan, plus clang's integer checks with the intended wraps listed in
 # tests/sanitize/integer.ignorelist (as in `make test-integer`).
 FUZZ_SAN := -fsanitize=address,undefined,integer -fsanitize-ignorelist=tests/sanitize/integer.ignorelist \
@@ -45,6 +45,7 @@ fuzz-bins: $(FUZZ_BINS)
 FUZZ_CLI_OBJ = $(filter-out $(BUILD)/cli/main.o,$(CLI_OBJ)) $(UTIL_OBJ) $(VEC_A)
 $(BUILD)/fuzz/fuzz_render: $(ORACLE_OBJ)
 $(BUILD)/fuzz/fuzz_cli_args: $(FUZZ_CLI_OBJ)
+$(BUILD)/fuzz/fuzz_dut_file: $(BUILD)/cli/dut_file.o
 $(BUILD)/fuzz/fuzz_vec_read: $(VEC_A)
 $(BUILD)/fuzz/fuzz_board: $(HOST_BOARD_OBJ) $(VEC_A)
 FUZZ_HOST_OBJ = $(BUILD)/host/host_link.o $(BUILD)/host/transport.o $(HOST_BOARD_OBJ)
@@ -54,6 +55,7 @@ $(BUILD)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/fuzz_common.h $(LIB_A)
 	$(CC) $(CPPFLAGS) -Itests/fuzz -Itests/oracle -Icli -Iutil -Ihost -Iboard -Iproto $(CFLAGS_ALL) -fsanitize=fuzzer $< \
 	    $(if $(filter fuzz_render,$(notdir $@)),$(ORACLE_OBJ)) \
 	    $(if $(filter fuzz_cli_args,$(notdir $@)),$(FUZZ_CLI_OBJ)) \
+	    $(if $(filter fuzz_dut_file,$(notdir $@)),$(BUILD)/cli/dut_file.o) \
 	    $(if $(filter fuzz_vec_read,$(notdir $@)),$(VEC_A)) \
 	    $(if $(filter fuzz_board,$(notdir $@)),$(HOST_BOARD_OBJ) $(VEC_A)) \
 	    $(if $(filter fuzz_host_results,$(notdir $@)),$(FUZZ_HOST_OBJ) $(UTIL_OBJ) $(VEC_A)) \

@@ -194,6 +194,23 @@ if [ -x "$HN" ]; then
     fi
 fi
 
+# ---------------------------------------------------------------- 5. the RTL's limits, saved
+# identify --save of the board with the Verilated RTL (its W_MAX, H_MAX, E_MAX and sample counts,
+# board/rtl_dut.mk), then gen --dut-file on that record: the same fits as the RTL's parameters
+# given as flags (read here from board/rtl_dut.mk's defaults), and the canvases over them fitted
+"$H" identify "${SIM[@]}" --sim-dut rtl --save rtl_ident.bin >ident.out 2>ident.err
+rc=$?
+lim=$(sed -n 's/.*canvas up to \([0-9]*x[0-9]*\), \([0-9]*\) edges.*/\1 \2/p' ident.out)
+want=$(awk '$2 == "?=" { v[$1] = $3 } END { print v["RTL_DUT_W_MAX"] "x" v["RTL_DUT_H_MAX"], v["RTL_DUT_E_MAX"] }' "$root/board/rtl_dut.mk")
+"$E" gen --list --dut-file rtl_ident.bin >rf.tsv 2>rf.err
+"$E" gen --list --dut-limits "${want% *}" --dut-edges "${want#* }" --dut-samples 8,16,32 >rl.tsv 2>rl.err
+nfit=$(grep -c 'fitted to the DUT' rf.tsv)
+if [ $rc = 0 ] && [ "$lim" = "$want" ] && cmp -s rf.tsv rl.tsv && cmp -s rf.err rl.err && [ "$nfit" -gt 0 ]; then
+    ok "identify --save with the RTL DUT ($want edges): gen --dut-file on it fits $nfit cases, as the RTL's parameters given as flags do"
+else
+    bad "identify --save with the RTL DUT" "exit $rc, identify says '$lim', the build '$want', $nfit fitted; $(cat ident.err)"
+fi
+
 echo "test-host-rtl: $(($(date +%s) - t0)) s in all"
 echo "$pass passed, $fail failed"
 [ $fail = 0 ]

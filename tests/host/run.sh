@@ -11,7 +11,9 @@
 #   3. wrong use: --resume with nothing to resume or another file's state, auto with no
 #      board, bad vector files (missing, truncated, bad CRC, other format version, hex,
 #      no cmd), a results folder that cannot be made, a mismatching board result;
-#   4. bench over the null and sim transports, list, --version.
+#   4. bench over the null and sim transports, list, --version;
+#   5. identify and identify --save (the record `edgeflag gen --dut-file` reads): decoded, saved
+#      whole and atomically, refused from another device or protocol (nothing saved), exit 4.
 # usage: bash tests/host/run.sh BUILD_DIR   (`make test-host`)
 # Ends with "N passed, M failed"; exit status 0 only if nothing failed.
 set -u
@@ -62,6 +64,12 @@ for v in small holes tiger; do
         "$H" verify $v/vectors.bin "${SIM[@]}"
 done
 cp tiger/board/vectors.actual.bin clean.bin
+# the default --timeout (2,000 ms, docs/board.md 7, --help) when none is given: a small run needs no timeout and
+# sends nothing again
+run "verify small with the default --timeout: PASS" 0 'check: PASS: 6 comparisons' -- \
+    "$H" verify small/vectors.bin --transport sim --results dflt --json
+[ "$(json timeouts)" = 0 ] && [ "$(json retransmits)" = 0 ] && ok "the default --timeout: no timeout, nothing sent again" ||
+    bad "the default --timeout" "$(cat out.txt)"
 run "stream: results in the default folder, summary line" 0 'commands in .* frames .* result records \(pix\)' -- \
     "$H" stream small/vectors.bin "${SIM[@]}"
 [ -s small/board/vectors.actual.bin ] && [ ! -e small/board/.resume ] && [ ! -e small/board/.results.part ] &&
@@ -122,6 +130,26 @@ for delay in 0.15 0.3 0.45; do
         bad "host killed after ${delay}s: resume exit $rrc" "$(head -c 300 err.txt)"
 done
 
+# the progress bar, drawn only when standard error is a terminal (docs/board.md: util-linux's script gives
+# the run a pty): every redraw's bar agrees with its percentage (floor(P * 30 / 100) .. floor((P + 1) * 30 /
+# 100) '#'), the first (at most the window of 16 of 2,864 frames acknowledged) is at 0 % with no '#', the
+# last at 100 % with all 30
+if command -v script >/dev/null; then
+    timeout "$EF_GUARD_S" script -qfec "'$H' verify big/vectors.bin --transport sim --timeout $EF_LINK_MS --frame-cmds 10 --interfaces pix --results pb" \
+        /dev/null >tty.txt 2>&1
+    prc=$?
+    tr '\r' '\n' <tty.txt | awk -v rc=$prc '
+        /^\[[#.]+\] +[0-9]+%/ { n++; bar = substr($0, 2, 30); h = gsub(/#/, "", bar); p = $2 + 0
+            if (h < int(p * 30 / 100) || h > int((p + 1) * 30 / 100)) bad = bad " " p "%:" h "#"
+            if (n == 1) { fp = p; fh = h } lp = p; lh = h }
+        END { if (rc == 0 && n >= 2 && bad == "" && fp == 0 && fh == 0 && lp == 100 && lh == 30) {
+                  printf "ok - the progress bar on a terminal: %d redraws, each bar agrees with its percentage, 0 %% to 100 %%\n", n; exit 0 }
+              printf "FAIL - the progress bar on a terminal: exit %d, %d redraws, first %s%% %s#, last %s%% %s#, disagreeing:%s\n", rc, n, fp, fh, lp, lh, bad; exit 1 }' &&
+        pass=$((pass + 1)) || fail=$((fail + 1))
+else
+    bad "the progress bar on a terminal" "util-linux's script is not installed"
+fi
+
 rm -rf S R
 run "stall past the timeout: exit 5 after 4 tries" 5 'stopped answering.*--resume' -- "$H" verify \
     tiger/vectors.bin "${SIM[@]}" --frame-cmds 40 --timeout 50 --sim-state S --results R --sim-faults stall=8 --json
@@ -168,6 +196,9 @@ run "vectors.bin of another format version: exit 3" 3 'v2.bin' -- "$H" stream v2
 "$E" vectors "$SVG/stress_pixi_bowtie.svg" -o hex --size 32x24 --formats hex >/dev/null 2>&1
 run "a hex file: exit 3, asks for vectors.bin" 3 'not a binary vector stream' -- \
     "$H" stream hex/cmd.stim.hex "${SIM[@]}"
+# the .bin test at its boundary: a file named just ".bin" (4 characters) is a vector stream too
+cp small/vectors.bin .bin
+run "a vectors file named .bin: taken, PASS" 0 'check: PASS: 6 comparisons' -- "$H" verify .bin "${SIM[@]}" --results dotbin
 "$E" vectors "$SVG/stress_pixi_bowtie.svg" -o nocmd --size 32x24 --formats bin --interfaces pix >/dev/null 2>&1
 run "vectors.bin without cmd: exit 3" 3 'records no cmd' -- "$H" stream nocmd/vectors.bin "${SIM[@]}"
 : >blocker
@@ -208,6 +239,48 @@ grep -Eq 'no board found|^usb ' out.txt && ok "list says what it found" || bad "
 run "--version names every transport" 0 '' -- "$H" --version
 grep -q '^  usb ' out.txt && grep -q '^  gpio ' out.txt && grep -q '^  sim ' out.txt && ok "--version lists transports" ||
     bad "--version" "$(cat out.txt)"
+
+# ------------------------------------------------------ 5. identify, and --save for gen --dut-file
+# le32 FILE OFFSET: a little-endian 32-bit field of a file, read by od (not the host's code)
+le32() { od -An -tu4 -j "$2" -N4 --endian=little "$1" | tr -d ' '; }
+run "identify over sim --save: exit 0" 0 'wrote id.bin .*edgeflag gen --dut-file id.bin' -- \
+    "$H" identify "${SIM[@]}" --save id.bin
+if grep -q '^sim: serial EFSIM0001, protocol 1, samples 8/16/32, canvas up to 16384x16384, 4194304 edges' out.txt &&
+   [ "$(wc -c <id.bin)" = 48 ] && [ "$(head -c 4 id.bin)" = EFB1 ] &&
+   [ "$(le32 id.bin 16)/$(le32 id.bin 20)/$(le32 id.bin 24)/$(le32 id.bin 28)" = 56/16384/16384/4194304 ]; then
+    ok "identify prints the record decoded; id.bin is its 48 bytes (od: samples 0x38, 16384x16384, 4194304 edges)"
+else
+    bad "identify --save" "$(cat out.txt) / $(od -An -tx1 id.bin | head -n 3 | tr '\n' ' ')"
+fi
+"$E" gen --list >gen_plain.tsv 2>&1
+"$E" gen --list --dut-file id.bin >gen_sim.tsv 2>gen_sim.err
+if [ -s gen_sim.tsv ] && [ ! -s gen_sim.err ] && ! grep -q 'fitted to the DUT' gen_sim.tsv && cmp -s gen_plain.tsv gen_sim.tsv; then
+    ok "edgeflag gen --dut-file on the simulated board's saved identify: its limits read, every case fits as it is"
+else
+    bad "gen --dut-file id.bin" "$(head -n 2 gen_sim.err)"
+fi
+run "identify --json" 0 '' -- "$H" identify "${SIM[@]}" --json --save id2.bin --quiet
+python3 - out.txt <<'PY' && cmp -s id.bin id2.bin && ok "identify --json: the fields as JSON, the file named; the same record saved again" || bad "identify --json" "$(cat out.txt)"
+import json, sys
+j = json.load(open(sys.argv[1]))
+assert j["transport"] == "sim" and j["serial"] == "EFSIM0001" and j["samples"] == [8, 16, 32], j
+assert (j["width_max"], j["height_max"], j["edges_max"], j["saved"]) == (16384, 16384, 4194304, "id2.bin"), j
+PY
+printf 'an older file\n' >kept.bin
+run "identify from another device (no magic): exit 6, nothing saved" 6 'did not answer identify as an edgeflag board.*nothing saved' -- \
+    "$H" identify "${SIM[@]}" --sim-faults not-ours=1 --save kept.bin
+run "identify from another protocol version: exit 6, nothing saved" 6 'protocol version 2.*nothing saved' -- \
+    "$H" identify "${SIM[@]}" --sim-faults protocol=2 --save kept.bin
+[ "$(cat kept.bin)" = "an older file" ] && ok "a refused identify leaves an existing --save file as it was" ||
+    bad "identify refused: the existing file was changed"
+: >notdir
+run "identify --save into a path that cannot be written: exit 4" 4 "cannot write 'notdir/id.bin'" -- \
+    "$H" identify "${SIM[@]}" --save notdir/id.bin
+run "identify --save replaces an existing file" 0 '' -- "$H" identify "${SIM[@]}" --save kept.bin --quiet
+cmp -s kept.bin id.bin && [ -z "$(find . -maxdepth 1 -name '.kept.bin.*')" ] && ok "replaced whole, no temporary left" ||
+    bad "identify --save over an existing file"
+run "--save with another command: usage error" 2 "save is identify's" -- "$H" stream small/vectors.bin "${SIM[@]}" --save x.bin
+run "identify takes no file: usage error" 2 'identify takes no file' -- "$H" identify small/vectors.bin "${SIM[@]}"
 
 echo "$pass passed, $fail failed"
 [ $fail = 0 ]

@@ -5,10 +5,20 @@
  * own answers to the control frames (identify, status, reset in the byte
  * stream) are tested end to end through edgeflag-host's socket transport.
  *
- * usage: sockboard PATH [CUT]   (serves one connection at a time until killed;
- * the run outlives a connection, as a board's does).  CUT > 0 closes the first
- * connection once CUT bytes have come from the host, in the middle of a frame
- * when CUT falls there: a board that went away mid-stream, for --resume.
+ * usage: sockboard [--hang-dut] PATH [CUT]   (serves one connection at a time
+ * until killed; the run outlives a connection, as a board's does).  CUT > 0
+ * closes the first connection once CUT bytes have come from the host, in the
+ * middle of a frame when CUT falls there: a board that went away mid-stream,
+ * for --resume.  --hang-dut: the DUT never returns from its first command (a
+ * CPU loop inside the engine, as a mutant of board/ef_board.c that spins has;
+ * tests/mutants/c-mutants.sh runs those), for the test of the signals.
+ *
+ * SIGTERM and SIGINT end it at once, whatever it is doing (idle in poll or
+ * spinning in the engine): the handler removes the socket file, so no stale
+ * one is left for the next board, and the process dies of the signal (exit
+ * status 143 or 130 in a shell, as docs/cli.md says the project's programs
+ * do).  It holds nothing else that outlives it: the board's run is in memory
+ * only, as a board's is across a power cycle.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
@@ -23,13 +33,28 @@
 
 #include "ef_board.h"
 
-static volatile sig_atomic_t stop;
 static unsigned long long cut; /* bytes from the host until the connection is cut (0: never) */
+static char sock_path[sizeof((struct sockaddr_un *)0)->sun_path];
 
+/* SIGTERM, SIGINT: async-signal-safe calls only.  The handler was installed
+ * with SA_RESETHAND, so the signal raised here (blocked until the handler
+ * returns) takes the default action: the process dies of it. */
 static void on_term(int sig)
 {
-    (void)sig;
-    stop = 1;
+    if (sock_path[0])
+        unlink(sock_path);
+    raise(sig);
+}
+
+/* --hang-dut: the C model's DUT with a push that never returns. */
+static int hang_push(void *self, const uint8_t cmd[EF_PROTO_CMD_BYTES])
+{
+    volatile int spin = 1;
+    (void)self;
+    (void)cmd;
+    while (spin)
+        ;
+    return 0;
 }
 
 /* Moves bytes both ways until the connection ends. */
@@ -37,7 +62,7 @@ static void serve(ef_board *b, int fd)
 {
     static uint8_t in[1 << 16], out[1 << 16];
     size_t out_len = 0, out_pos = 0;
-    while (!stop) {
+    for (;;) {
         if (out_pos == out_len) {
             out_pos = 0;
             out_len = ef_board_tx(b, out, sizeof out);
@@ -76,14 +101,19 @@ static void serve(ef_board *b, int fd)
 int main(int argc, char **argv)
 {
     struct sockaddr_un a = { .sun_family = AF_UNIX };
+    const int hang = argc > 1 && strcmp(argv[1], "--hang-dut") == 0;
+    argc -= hang, argv += hang;
     if (argc < 2 || argc > 3 || strlen(argv[1]) >= sizeof a.sun_path) {
-        fprintf(stderr, "usage: sockboard PATH [CUT]\n");
+        fprintf(stderr, "usage: sockboard [--hang-dut] PATH [CUT]\n");
         return 2;
     }
     if (argc == 3)
         cut = strtoull(argv[2], NULL, 10);
     strcpy(a.sun_path, argv[1]);
-    const struct sigaction sa = { .sa_handler = on_term };
+    struct sigaction sa = { .sa_handler = on_term, .sa_flags = SA_RESETHAND };
+    sigemptyset(&sa.sa_mask);
+    sigaddset(&sa.sa_mask, SIGTERM); /* one handler at a time: the first signal wins */
+    sigaddset(&sa.sa_mask, SIGINT);
     sigaction(SIGTERM, &sa, NULL);
     sigaction(SIGINT, &sa, NULL);
     const ef_proto_info info = { "EFSOCK0001",
@@ -94,20 +124,20 @@ int main(int argc, char **argv)
                                  1u << 22,
                                  16,
                                  (1u << 7) - 1 };
-    ef_board *b = ef_board_new(&info, ef_board_dut_model());
+    ef_board_dut dut = ef_board_dut_model();
+    if (hang)
+        dut.push = hang_push;
+    ef_board *b = ef_board_new(&info, dut);
     const int ls = socket(AF_UNIX, SOCK_STREAM, 0);
     unlink(a.sun_path);
     if (!b || ls < 0 || bind(ls, (struct sockaddr *)&a, sizeof a) < 0 || listen(ls, 4) < 0) {
         fprintf(stderr, "sockboard: %s: %s\n", a.sun_path, strerror(errno));
         return 1;
     }
-    while (!stop) {
+    memcpy(sock_path, a.sun_path, sizeof sock_path); /* ours now: the handler removes it */
+    for (;;) {
         const int fd = accept(ls, NULL, NULL);
         if (fd >= 0)
             serve(b, fd);
     }
-    close(ls);
-    unlink(a.sun_path);
-    ef_board_free(b);
-    return 0;
 }

@@ -11,7 +11,10 @@
 #      then --resume: exit 0 and byte-identical results), a reset (6), another protocol
 #      version and another device (6), a board that never answers identify (5);
 #   3. nobody listening (exit 7 naming the address), a malformed --connect (2);
-#   4. bench --transport socket against pyboard and against the engine (numbers printed).
+#   4. bench --transport socket against pyboard and against the engine (numbers printed);
+#   and identify --save from the engine and from a pyboard of small limits, whose saved record
+#   `edgeflag gen --dut-file` fits and refuses by as the same limits given as flags; SIGTERM
+#   to the engine spinning in its DUT and SIGINT to it idle: it dies of the signal at once.
 # Recovery is asserted by how it happened (the host's NAK, retransmission and timeout counts,
 # the board's gap, damage, duplicate and resend counters), never by how fast: every run that must
 # not time out gets a generous --timeout (tests/host/waits.sh, EF_TEST_TIMEOUT_SCALE), and only the
@@ -117,6 +120,13 @@ run "verify the tiger over unix: (40 commands a frame): PASS" 0 'check: PASS: 6 
 same "unix: results identical to the simulated board's" r0/vectors.actual.bin
 how "clean run: the board took every frame once, no NAK, one reset; the host sent nothing again, no timeout" \
     '[ "$(bstat dup)/$(bstat gap)/$(bstat bad)/$(bstat naks)/$(bstat resets)/$(hstat retransmits)/$(hstat timeouts)" = 0/0/0/0/1/0/0 ]'
+# a board that takes at most 4 KiB of DATA (identify's capabilities, docs/board.md 3.1): the host's
+# frames of its default size are cut to fit, to the most whole commands that fit (315: 4,095 bytes)
+board --unix b.sock --vectors tiger/vectors.bin --data-kib 4
+run "verify the tiger on a board of 4 KiB DATA payloads: PASS" 0 'check: PASS: 6 comparisons' -- \
+    "$H" verify tiger/vectors.bin --transport socket --connect "$SOCK" --timeout "$EF_LINK_MS" --results rk --json
+same "4 KiB DATA payloads: results identical to the simulated board's" rk/vectors.actual.bin
+how "4 KiB DATA payloads: the largest DATA the board took is 315 commands (4,095 bytes)" '[ "$(bstat data_max)" = 4095 ]'
 board --tcp 0 --vectors tiger/vectors.bin
 run "verify the tiger over tcp:127.0.0.1:PORT: PASS" 0 'check: PASS: 6 comparisons' -- \
     "$H" verify tiger/vectors.bin "${LINK[@]}" --connect "tcp:127.0.0.1:$port" --results r1 --json
@@ -157,9 +167,64 @@ if [ -x "$SB" ]; then
     else
         bad "tests/board/probe.py against the engine" "$(grep -v '^ok - ' probe.txt | head -n 5 | tr '\n' ' ')"
     fi
+    run "identify --save over a socket, from the engine: exit 0" 0 '' -- \
+        "$H" identify --transport socket --connect "unix:$tmp/e.sock" --save eng.bin --timeout "$EF_LINK_MS"
+    if grep -q '^socket: serial EFSOCK0001, protocol 1, samples 8/16/32, canvas up to 16384x16384' out.txt &&
+       [ "$(wc -c <eng.bin)" = 48 ] && [ "$(head -c 10 eng.bin | tail -c 6 | od -An -tx1 | tr -d ' ')" = 010010000f00 ]; then
+        ok "the engine's identify over the socket's control frame: decoded, saved whole (48 bytes)"
+    else
+        bad "identify from the engine" "$(cat out.txt)"
+    fi
     stop_board
+    # SIGTERM while the engine spins (sockboard --hang-dut: its DUT never returns from the first
+    # command, as a mutant of the engine that loops forever; c-mutants.sh runs those): the board
+    # must die of the signal at once and leave no socket file; SIGINT when idle the same.
+    # died PID: waits up to 5 s for PID to end; its exit status in $drc ("" if it did not end)
+    died() { local i; drc=; for ((i = 0; i < 50; i++)); do kill -0 "$1" 2>/dev/null || { wait "$1"; drc=$?; return 0; }; sleep 0.1; done; return 1; }
+    rm -f h.sock
+    "$SB" --hang-dut "$tmp/h.sock" 2>hang.err &
+    bpid=$!
+    listening h.sock
+    "$H" stream small/vectors.bin --transport socket --connect "unix:$tmp/h.sock" --timeout 300 --results rh >hang.out 2>&1
+    hrc=$?
+    spin=$(ps -o stat= -p "$bpid" | cut -c1)
+    kill -TERM "$bpid"
+    if died "$bpid" && [ "$hrc" = 5 ] && [ "$spin" = R ] && [ "$drc" = 143 ] && [ ! -e h.sock ]; then
+        ok "SIGTERM while the engine spins in its DUT (the host gave up: exit 5): the board died of it (143) at once, its socket file removed"
+    else
+        bad "SIGTERM to a spinning board" "host exit $hrc, board state '$spin', board exit '${drc}' ($(kill -0 "$bpid" 2>/dev/null && echo still running)), socket $(ls h.sock 2>/dev/null || echo gone)"
+        kill -9 "$bpid" 2>/dev/null
+    fi
+    bpid=
+    rm -f h.sock
+    "$SB" "$tmp/h.sock" 2>hang.err &
+    bpid=$!
+    listening h.sock
+    kill -INT "$bpid"
+    if died "$bpid" && [ "$drc" = 130 ] && [ ! -e h.sock ]; then
+        ok "SIGINT to an idle board: died of it (130), its socket file removed"
+    else
+        bad "SIGINT to an idle board" "exit '${drc}', socket $(ls h.sock 2>/dev/null || echo gone)"
+        kill -9 "$bpid" 2>/dev/null
+    fi
+    bpid=
 else
     bad "sockboard not built" "$SB"
+fi
+# A board with small limits (pyboard, written from docs/board.md alone: 64x64, 200 edges, and the
+# one sample count of its vectors, 16): identify --save, then gen --dut-file on the saved record
+# fits and refuses exactly as the same limits given as flags do, neither nothing nor everything.
+board --unix b.sock --vectors small/vectors.bin --limits 64,64,200
+run "identify --save from a board of 64x64, 200 edges, 16 samples" 0 '' -- \
+    "$H" identify --transport socket --connect "$SOCK" --save small_board.bin --timeout "$EF_LINK_MS"
+"$E" gen --list --dut-file small_board.bin >gf.tsv 2>gf.err
+"$E" gen --list --dut-limits 64x64 --dut-edges 200 --dut-samples 16 >gl.tsv 2>gl.err
+nfit=$(grep -c 'fitted to the DUT' gf.tsv) nref=$(grep -c "refused by the DUT's limits" gf.err)
+if grep -q 'samples 16, canvas up to 64x64, 200 edges' out.txt && cmp -s gf.tsv gl.tsv && cmp -s gf.err gl.err &&
+   [ "$nfit" -gt 0 ] && [ "$nref" -gt 0 ]; then
+    ok "gen --dut-file on that board's saved identify: $nfit cases fitted and $nref refused, exactly as --dut-limits 64x64 --dut-edges 200 --dut-samples 16"
+else
+    bad "gen --dut-file on pyboard's identify" "fitted $nfit, refused $nref; $(cat out.txt; head -n 2 gf.err)"
 fi
 
 # ------------------------------------------------------------------ 2. faults

@@ -17,6 +17,14 @@
 #      `edgeflag check` (--cycles; --transactions under back-pressure);
 #   5. stage "regression": the survivors run every `edgeflag gen` level-1
 #      case that fits the build (NS and rule rotating per case);
+#   4b/5b. the fast configuration (ef_raster SCHEDULE=1 with ef_slb_fill
+#      SKIP=1 and the span queue ef_spanq, docs/microarch.md section 6) is a
+#      fourth build (NS 8, tb_raster's EF_FAST): its cases (make rtl-test's
+#      fast slice: every NS 8 case of stage 4 against `edgeflag vectors
+#      --schedule overlap`, the tiger under back-pressure, and the tiger at
+#      W_MAX x H_MAX) join stage 4, and the NS 8 level-1 cases in the overlap
+#      schedule join stage 5, so a mutant of code only the overlap schedule
+#      runs (the skipping scan, the queue) meets a case that runs it;
 #   6. the report: per block (file), mutants, killed by each stage,
 #      equivalent (dv/mutants/equivalent.tsv: key and reason, reviewed like
 #      code), survivors listed with file:line, operator and text.
@@ -36,6 +44,8 @@
 #   EF_MUT_FILES=LIST only these rtl/ files (comma-separated, e.g. ef_plot.v)
 #   EF_MUT_REGRESS=0  skip stage 5;  EF_MUT_JOBS (2);  EF_MUT_TIMEOUT (s, 30, plus a second per 10,000 cycles of the case)
 #   EF_MUT_NS="8 16 32" the builds (cases of other NS are left out)
+#   EF_MUT_FAST=0     leave the fast configuration out (default: in, when rtl/
+#                     has it: ef_spanq.v and ef_raster's SCHEDULE parameter)
 #   EF_MUT_GEN_SLICE (11: stage 4's gen slice);  EF_MUT_SVGS (all: a count)
 #   EF_MUT_SIM=icarus Icarus instead of Verilator (the slice in make test: it
 #                     compiles in seconds); EF_MUT_MAXCYC leaves out cases of
@@ -81,51 +91,61 @@ pass=0 fail=0
 
 # ------------------------------------------------------------ 1. schemata
 files=(ef_raster.v ef_dec.v ef_setup.v ef_div.v ef_etm.v ef_aet.v ef_plot.v ef_slb_fill.v ef_slb_ram.v ef_cov.v)
+# the fast configuration: rtl/'s ef_raster with SCHEDULE = 1, and the span queue (only it has one)
+fastf=()
+if [ "${EF_MUT_FAST:-1}" = 1 ] && [ -f "$root/rtl/ef_spanq.v" ] && grep -q 'parameter *SCHEDULE' "$root/rtl/ef_raster.v"; then
+    fastf=(ef_spanq.v)
+fi
 # an RTL variant (dv/rtl-variant.sh: a copy of rtl/ with its include files), whose .v files
 # rtl_mutate.py then replaces by their schemata in place
 bash "$root/dv/rtl-variant.sh" "$work/mut" >/dev/null || { echo "FAIL rtl-mutants: dv/rtl-variant.sh"; echo "0 passed, 1 failed"; exit 1; }
 mkdir -p "$work/orig" && cp "$work/mut"/*.v "$work/mut"/*.vh "$work/orig/"   # the sources as mutated, for the report
 # and the n-rooks table, a function included in ef_plot's body
-nall=$(python3 "$root/dv/mutants/rtl_mutate.py" "$work/mut" "${files[@]/#/$work/mut/}" "$work/mut/ef_rooks.vh") ||
+nall=$(python3 "$root/dv/mutants/rtl_mutate.py" "$work/mut" "${files[@]/#/$work/mut/}" "${fastf[@]/#/$work/mut/}" "$work/mut/ef_rooks.vh") ||
     { echo "0 passed, 1 failed"; exit 1; }
 MUTRTL=("${files[@]/#/$work/mut/}")
+MUTFAST=("${MUTRTL[@]}" "${fastf[@]/#/$work/mut/}")
 
 # ------------------------------------------------------------ 2. builds
-buildone() {
+buildone() {   # buildone KEY: NS, or fNS for the fast configuration at NS
     { [ -x "$work/vl_$1/Vtb_raster" ] || [ -f "$work/vl_$1/t.vvp" ]; } && [ -n "${EF_MUT_REUSE:-}" ] && return 0
+    local ns=${1#f} def=() src=("${MUTRTL[@]}")
+    [ "$1" != "$ns" ] && { def=(-DEF_FAST); src=("${MUTFAST[@]}"); }
     if [ "$sim" = icarus ]; then
         mkdir -p "$work/vl_$1"
-        iverilog -g2005 -I"$work/mut" -o "$work/vl_$1/t.vvp" -Ptb_raster.NS="$1" -Ptb_raster.W_MAX=$WM -Ptb_raster.H_MAX=$HM \
-            -Ptb_raster.E_MAX=$EM -Ptb_raster.FB_BITS=16 "$root/dv/tb/tb_raster.v" "${MUTRTL[@]}" >"$work/build_$1.log" 2>&1 ||
+        iverilog -g2005 -I"$work/mut" -I"$root/dv/tb" "${def[@]}" -o "$work/vl_$1/t.vvp" -Ptb_raster.NS="$ns" -Ptb_raster.W_MAX=$WM -Ptb_raster.H_MAX=$HM \
+            -Ptb_raster.E_MAX=$EM -Ptb_raster.FB_BITS=16 "$root/dv/tb/tb_raster.v" "${src[@]}" >"$work/build_$1.log" 2>&1 ||
             { tail -20 "$work/build_$1.log"; return 1; }
         return
     fi
-    verilator --binary --timing -O1 -Wno-fatal -Wno-WIDTH -I"$work/mut" --x-assign unique --x-initial unique --Mdir "$work/vl_$1" --top-module tb_raster \
-        -GNS="$1" -GW_MAX=$WM -GH_MAX=$HM -GE_MAX=$EM -GFB_BITS=16 "$root/dv/tb/tb_raster.v" "${MUTRTL[@]}" \
+    verilator --binary --timing -O1 -Wno-fatal -Wno-WIDTH -I"$work/mut" -I"$root/dv/tb" "${def[@]}" --x-assign unique --x-initial unique --Mdir "$work/vl_$1" --top-module tb_raster \
+        -GNS="$ns" -GW_MAX=$WM -GH_MAX=$HM -GE_MAX=$EM -GFB_BITS=16 "$root/dv/tb/tb_raster.v" "${src[@]}" \
         >"$work/build_$1.log" 2>&1 || { tail -20 "$work/build_$1.log"; return 1; }
 }
 # dv/tb/tb_err.v (make rtl-test's DUT limit checks) on the schemata, under Icarus in either mode
 # (as rtl-test runs it; it compiles in a second)
 builderr() {
     [ -f "$work/err.vvp" ] && [ -n "${EF_MUT_REUSE:-}" ] && return 0
-    iverilog -g2005 -I"$work/mut" -o "$work/err.vvp" "$root/dv/tb/tb_err.v" "${MUTRTL[@]}" >"$work/build_err.log" 2>&1 ||
+    iverilog -g2005 -I"$work/mut" -I"$root/dv/tb" -o "$work/err.vvp" "$root/dv/tb/tb_err.v" "${MUTRTL[@]}" >"$work/build_err.log" 2>&1 ||
         { tail -20 "$work/build_err.log"; return 1; }
 }
 pids=()
 builderr & pids+=($!)
-for ns in $nslist; do buildone "$ns" & pids+=($!); done
+fastkeys=""
+[ ${#fastf[@]} -gt 0 ] && case " $nslist " in *" 8 "*) fastkeys=f8 ;; esac
+for ns in $nslist $fastkeys; do buildone "$ns" & pids+=($!); done
 for p in "${pids[@]}"; do wait "$p" || { echo "FAIL rtl-mutants: Verilator did not build the schemata"; echo "0 passed, 1 failed"; exit 1; }; done
-echo "rtl-mutants: $nall mutants in $(( $(echo "${files[@]}" | wc -w) + 1 )) files; schemata built ($sim) at NS $nslist in $(( $(date +%s) - t0 )) s"
+echo "rtl-mutants: $nall mutants in $(( ${#files[@]} + ${#fastf[@]} + 1 )) files; schemata built ($sim) at NS $nslist${fastkeys:+ and the fast configuration at NS 8} in $(( $(date +%s) - t0 )) s"
 
 # ------------------------------------------------------------ 3. cases
 [ -f "$work/gen/index.tsv" ] || "$EF" gen -o "$work/gen" >/dev/null 2>&1 || { echo "FAIL rtl-mutants: edgeflag gen"; echo "0 passed, 1 failed"; exit 1; }
 mkdir -p "$work/vec"
 rules=(scene nonzero evenodd)
-mkcase() {   # mkcase STAGE NAME INPUT NS RULE SIZE [BP]
-    local d=$work/vec/$2 args=() w h me cyc
-    case " $nslist " in *" $4 "*) ;; *) return ;; esac
-    [ "$5" != scene ] && args+=(--rule "$5"); [ "$6" != - ] && args+=(--size "$6")
-    [ -f "$d/manifest.json" ] || "$EF" vectors "$3" -o "$d" --samples "$4" "${args[@]}" --formats hex >/dev/null 2>&1 || return
+mkcase() {   # mkcase STAGE NAME INPUT KEY RULE SIZE [BP]  (KEY: NS, or fNS: the fast configuration)
+    local d=$work/vec/$2 args=() w h me cyc ns=${4#f}
+    case " $nslist $fastkeys " in *" $4 "*) ;; *) return ;; esac
+    [ "$5" != scene ] && args+=(--rule "$5"); [ "$6" != - ] && args+=(--size "$6"); [ "$4" != "$ns" ] && args+=(--schedule overlap)
+    [ -f "$d/manifest.json" ] || "$EF" vectors "$3" -o "$d" --samples "$ns" "${args[@]}" --formats hex >/dev/null 2>&1 || return
     read -r w h <<<"$(sed -n 's/.*; size \([0-9]*\)x\([0-9]*\);.*/\1 \2/p' "$d/cmd.stim.hex" | head -n 1)"
     if [ "$w" -gt $WM ] || [ "$h" -gt $HM ]; then rm -rf "$d"; return; fi
     me=$(awk '!/^\/\// && NF { op = substr($1, 13, 1); if (op == "2") n = 0; if (op == "3" && ++n > m) m = n } END { print m + 0 }' "$d/cmd.stim.hex")
@@ -140,15 +160,18 @@ mkcase() {   # mkcase STAGE NAME INPUT NS RULE SIZE [BP]
     for f in "$root"/tests/data/svg/*.svg; do
         [ -n "${EF_MUT_SVGS:-}" ] && [ $nsv -ge "$EF_MUT_SVGS" ] && break
         mkcase t "svg_$(basename "$f" .svg)" "$f" $((8 << (k % 3))) "${rules[$(( (k / 3) % 3 ))]}" "${EF_MUT_SVG_SIZE:-24x18}"
+        [ $((k % 3)) = 0 ] && mkcase t "fast_svg_$(basename "$f" .svg)" "$f" f8 "${rules[$(( (k / 3) % 3 ))]}" "${EF_MUT_SVG_SIZE:-24x18}"
         k=$((k + 1)) nsv=$((nsv + 1))
     done
     while IFS=$'\t' read -r num file _ _ name _; do
         case $name in canvas-max*|zigzag-4096|same-cell-4096) continue ;; esac
         if [ $((num % gslice)) = 0 ]; then
             mkcase t "gen_$num" "$work/gen/$file" $((8 << (k % 3))) "${rules[$(( (k / 3) % 3 ))]}" -
+            [ $((k % 3)) = 0 ] && mkcase t "fast_gen_$num" "$work/gen/$file" f8 "${rules[$(( (k / 3) % 3 ))]}" -
             k=$((k + 1))
         elif [ "${EF_MUT_REGRESS:-1}" = 1 ]; then
             mkcase r "reg_$num" "$work/gen/$file" $((8 << (num % 3))) "${rules[$(( (num / 3) % 3 ))]}" -
+            [ $((num % 3)) = 0 ] && mkcase r "fast_reg_$num" "$work/gen/$file" f8 "${rules[$(( (num / 3) % 3 ))]}" -
         fi
     done < <(tail -n +3 "$work/gen/index.tsv")
     echo "t 0 tb_err 8 -"     # the DUT's limit checks (dv/tb/tb_err.v), first: it takes a second
@@ -157,10 +180,15 @@ mkcase() {   # mkcase STAGE NAME INPUT NS RULE SIZE [BP]
     # filling the build's W_MAX x H_MAX, a FRAME of exactly the largest canvas, rows past 64
     # for AET's occupancy search and enough edges to wrap its ring
     case " $nslist " in *" 8 "*) [ "$maxcyc" = 0 ] && mkcase t max_tiger "$root/tests/data/svg/tiger.svg" 8 scene "${WM}x$HM" ;; esac
+    # the fast configuration's: the tiger under back-pressure (as make rtl-test), at W_MAX x H_MAX
+    if [ -n "$fastkeys" ]; then
+        mkcase t fast_bp_tiger "$root/tests/data/svg/tiger.svg" f8 scene 24x18 424242
+        [ "$maxcyc" = 0 ] && mkcase t fast_max_tiger "$root/tests/data/svg/tiger.svg" f8 scene "${WM}x$HM"
+    fi
 } >"$work/cases.all"
 sort -k1,1 -k2,2n "$work/cases.all" >"$work/cases.txt"
 nt=$(grep -c '^t ' "$work/cases.txt"); nr=$(grep -c '^r ' "$work/cases.txt")
-echo "rtl-mutants: stage rtl-test: $nt cases; stage regression: $nr level-1 cases (those fitting ${WM}x$HM, $EM edges and $regmax cycles)"
+echo "rtl-mutants: stage rtl-test: $nt cases ($(grep -c '^t [0-9]* fast_' "$work/cases.txt") of the fast configuration); stage regression: $nr level-1 cases ($(grep -c '^r [0-9]* fast_' "$work/cases.txt") of the fast configuration; those fitting ${WM}x$HM, $EM edges and $regmax cycles)"
 
 # runmut K STAGE: "K killed CASE" at the first case that fails, else "K survived"
 runmut() {

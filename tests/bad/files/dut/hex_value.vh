@@ -1,0 +1,2 @@
+`define W_MAX 0x800
+`define H_MAX 1024

@@ -1,0 +1,2 @@
+#define EF_W_MAX 2048
+#define EF_H_MAX 99999999999

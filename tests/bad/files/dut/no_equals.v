@@ -1,0 +1,1 @@
+parameter W_MAX 10

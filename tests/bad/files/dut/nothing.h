@@ -1,0 +1,2 @@
+/* nothing of ours */
+int x = 1;

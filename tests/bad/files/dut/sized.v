@@ -1,0 +1,2 @@
+  parameter W_MAX = 32'd100,
+  parameter H_MAX = 100

@@ -1,0 +1,2 @@
+#define W_MAX (2048
+#define H_MAX 5

@@ -1,0 +1,2 @@
+#define W_MAX 10
+#define H_MAX 0
