@@ -136,7 +136,7 @@ done
 # last at 100 % with all 30
 if command -v script >/dev/null; then
     timeout "$EF_GUARD_S" script -qfec "'$H' verify big/vectors.bin --transport sim --timeout $EF_LINK_MS --frame-cmds 10 --interfaces pix --results pb" \
-        /dev/null >tty.txt 2>&1
+        /dev/null </dev/null >tty.txt 2>&1
     prc=$?
     tr '\r' '\n' <tty.txt | awk -v rc=$prc '
         /^\[[#.]+\] +[0-9]+%/ { n++; bar = substr($0, 2, 30); h = gsub(/#/, "", bar); p = $2 + 0
