@@ -65,7 +65,7 @@ RTL=("${files[@]/#/$root/rtl/}")
 # ------------------------------------------------------------ 1. builds
 buildone() {
     [ -n "${EF_COV_REUSE:-}" ] && [ -x "$work/vl_$1/Vtb_raster" ] && return 0
-    verilator --cc --exe --build --timing -O1 -Wno-fatal -Wno-WIDTH -I"$root/rtl" --coverage --Mdir "$work/vl_$1" \
+    verilator --cc --exe --build --timing -O1 -Wno-fatal -Wno-WIDTH -I"$root/rtl" -I"$root/dv/tb" --coverage --Mdir "$work/vl_$1" \
         --top-module tb_raster -GNS="$1" -GW_MAX=$WM -GH_MAX=$HM -GE_MAX=$EM -GFB_BITS=16 \
         "$root/dv/tb/tb_raster.v" "${RTL[@]}" "$root/dv/coverage/vl_cov_main.cpp" >"$work/build_$1.log" 2>&1 ||
         { tail -20 "$work/build_$1.log"; return 1; }
@@ -75,7 +75,7 @@ buildone() {
 # class name vl_cov_main.cpp runs
 builderr() {
     [ -n "${EF_COV_REUSE:-}" ] && [ -x "$work/vl_err/Vtb_raster" ] && return 0
-    verilator --cc --exe --build --timing -O1 -Wno-fatal -Wno-WIDTH -I"$root/rtl" --coverage --Mdir "$work/vl_err" \
+    verilator --cc --exe --build --timing -O1 -Wno-fatal -Wno-WIDTH -I"$root/rtl" -I"$root/dv/tb" --coverage --Mdir "$work/vl_err" \
         --top-module tb_err --prefix Vtb_raster "$root/dv/tb/tb_err.v" "${RTL[@]}" "$root/dv/coverage/vl_cov_main.cpp" \
         >"$work/build_err.log" 2>&1 || { tail -20 "$work/build_err.log"; return 1; }
 }
