@@ -64,12 +64,6 @@ for v in small holes tiger; do
         "$H" verify $v/vectors.bin "${SIM[@]}"
 done
 cp tiger/board/vectors.actual.bin clean.bin
-# the default --timeout (2,000 ms, docs/board.md 7, --help) when none is given: a small run needs no timeout and
-# sends nothing again
-run "verify small with the default --timeout: PASS" 0 'check: PASS: 6 comparisons' -- \
-    "$H" verify small/vectors.bin --transport sim --results dflt --json
-[ "$(json timeouts)" = 0 ] && [ "$(json retransmits)" = 0 ] && ok "the default --timeout: no timeout, nothing sent again" ||
-    bad "the default --timeout" "$(cat out.txt)"
 run "stream: results in the default folder, summary line" 0 'commands in .* frames .* result records \(pix\)' -- \
     "$H" stream small/vectors.bin "${SIM[@]}"
 [ -s small/board/vectors.actual.bin ] && [ ! -e small/board/.resume ] && [ ! -e small/board/.results.part ] &&
