@@ -49,6 +49,7 @@ typedef struct rframe { /* a numbered board -> host frame */
 typedef struct hframe { /* a host frame received in order, not yet taken whole */
     uint8_t type;
     uint32_t len, off; /* payload bytes, and those already given to the DUT */
+    uint32_t crc;      /* the payload's CRC-32 */
     uint8_t *payload;
 } hframe;
 
@@ -59,7 +60,8 @@ struct ef_board {
 
     uint8_t *rx; /* received bytes not yet parsed */
     size_t rx_len, rx_cap;
-    int nak_pending; /* a NAK was sent for rx_seq; no more until progress */
+    ef_frame_part rx_part; /* the payload CRC so far of the frame begun at rx[0] */
+    int nak_pending;       /* a NAK was sent for rx_seq; no more until progress */
     /* frames received in order (rx_seq counts them) and not yet taken whole,
      * because the result queue was full or the DUT busy: ack_seq .. rx_seq-1 */
     hframe *held;
@@ -85,6 +87,10 @@ struct ef_board {
      * so far and the current window's CRC-32 and count */
     uint32_t run_flags, dg_n;
     uint64_t dg_total[EF_PROTO_IFACES];
+    /* the window of each interface's last transaction, (dg_total - 1) / dg_n, and
+     * its place in it, counted (no division per transaction) */
+    uint64_t dg_win[EF_PROTO_IFACES];
+    uint32_t dg_pos[EF_PROTO_IFACES];
     uint32_t dg_crc[EF_PROTO_IFACES], dg_cnt[EF_PROTO_IFACES];
     uint32_t *sel, nsel; /* select: interface << 24 | window, ascending */
     ef_board_stats st;
@@ -225,7 +231,7 @@ static int digest_out(ef_board *b, unsigned i)
     uint8_t d[EF_PROTO_DIGEST_LEN];
     d[0] = (uint8_t)i;
     d[1] = EF_PROTO_DIGEST_MARK;
-    ef_put32(d + 2, (uint32_t)((b->dg_total[i] - 1) / b->dg_n));
+    ef_put32(d + 2, (uint32_t)b->dg_win[i]);
     ef_put32(d + 6, b->dg_cnt[i]);
     ef_put32(d + 10, b->dg_crc[i]);
     b->dg_cnt[i] = b->dg_crc[i] = 0;
@@ -256,9 +262,10 @@ int ef_board_emit(ef_board *b, const uint8_t *record, size_t len)
     b->st.records++;
     if (b->run_flags) {
         const unsigned i = record[0] % EF_PROTO_IFACES;
-        const uint64_t k = b->dg_total[i]++;
+        if (b->dg_total[i]++ && ++b->dg_pos[i] == b->dg_n) /* this one's window: dg_total / dg_n before */
+            b->dg_pos[i] = 0, b->dg_win[i]++;
         if (b->run_flags & EF_START_SELECT) {
-            if (!selected(b, i, k / b->dg_n))
+            if (!selected(b, i, b->dg_win[i]))
                 return 0;
         } else {
             b->dg_crc[i] = ef_frame_crc32(b->dg_crc[i], record, len);
@@ -369,7 +376,7 @@ void ef_board_set_result_queue(ef_board *b, uint32_t frames) { b->queue_max = fr
 /* A DATA frame's commands from *off on to the DUT.  Returns 1 when the frame
  * is taken whole, 0 when it stopped (the result queue full, or the DUT busy:
  * the rest waits, *off says where). */
-static int run_data(ef_board *b, const uint8_t *payload, uint32_t len, uint32_t *off)
+static int run_data(ef_board *b, const uint8_t *payload, uint32_t len, uint32_t crc, uint32_t *off)
 {
     switch (b->mode) {
     case EF_MODE_SINK:
@@ -391,7 +398,7 @@ static int run_data(ef_board *b, const uint8_t *payload, uint32_t len, uint32_t 
                 break;
         }
     }
-    b->st.input_crc = ef_frame_crc32(b->st.input_crc, payload, len);
+    b->st.input_crc = ef_frame_crc32_combine(b->st.input_crc, crc, len); /* (the parse read the payload) */
     return 1;
 }
 
@@ -492,7 +499,7 @@ static int hold(ef_board *b, const ef_frame *f, uint32_t off)
     if (!h->payload)
         return -1;
     memcpy(h->payload, f->payload, f->len);
-    h->type = f->type, h->len = f->len, h->off = off;
+    h->type = f->type, h->len = f->len, h->off = off, h->crc = f->payload_crc;
     b->nheld++;
     return 0;
 }
@@ -511,7 +518,7 @@ static void service(ef_board *b)
     while (b->nheld) {
         hframe *h = &b->held[0];
         if (b->st.state == EF_BS_RUNNING &&
-            !(h->type == EF_FT_DATA ? run_data(b, h->payload, h->len, &h->off) : take_end(b)))
+            !(h->type == EF_FT_DATA ? run_data(b, h->payload, h->len, h->crc, &h->off) : take_end(b)))
             break;
         free(h->payload);
         memmove(b->held, b->held + 1, (size_t)(b->nheld - 1) * sizeof *b->held);
@@ -555,7 +562,7 @@ static void take(ef_board *b, const ef_frame *f, int *ack)
     if (f->type == EF_FT_START)
         take_start(b, f);
     else if (!b->nheld)
-        whole = f->type == EF_FT_DATA ? run_data(b, f->payload, f->len, &off) : take_end(b);
+        whole = f->type == EF_FT_DATA ? run_data(b, f->payload, f->len, f->payload_crc, &off) : take_end(b);
     else
         whole = 0;
     if (!whole && hold(b, f, off) != 0)
@@ -587,14 +594,19 @@ int ef_board_rx(ef_board *b, const uint8_t *buf, size_t len)
     memcpy(b->rx + b->rx_len, buf, len);
     b->rx_len += len;
 
+    /* Each byte is read once by the parse (its CRC) however many calls bring a
+     * frame: the frame at rx[0] keeps its payload CRC so far in rx_part, and
+     * the bytes left move only when frames before them were consumed. */
     size_t pos = 0;
     int ack = 0;
+    ef_frame_part part = b->rx_part;
     while (pos < b->rx_len) {
         ef_frame f;
         size_t used;
-        const int r = ef_frame_parse(b->rx + pos, b->rx_len - pos, &f, &used);
+        const int r = ef_frame_parse_part(b->rx + pos, b->rx_len - pos, &f, &used, &part);
         if (r == EF_FRAME_MORE)
             break;
+        part.crc = part.done = 0; /* the next frame's */
         if (r == EF_FRAME_BAD) {
             b->st.frames_bad++;
             send_nak(b, 0);
@@ -604,8 +616,11 @@ int ef_board_rx(ef_board *b, const uint8_t *buf, size_t len)
         take(b, &f, &ack);
         pos += used;
     }
-    memmove(b->rx, b->rx + pos, b->rx_len - pos);
-    b->rx_len -= pos;
+    if (pos) {
+        memmove(b->rx, b->rx + pos, b->rx_len - pos);
+        b->rx_len -= pos;
+    }
+    b->rx_part = part;
     if (ack)
         send_ack(b);
     service(b);
@@ -670,7 +685,7 @@ static void clear_run(ef_board *b, int keep_rx)
         free(b->res[k].bytes);
     b->res_acked = b->res_sent = b->res_next = 0;
     if (!keep_rx)
-        b->rx_len = 0;
+        b->rx_len = 0, b->rx_part.crc = b->rx_part.done = 0;
     b->tx_head = b->tx_len = b->cur_len = 0;
     b->nak_pending = 0;
     b->mode = b->iface_mask = b->samples = 0;
@@ -684,6 +699,8 @@ static void clear_run(ef_board *b, int keep_rx)
     memset(b->dg_total, 0, sizeof b->dg_total);
     memset(b->dg_crc, 0, sizeof b->dg_crc);
     memset(b->dg_cnt, 0, sizeof b->dg_cnt);
+    memset(b->dg_win, 0, sizeof b->dg_win);
+    memset(b->dg_pos, 0, sizeof b->dg_pos);
     memset(&b->st, 0, sizeof b->st);
 }
 
@@ -691,12 +708,17 @@ void ef_board_reset(ef_board *b) { clear_run(b, 0); }
 
 void ef_board_link_lost(ef_board *b)
 {
-    b->rx_len = 0;              /* a frame only partly received */
+    b->rx_len = 0; /* a frame only partly received */
+    b->rx_part.crc = b->rx_part.done = 0;
     b->tx_head = b->tx_len = 0; /* bytes queued and not sent */
     b->res_sent = b->res_acked; /* unacknowledged results go out again on the next link */
 }
 
-void ef_board_rx_idle(ef_board *b) { b->rx_len = 0; }
+void ef_board_rx_idle(ef_board *b)
+{
+    b->rx_len = 0;
+    b->rx_part.crc = b->rx_part.done = 0;
+}
 
 void ef_board_get_stats(const ef_board *b, ef_board_stats *s)
 {
@@ -717,8 +739,17 @@ ef_board *ef_board_new(const ef_proto_info *info, ef_board_dut dut)
         b->info.window = 16;
     b->dut = dut;
     b->queue_max = EF_BOARD_RESULT_QUEUE;
+    /* the buffers at their first sizes now, not in the first calls (a board's
+     * allocator may clear what it gives: its time is spent before any link talks) */
     b->cur = malloc(RESULT_PAYLOAD);
-    if (!b->cur) {
+    b->rx_cap = 2 * EF_PROTO_FRAME_MAX;
+    b->rx = malloc(b->rx_cap);
+    b->tx_cap = 65536;
+    b->tx = malloc(b->tx_cap);
+    if (!b->cur || !b->rx || !b->tx) {
+        free(b->cur);
+        free(b->rx);
+        free(b->tx);
         free(b);
         return NULL;
     }

@@ -80,11 +80,11 @@ $(shell mkdir -p $(RTL_DUT_DIR) && { [ "$$(cat $(RTL_DUT_SRC_FLAG) 2>/dev/null)"
 # Verilator's generated makefile compiles the model; its warnings on the RTL
 # are the RTL owner's (tests/rtl lints it), not fatal here.
 define rtl_dut_model
-$(RTL_DUT_DIR)/vl$(1)/Vef_rtl_dut$(1)__ALL.a: $(RTL_DUT_VSRC) $(RTL_DUT_VINC) $(RTL_DUT_SRC_FLAG) board/rtl_dut.mk
+$(RTL_DUT_DIR)/vl$(1)/Vef_rtl_dut$(1)__ALL.a: $(RTL_DUT_VSRC) $(RTL_DUT_VINC) dv/tb/ef_raster_conn.vh $(RTL_DUT_SRC_FLAG) board/rtl_dut.mk
 	@mkdir -p $(RTL_DUT_DIR)/vl$(1)
 	$(VERILATOR) --cc -O3 -Wno-fatal -Wno-lint -Wno-style --Mdir $(RTL_DUT_DIR)/vl$(1) --prefix Vef_rtl_dut$(1) \
 	    --top-module ef_rtl_dut -GNS=$(1) -GW_MAX=$(RTL_DUT_W_MAX) -GH_MAX=$(RTL_DUT_H_MAX) -GE_MAX=$(RTL_DUT_E_MAX) \
-	    -I$(RTL_DUT_SRC) $(RTL_DUT_VSRC) >$(RTL_DUT_DIR)/vl$(1)/verilator.log 2>&1 || \
+	    -I$(RTL_DUT_SRC) -Idv/tb $(RTL_DUT_VSRC) >$(RTL_DUT_DIR)/vl$(1)/verilator.log 2>&1 || \
 	    { cat $(RTL_DUT_DIR)/vl$(1)/verilator.log; exit 1; }
 	+$(MAKE) --no-print-directory -s -C $(RTL_DUT_DIR)/vl$(1) -f Vef_rtl_dut$(1).mk OPT_FAST=$(RTL_DUT_OPT) \
 	    OPT_SLOW=-O0 CXX=$(CXX) Vef_rtl_dut$(1)__ALL.a

@@ -13,6 +13,10 @@
 #   make board-gpio-test        edgeflag-host over emulated GPIO into its gateware (tests/board/gpio_cosim.sh)
 #   BOARD_GPIO=0                the SoC without the GPIO bus slave (build/board/...-nogpio)
 #   BOARD_USB=0                 the SoC without the USB device (build/board/...-nousb)
+#   BOARD_SCHEDULE=overlap      ef_raster's fast configuration (SCHEDULE=1, docs/microarch.md section 6)
+#                               in the SoC (build/board/...-overlap, the simulated board's too:
+#                               build/board/sim-ns8-overlap); the board then needs vectors made with
+#                               `edgeflag vectors --schedule overlap` (docs/board-ulx3s.md)
 #   make board-sim-usb-test     the same over USB: libusb, umockdev, the SoC's USB device
 #                               (tests/board/usb_sim.sh)
 #   EF_BOARD_SERIAL=...         the serial number identify reports (default EFULX3S-0001)
@@ -23,8 +27,9 @@ EF_VENV ?= build/venv
 EF_VENV_PY := $(EF_VENV)/bin/python
 BOARD_GPIO ?= 1
 BOARD_USB ?= 1
-BOARD_DIR := $(BUILD)/board/$(BOARD)-ns$(BOARD_NS)$(if $(filter 0,$(BOARD_GPIO)),-nogpio)$(if $(filter 0,$(BOARD_USB)),-nousb)
-BOARD_SIM_DIR := $(BUILD)/board/sim-ns$(BOARD_NS)
+BOARD_SCHEDULE ?= reference
+BOARD_DIR := $(BUILD)/board/$(BOARD)-ns$(BOARD_NS)$(if $(filter 0,$(BOARD_GPIO)),-nogpio)$(if $(filter 0,$(BOARD_USB)),-nousb)$(if $(filter overlap,$(BOARD_SCHEDULE)),-overlap)
+BOARD_SIM_DIR := $(BUILD)/board/sim-ns$(BOARD_NS)$(if $(filter overlap,$(BOARD_SCHEDULE)),-overlap)
 BOARD_SOC_SRC := board/soc/soc.py board/soc/ef_periph.py board/soc/ef_gpio.py board/soc/ef_usb.py board/soc/usb_core.py board/soc/ef_gate_ecp5.v board/soc/ef_gate_sim.v \
                  $(wildcard rtl/*.v) $(wildcard rtl/*.vh)
 BOARD_TOOLS := $(EF_VENV)/.installed-soc build/fpga-bin/nextpnr-ecp5
@@ -45,7 +50,7 @@ include board/firmware/firmware.mk
 $(BUILD)/board/%/software/include/generated/csr.h: $(BOARD_SOC_SRC) $(BOARD_TOOLS)
 	@mkdir -p $(BUILD)/board
 	$(EF_VENV_PY) board/soc/soc.py --target $(if $(filter sim-%,$*),sim,$(BOARD)) --ns $(BOARD_NS) \
-	    $(if $(findstring -nogpio,$*),--no-gpio) $(if $(findstring -nousb,$*),--no-usb) --out $(BUILD)/board/$* --headers-only >$(BUILD)/board/$*.headers.log 2>&1 || \
+	    $(if $(findstring -nogpio,$*),--no-gpio) $(if $(findstring -nousb,$*),--no-usb) $(if $(findstring -overlap,$*),--schedule overlap) --out $(BUILD)/board/$* --headers-only >$(BUILD)/board/$*.headers.log 2>&1 || \
 	    { tail -n 20 $(BUILD)/board/$*.headers.log; exit 1; }
 
 firmware: $(BOARD_TOOLS)
@@ -53,7 +58,7 @@ firmware: $(BOARD_TOOLS)
 
 bitstream: $(BOARD_TOOLS)
 	$(MAKE) --no-print-directory $(BOARD_DIR)/firmware.bin FW_SOC=$(BOARD_DIR)
-	EF_SOC_FLAGS="$(if $(filter 0,$(BOARD_GPIO)),--no-gpio) $(if $(filter 0,$(BOARD_USB)),--no-usb)" bash board/soc/bitstream.sh $(BOARD) $(BOARD_NS) \
+	EF_SOC_FLAGS="$(if $(filter 0,$(BOARD_GPIO)),--no-gpio) $(if $(filter 0,$(BOARD_USB)),--no-usb) $(if $(filter overlap,$(BOARD_SCHEDULE)),--schedule overlap)" bash board/soc/bitstream.sh $(BOARD) $(BOARD_NS) \
 	    $(BOARD_DIR) $(BOARD_SEED)
 
 # The simulated board: the SoC's Verilog for the sim target with the firmware in its ROM, and
@@ -66,7 +71,7 @@ BOARD_SIM_VFLAGS := --cc --exe --build -j 2 -O2 --x-assign fast --x-initial fast
 # rewrites that image and needs no new model.
 $(BOARD_SIM_DIR)/gateware/sim.v: $(BOARD_SOC_SRC) | $(BOARD_SIM_DIR)/firmware.bin
 	$(EF_VENV_PY) board/soc/soc.py --target sim --ns $(BOARD_NS) --out $(BOARD_SIM_DIR) \
-	    --rom $(BOARD_SIM_DIR)/firmware.bin >$(BOARD_SIM_DIR)/gateware.log 2>&1 || \
+	    $(if $(filter overlap,$(BOARD_SCHEDULE)),--schedule overlap) --rom $(BOARD_SIM_DIR)/firmware.bin >$(BOARD_SIM_DIR)/gateware.log 2>&1 || \
 	    { tail -n 20 $(BOARD_SIM_DIR)/gateware.log; exit 1; }
 # the harness's C++ files (gpio_link.cpp: the GPIO header's socket, docs/board-gpio.md section 8;
 # usb_link.cpp: the USB host controller, docs/board-ulx3s.md "USB in the simulation")

@@ -87,7 +87,7 @@ fi
 
 # --------------------------------------------------------------- the build
 R=$root/rtl
-incs=(-I"$R")
+incs=(-I"$R" -I"$root/dv/tb")   # dv/tb: ef_raster_conn.vh, the bench's port list
 defs=()
 if [ ${#tops[@]} -gt 0 ]; then
     src=()

@@ -66,7 +66,7 @@ size_t ef_frame_put(uint8_t *out, uint8_t type, uint8_t flags, uint32_t seq, con
     return ef_frame_put_crc(out, type, flags, seq, payload, len, NULL);
 }
 
-int ef_frame_parse(const uint8_t *buf, size_t n, ef_frame *f, size_t *used)
+int ef_frame_parse_part(const uint8_t *buf, size_t n, ef_frame *f, size_t *used, ef_frame_part *part)
 {
     static const uint8_t magic[4] = { 'E', 'F', 'B', '1' };
     const size_t m = n < 4 ? n : 4;
@@ -78,10 +78,21 @@ int ef_frame_parse(const uint8_t *buf, size_t n, ef_frame *f, size_t *used)
     if (buf[6] != 0 || buf[7] != 0 || len > EF_PROTO_PAYLOAD_MAX)
         return EF_FRAME_BAD;
     const size_t total = EF_PROTO_HEADER + (size_t)len + EF_PROTO_TRAILER;
+    ef_frame_part whole = { 0, 0 }; /* (ef_frame_parse: the payload read once, when all there) */
+    if (!part) {
+        if (n < total)
+            return EF_FRAME_MORE;
+        part = &whole;
+    }
+    const size_t have = n - EF_PROTO_HEADER < len ? n - EF_PROTO_HEADER : len; /* payload bytes here */
+    if (have > part->done) {
+        part->crc = ef_frame_crc32(part->crc, buf + EF_PROTO_HEADER + part->done, have - part->done);
+        part->done = (uint32_t)have;
+    }
     if (n < total)
         return EF_FRAME_MORE;
     const uint32_t ch = ef_frame_crc32(0, buf, EF_PROTO_HEADER);
-    const uint32_t cp = ef_frame_crc32(0, buf + EF_PROTO_HEADER, len);
+    const uint32_t cp = part->crc;
     if (ef_frame_crc32_combine(ch, cp, len) != ef_get32(buf + EF_PROTO_HEADER + len))
         return EF_FRAME_BAD;
     f->payload_crc = cp;
@@ -92,6 +103,11 @@ int ef_frame_parse(const uint8_t *buf, size_t n, ef_frame *f, size_t *used)
     f->payload = buf + EF_PROTO_HEADER;
     *used = total;
     return EF_FRAME_OK;
+}
+
+int ef_frame_parse(const uint8_t *buf, size_t n, ef_frame *f, size_t *used)
+{
+    return ef_frame_parse_part(buf, n, f, used, NULL);
 }
 
 size_t ef_frame_resync(const uint8_t *buf, size_t n)

@@ -45,6 +45,16 @@ size_t ef_frame_put_crc(uint8_t *out, uint8_t type, uint8_t flags, uint32_t seq,
                         uint32_t *payload_crc);
 /* Parses the frame at buf[0..n). */
 int ef_frame_parse(const uint8_t *buf, size_t n, ef_frame *f, size_t *used);
+/* A frame's payload CRC so far, for a frame that arrives in pieces: zeroed
+ * (ef_frame_part p = { 0 }) for each new frame start, kept by the caller while
+ * the bytes of buf[0..n) stay and only grow. */
+typedef struct ef_frame_part {
+    uint32_t crc, done; /* CRC-32 of the payload's first `done` bytes */
+} ef_frame_part;
+/* ef_frame_parse, but each call reads only the payload bytes the last call
+ * with the same *part did not (a frame of n bytes costs O(n) however many
+ * calls it takes): the same results.  part NULL: ef_frame_parse. */
+int ef_frame_parse_part(const uint8_t *buf, size_t n, ef_frame *f, size_t *used, ef_frame_part *part);
 /* Offset of the next possible frame start ("EFB1" or a prefix of it at the
  * end) in buf[1..n), or n. */
 size_t ef_frame_resync(const uint8_t *buf, size_t n);

@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
-# syn/scenes.sh - the reference schedule's frame length, pixels and pixels per
-# clock for the scenes issue 25 reports (docs/synthesis.md): the tiger, the
+# syn/scenes.sh - a schedule's frame length, pixels and pixels per clock
+# for the scenes issue 25 reports (docs/synthesis.md): the tiger, the
 # lion and the text scene of the shared illustrations (lorem_ipsum_compound:
 # a paragraph of glyph outlines) at 640x480, and the paper's ten synthetic
 # tests under both rules (bench/paper_scenes.py) at 640x480; at 8 samples
-# unless EF_SCENES_NS says otherwise.  Every number comes from `edgeflag
+# unless EF_SCENES_NS says otherwise; the reference schedule, or the one
+# EF_SCENES_SCHEDULE names (overlap: the fast configuration's, docs/microarch.md
+# section 6; passed as --schedule, so an edgeflag built before the option
+# existed runs with it unset).  Every number comes from `edgeflag
 # vectors` (its manifest: cycles, the pix count) run here; with MHZ, the
 # frame time at that clock too.  Not in make test.
 #
@@ -18,6 +21,8 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 case $build in /*) ;; *) build=$PWD/$build ;; esac
 EF=$build/edgeflag
 ns=${EF_SCENES_NS:-8}
+sched=()
+[ -n "${EF_SCENES_SCHEDULE:-}" ] && sched=(--schedule "$EF_SCENES_SCHEDULE")
 [ -x "$EF" ] || { echo "scenes: $EF not built (make cli)"; exit 1; }
 work=$(mktemp -d "${TMPDIR:-/tmp}/edgeflag-scenes.XXXXXX") || exit 1
 trap 'rm -rf "$work"' EXIT
@@ -28,7 +33,7 @@ rc=0 tc=0 tp=0 n=0
 printf '%-40s %10s %9s %8s%s\n' scene cycles pixels pix/clk "${mhz:+ ms@${mhz}MHz}"
 for s in "${scenes[@]}"; do
     name=$(basename "$s")
-    if ! "$EF" vectors "$s" --samples "$ns" --size 640x480 -o "$work/v" --force --formats hex --interfaces pix \
+    if ! "$EF" vectors "$s" --samples "$ns" --size 640x480 "${sched[@]}" -o "$work/v" --force --formats hex --interfaces pix \
         >"$work/log" 2>&1; then
         echo "scenes: edgeflag vectors failed on $name: $(tail -n 1 "$work/log")"; rc=1; continue
     fi

@@ -18,6 +18,7 @@
 #include <generated/soc.h>
 
 #include "ef_trace.h"
+#include "link.h"
 
 #define OP_FLUSH 15u
 #define ST_CMD_ROOM 1u
@@ -45,7 +46,7 @@ static int fail(dut_soc *d, const char *why)
 static uint32_t next_word(void)
 {
     while (!(ef_status_read() & ST_REC))
-        ;
+        fw_link_poll();
     const uint32_t w = ef_rec_data_read();
     ef_rec_pop_write(1);
     return w;
@@ -57,6 +58,7 @@ static uint32_t next_word(void)
 static void drain(dut_soc *d)
 {
     while ((ef_status_read() & ST_REC) && !(d->running && ef_board_results_full(d->b))) {
+        fw_link_poll(); /* (this loop lasts while ef_raster makes records) */
         const uint32_t w = next_word();
         if ((w & 0xFFu) == MARK) {
             const uint32_t code = w >> 16;
@@ -126,6 +128,7 @@ static int push(void *self, const uint8_t c[EF_PROTO_CMD_BYTES])
     while (!(ef_status_read() & ST_CMD_ROOM)) { /* busy (not taken) while the engine is full */
         if (ef_board_results_full(d->b))
             return 1;
+        fw_link_poll();
         drain(d);
         if (!d->running)
             return -1;
@@ -185,6 +188,7 @@ static int finish(void *self)
         while (!(ef_status_read() & ST_CMD_ROOM)) {
             if (ef_board_results_full(d->b))
                 return 1; /* busy: called again once the host took results */
+            fw_link_poll();
             drain(d);
         }
         ef_cmd0_write(0);
@@ -198,6 +202,7 @@ static int finish(void *self)
     while (!d->flushed && d->running) {
         if (ef_board_results_full(d->b))
             return 1;
+        fw_link_poll();
         drain(d);
     }
     return d->running ? 0 : -1;

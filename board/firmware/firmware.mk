@@ -16,7 +16,7 @@ FW_MARCH ?= rv32im
 # Layer: its own folder, the board engine, the protocol and the public headers; never host/, cli/,
 # util/ or the model's internals (tests/layers checks it).
 LAYER_INC_firmware := -Iboard/firmware -Iboard -Iproto -Iinclude/edgeflag
-FW_CFLAGS = -march=$(FW_MARCH) -mabi=ilp32 --specs=picolibc.specs -Os -std=gnu11 -Wall -Wextra -Werror \
+FW_CFLAGS = -march=$(FW_MARCH) -mabi=ilp32 --specs=picolibc.specs -Os -flto -std=gnu11 -Wall -Wextra -Werror \
             -ffunction-sections -fdata-sections -DEF_BOARD_SERIAL='"$(EF_BOARD_SERIAL)"' \
             $(LAYER_INC_firmware) -I$(FW_SOC)/software/include -isystem $(FW_LITEX_INC) -isystem $(FW_LITEX_INC)/../../cores/cpu/vexriscv
 FW_OUT ?= $(FW_SOC)/firmware
@@ -24,6 +24,7 @@ FW_EXTRA ?=
 # the links (board/firmware/link.h): each file compiles to nothing when the SoC lacks its core
 FW_LINKS = board/firmware/link_uart.c board/firmware/link_gpio.c board/firmware/link_usb.c
 FW_SRC = board/firmware/crt0.S board/firmware/main.c $(FW_LINKS) board/firmware/dut_soc.c board/firmware/crc32.c \
+         board/firmware/mem.c board/firmware/bench.c \
          board/ef_board.c proto/ef_frame.c
 
 $(FW_OUT).elf: $(FW_SRC) board/firmware/linker.ld board/firmware/*.h board/ef_board.h proto/ef_frame.h \

@@ -46,6 +46,9 @@ typedef struct fw_link {
 } fw_link;
 
 extern const fw_link fw_link_uart;
+/* Moves the bytes the UART received into its ring (link_uart.c): called by
+ * the loop and by work inside the engine's calls that may take long. */
+void fw_link_poll(void);
 #ifdef CSR_GPIOBUS_BASE
 extern const fw_link fw_link_gpio;
 #endif

@@ -30,6 +30,7 @@
 
 #include "dut_soc.h"
 #include "ef_board.h"
+#include "ef_frame.h"
 #include "link.h"
 
 #ifndef EF_BOARD_SERIAL
@@ -64,6 +65,13 @@ static const fw_link *const links[] = {
 #define NLINKS (sizeof links / sizeof links[0])
 
 static uint8_t rxb[256], txb[256];
+
+#ifdef EF_FW_BENCH
+void fw_bench(void);
+#endif
+#ifdef EF_FW_POLLSTAT
+void fw_pollstat_dump(void);
+#endif
 
 static uint32_t now_ticks(void) /* sys clock ticks, counting down */
 {
@@ -142,10 +150,16 @@ int main(void)
     if (!e.b)
         for (;;)
             ;
+    (void)ef_frame_crc32_combine(0, 0, 0); /* crc32.c's tables now, not in the first frame's call */
     timer0_en_write(0);
     timer0_load_write(0);
     timer0_reload_write(0xFFFFFFFFu);
     timer0_en_write(1);
+#ifdef EF_FW_BENCH /* a debug build: the engine's costs on this CPU (bench.c), and no loop */
+    fw_bench();
+    for (;;)
+        ;
+#endif
     const uint32_t idle_ticks = CONFIG_CLOCK_FREQUENCY / 20; /* 50 ms */
     for (size_t i = 0; i < NLINKS; i++)
         if (links[i]->init)
@@ -164,6 +178,9 @@ int main(void)
         if (e.rx_pending && e.last_rx - now_ticks() > idle_ticks) {
             ef_board_rx_idle(e.b);
             e.rx_pending = 0;
+#ifdef EF_FW_POLLSTAT
+            fw_pollstat_dump();
+#endif
         }
         dut_soc_poll();
         if (e.tx_pos == e.tx_len) {

@@ -49,8 +49,9 @@
 // for the last one's reply.
 // On SIGTERM or SIGINT, or after --max-seconds of wall time, it prints the
 // cycles simulated, the bytes moved, the faults played, the simulated time
-// from the host's first byte to the board's last, and the most result
-// frames kept, and exits 0.  --gpio-listen: the SoC's GPIO bus pins behind a
+// from the host's first byte to the board's last, the most result
+// frames kept and, on a paced line, the UART receive FIFO's overruns (bytes
+// due while its 64 bytes were full: lost on a real UART), and exits 0.  --gpio-listen: the SoC's GPIO bus pins behind a
 // unix socket for the emulated gpiochip of the tests (gpio_link.cpp), served
 // once the board is up.  --usb PATH: the SoC's USB device on a unix socket for
 // tests/host/usb_emu.c (--soc), through the host controller of usb_link.cpp
@@ -190,6 +191,11 @@ struct Board {
     VerilatedContext ctx;
     Vsim top{ &ctx };
     uint64_t cyc = 0, byte_cycles = 0, next_rx = 0, next_tx = 0, ef_div = 2;
+    // A paced line cannot wait: a byte due while the UART's receive FIFO is full is one a real
+    // UART loses (LiteX's PHY has no flow control).  The harness holds it back instead and counts
+    // it here (once per byte); 0 on a paced run is the firmware keeping up with the line.
+    uint64_t overruns = 0;
+    bool refused = false;
     GpioLink *gpio = nullptr;   // the GPIO header's socket (gpio_link.cpp), served once the board is up
     UsbLink *usb = nullptr;     // the USB device's socket (usb_link.cpp)
     void reset_pins()
@@ -223,6 +229,8 @@ struct Board {
         if (usb && um == 0)
             usb_link_sample(usb);
         const bool rx_take = top.serial_sink_valid && top.serial_sink_ready;
+        if (byte_cycles && top.serial_sink_valid && !top.serial_sink_ready && !refused && !top.sys_rst)
+            overruns++, refused = true;
         const bool tx_take = top.serial_source_valid && top.serial_source_ready;
         const uint8_t tx_byte = top.serial_source_data;
         top.sys_clk = !frozen;   // a frozen board: its CPU and ef_raster stand still (usb_wire.h)
@@ -230,7 +238,7 @@ struct Board {
         top.usb_clk = um <= 2;
         top.eval();
         if (rx_take)
-            next_rx = cyc + byte_cycles;
+            next_rx = cyc + byte_cycles, refused = false;
         if (tx_take)
             next_tx = cyc + byte_cycles, *out = tx_byte;
         *took = rx_take;
@@ -515,16 +523,19 @@ int main(int argc, char **argv)
         }
     }
     const double dt = now_s() - t0;
+    char ov[64] = "";   // (a paced line only: unpaced, the harness feeds the FIFO as fast as it takes)
+    if (bd.byte_cycles)
+        std::snprintf(ov, sizeof ov, ", UART receive FIFO overruns %llu", (unsigned long long)bd.overruns);
     if (!quiet)
         std::fprintf(stderr,
                      "board_sim: %llu sys cycles (%.3f s simulated) in %.1f s (%.0f cycles/s), ready after %llu "
                      "cycles (%.1f s), %llu bytes in, %llu bytes out, the host's first byte to the board's last %.6f s "
-                     "simulated, result frames kept at most %u (%llu status probes)%s%s%s\n",
+                     "simulated, result frames kept at most %u (%llu status probes)%s%s%s%s\n",
                      (unsigned long long)bd.cyc, bd.cyc / (double)sys_hz, dt, bd.cyc / dt,
                      (unsigned long long)cyc_ready, t_ready - t0, (unsigned long long)bytes_in,
                      (unsigned long long)bytes_out, last_out > first_in ? (last_out - first_in) / (double)sys_hz : 0.0,
                      (unsigned)kept.most, kept.probes, played[F_STALL] ? ", stalled" : "",
-                     played[F_RESET] ? ", reset" : "", played[F_UNPLUG] ? ", unplugged" : "");
+                     played[F_RESET] ? ", reset" : "", played[F_UNPLUG] ? ", unplugged" : "", ov);
     if (gpio)
         gpio_link_close(gpio, (double)sys_hz);
     if (bd.usb) {

@@ -69,7 +69,7 @@ def log2(n):
 
 
 class EFRaster(LiteXModule):
-    def __init__(self, ns=8, w_max=64, h_max=64, e_max=255, fifo_depth=512):
+    def __init__(self, ns=8, w_max=64, h_max=64, e_max=255, fifo_depth=512, schedule=0):
         self.ns, self.w_max, self.h_max, self.e_max = ns, w_max, h_max, e_max
         # CSRs (sys domain)
         self.ctrl = CSRStorage(16, description="bit 0: reset; bits 14:8: interfaces to return")
@@ -131,7 +131,8 @@ class EFRaster(LiteXModule):
         ios["i_fb_rdata"] = fb_rdata
         for f, w in [("cfg_width", 15), ("cfg_height", 15), ("frame_start", 1), ("frame_end", 1)]:
             ios["o_" + f] = Signal(w, name=f)
-        self.specials += Instance("ef_raster", p_NS=ns, p_W_MAX=w_max, p_H_MAX=h_max, p_E_MAX=e_max, **ios)
+        self.specials += Instance("ef_raster", p_NS=ns, p_W_MAX=w_max, p_H_MAX=h_max, p_E_MAX=e_max,
+                                  p_SCHEDULE=schedule, **ios)
         p["pix_ready"] = Constant(1, 1)
 
         # the frame memory

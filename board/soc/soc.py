@@ -139,7 +139,7 @@ class _CRGSim(Module):
 
 class EdgeflagSoC(SoCCore):
     def __init__(self, target, ns, rom_init, sys_clk, ef_clk, main_ram, cpu_variant="lite", e_max=E_MAX,
-                 gpio=True, usb_core=None):
+                 gpio=True, usb_core=None, schedule=0):
         if target == "sim":
             from litex.build.sim import SimPlatform
             platform = SimPlatform("SIM", _sim_io)
@@ -152,7 +152,7 @@ class EdgeflagSoC(SoCCore):
             crg = _CRGULX3S(platform, sys_clk, ef_clk)
             uart = "serial"
         for v in ["ef_aet", "ef_cov", "ef_dec", "ef_div", "ef_etm", "ef_plot", "ef_raster", "ef_setup",
-                  "ef_slb_fill", "ef_slb_ram"]:
+                  "ef_slb_fill", "ef_slb_ram"] + (["ef_spanq"] if schedule else []):
             platform.add_source(os.path.join(ROOT, "rtl", v + ".v"))
         # rtl/'s modules include ef_ifaces.vh and ef_ns.vh (docs/vectors.md section 8)
         platform.add_verilog_include_path(os.path.join(ROOT, "rtl"))
@@ -171,7 +171,7 @@ class EdgeflagSoC(SoCCore):
             if target != "sim":
                 platform.add_extension(_gpio_ulx3s_io())
             self.gpiobus = EFGpioBus(platform.request("ef_gpio"))
-        self.ef = EFRaster(ns=ns, w_max=W_MAX, h_max=H_MAX, e_max=e_max)
+        self.ef = EFRaster(ns=ns, w_max=W_MAX, h_max=H_MAX, e_max=e_max, schedule=schedule)
         if usb_core:
             # the USB device of docs/board-usb.md (board/soc/ef_usb.py), its core's Verilog written
             # by board/soc/usb_core.py (LUNA, Amaranth) at build time
@@ -181,7 +181,7 @@ class EdgeflagSoC(SoCCore):
             else:
                 self.usb = EFUSB(pads=platform.request("usb"))
         for name, value in [("EF_NS", ns), ("EF_W_MAX", W_MAX), ("EF_H_MAX", H_MAX), ("EF_E_MAX", e_max),
-                            ("EF_SYS_CLK", int(sys_clk)), ("EF_EF_CLK", int(ef_clk)), ("EF_BAUD", BAUD)]:
+                            ("EF_SCHEDULE", schedule), ("EF_SYS_CLK", int(sys_clk)), ("EF_EF_CLK", int(ef_clk)), ("EF_BAUD", BAUD)]:
             self.add_constant(name, value)
         if target != "sim" and not main_ram:
             # the heap (the engine's receive buffer and its results) in the 32 MB SDRAM
@@ -223,6 +223,9 @@ def main():
     ap.add_argument("--no-gpio", action="store_true", help="leave the GPIO bus slave out (docs/board-gpio.md)")
     ap.add_argument("--no-usb", action="store_true",
                     help="without the USB device (docs/board-ulx3s.md: utilisation with and without it)")
+    ap.add_argument("--schedule", default="reference", choices=["reference", "overlap"],
+                    help="ef_raster's SCHEDULE: reference (0) or overlap (1, the fast configuration of "
+                         "docs/microarch.md section 6; the host then needs vectors made with --schedule overlap)")
     ap.add_argument("--usb-vid-pid", default="1209:0001", help="the USB device's VID:PID (docs/board-usb.md)")
     a = ap.parse_args()
     if a.sys_clk is None:
@@ -243,7 +246,7 @@ def main():
                         "--phy", "utmi" if a.target == "sim" else "gateware", "--vid-pid", a.usb_vid_pid],
                        check=True, env=env)
     soc = EdgeflagSoC(a.target, a.ns, rom, a.sys_clk, a.ef_clk, main_ram, a.cpu_variant, a.e_max,
-                      gpio=not a.no_gpio, usb_core=usb_core)
+                      gpio=not a.no_gpio, usb_core=usb_core, schedule=int(a.schedule == "overlap"))
     if a.target == "sim":
         # Only the Verilog and the memory images: board/sim has its own Verilator harness, so
         # LiteX's simulator (its C modules, its tap/ethernet data package) is not used.

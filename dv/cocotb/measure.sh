@@ -13,7 +13,7 @@ work=$build/cocotb/measure
 rm -rf "$work" && mkdir -p "$work/vl" "$work/dump"
 "$build/edgeflag" vectors "$svg" -o "$work/vec" --size "$size" --samples 8 --formats hex >/dev/null 2>&1
 R=$root/rtl
-verilator --binary -O2 -Wno-fatal -Wno-WIDTH -I"$R" --Mdir "$work/vl" --top-module tb_raster -GNS=8 -GW_MAX=256 \
+verilator --binary -O2 -Wno-fatal -Wno-WIDTH -I"$R" -I"$root/dv/tb" --Mdir "$work/vl" --top-module tb_raster -GNS=8 -GW_MAX=256 \
     -GH_MAX=256 -GE_MAX=16384 -GFB_BITS=16 "$root/dv/tb/tb_raster.v" "$R"/ef_raster.v "$R"/ef_dec.v "$R"/ef_setup.v \
     "$R"/ef_div.v "$R"/ef_etm.v "$R"/ef_aet.v "$R"/ef_plot.v "$R"/ef_slb_fill.v "$R"/ef_slb_ram.v "$R"/ef_cov.v \
     >"$work/vl/build.log" 2>&1

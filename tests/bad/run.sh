@@ -39,6 +39,25 @@ bad() {
     for l in "$@"; do echo "       $l"; done
     sed 's/^/       stderr: /' err | head -n 3
 }
+# exit_ok: the exit code $rc is $want, and not a signal or a timeout; else a FAIL line, 1
+exit_ok() {
+    if [ "$rc" -ge 124 ]; then
+        bad "$what" "exit $rc: killed by a signal or timed out (want $want)"; return 1
+    fi
+    if [ "$rc" != "$want" ]; then
+        bad "$what" "exit $rc, want $want"; return 1
+    fi
+}
+# msg_ok PREFIX: $msg is PREFIX and then a text ($text) that matches $regex; else a FAIL line, 1
+msg_ok() {
+    case $msg in
+    "$1"*) text=${msg#"$1"} ;;
+    *) bad "$what" "message does not start with '$1'"; return 1 ;;
+    esac
+    if ! printf '%s\n' "$text" | grep -Eq -- "$regex"; then
+        bad "$what" "message '$text' does not match /$regex/"; return 1
+    fi
+}
 # check_entry: one `edgeflag check ARGS` entry (command column "check"): the
 # exit code, the message (on stderr; stdout empty unless mismatches, which no
 # entry has), no output file, and the readers' own class and place.
@@ -48,12 +67,7 @@ check_entry() {
     rc=$?
     what="check $args"
     msg=$(grep -v '^edgeflag: warning: ' err | grep -m1 '^edgeflag: ')
-    if [ $rc -ge 124 ]; then
-        bad "$what" "exit $rc: killed by a signal or timed out (want $want)"; return
-    fi
-    if [ "$rc" != "$want" ]; then
-        bad "$what" "exit $rc, want $want"; return
-    fi
+    exit_ok || return
     if [ "$want" = 0 ]; then
         if [ -s stdout ] || [ -n "$msg" ]; then bad "$what" "exit 0 but output or an error message"; return; fi
     else
@@ -64,13 +78,7 @@ check_entry() {
         else
             prefix="edgeflag: $file:$where: "
         fi
-        case $msg in
-        "$prefix"*) text=${msg#"$prefix"} ;;
-        *) bad "$what" "message does not start with '$prefix'"; return ;;
-        esac
-        if ! printf '%s\n' "$text" | grep -Eq -- "$regex"; then
-            bad "$what" "message '$text' does not match /$regex/"; return
-        fi
+        msg_ok "$prefix" || return
     fi
     if [ "$class" != usage ]; then
         # shellcheck disable=SC2086
@@ -95,20 +103,9 @@ host_entry() {
     rc=$?
     what="edgeflag-host stream $file${args:+ $args}"
     msg=$(grep -m1 '^edgeflag-host: ' err)
-    if [ $rc -ge 124 ]; then
-        bad "$what" "exit $rc: killed by a signal or timed out (want $want)"; return
-    fi
-    if [ "$rc" != "$want" ]; then
-        bad "$what" "exit $rc, want $want"; return
-    fi
+    exit_ok || return
     prefix="edgeflag-host: $file: "
-    case $msg in
-    "$prefix"*) text=${msg#"$prefix"} ;;
-    *) bad "$what" "message does not start with '$prefix'"; return ;;
-    esac
-    if ! printf '%s\n' "$text" | grep -Eq -- "$regex"; then
-        bad "$what" "message '$text' does not match /$regex/"; return
-    fi
+    msg_ok "$prefix" || return
     if [ -e hostout/vectors.actual.bin ]; then
         bad "$what" "results written for a refused input"; return
     fi
@@ -126,24 +123,13 @@ gen_entry() {
     rc=$?
     what="gen --dut-file $file${args:+ $args}"
     msg=$(grep -m1 '^edgeflag: ' err)
-    if [ $rc -ge 124 ]; then
-        bad "$what" "exit $rc: killed by a signal or timed out (want $want)"; return
-    fi
-    if [ "$rc" != "$want" ]; then
-        bad "$what" "exit $rc, want $want"; return
-    fi
+    exit_ok || return
     if [ "$want" = 0 ]; then
         if ! grep -q '^case	file	kind' stdout || [ -n "$msg" ]; then bad "$what" "exit 0 but no index, or an error message"; return; fi
     else
         if [ -s stdout ]; then bad "$what" "exit $rc but an index on standard output"; return; fi
         if [ "$where" = - ]; then prefix="edgeflag: $file: "; else prefix="edgeflag: $file:$where: "; fi
-        case $msg in
-        "$prefix"*) text=${msg#"$prefix"} ;;
-        *) bad "$what" "message does not start with '$prefix'"; return ;;
-        esac
-        if ! printf '%s\n' "$text" | grep -Eq -- "$regex"; then
-            bad "$what" "message '$text' does not match /$regex/"; return
-        fi
+        msg_ok "$prefix" || return
     fi
     pass=$((pass + 1))
     echo "ok   - $what -> $want"
@@ -171,12 +157,7 @@ while IFS=$'\t' read -r file want class regex where args command; do
     rc=$?
     what="$file${args:+ $args}"
     msg=$(grep -v '^edgeflag: warning: ' err | grep -m1 '^edgeflag: ')
-    if [ $rc -ge 124 ]; then
-        bad "$what" "exit $rc: killed by a signal or timed out (want $want)"; continue
-    fi
-    if [ "$rc" != "$want" ]; then
-        bad "$what" "exit $rc, want $want"; continue
-    fi
+    exit_ok || continue
     temps=$(find . -maxdepth 1 -name ".$out.*" | head -n 3)
     if [ -n "$temps" ]; then
         bad "$what" "temporary left behind: $temps"; rm -f ./.out*; continue
@@ -197,13 +178,7 @@ while IFS=$'\t' read -r file want class regex where args command; do
         else
             prefix="edgeflag: $file:$where: "
         fi
-        case $msg in
-        "$prefix"*) text=${msg#"$prefix"} ;;
-        *) bad "$what" "message does not start with '$prefix'"; continue ;;
-        esac
-        if ! printf '%s\n' "$text" | grep -Eq -- "$regex"; then
-            bad "$what" "message '$text' does not match /$regex/"; continue
-        fi
+        msg_ok "$prefix" || continue
     fi
     if [ "$class" != usage ]; then
         size=()

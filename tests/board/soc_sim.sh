@@ -9,6 +9,10 @@
 #   2. verify of a bundled SVG at a small canvas in full-record mode: PASS cycle-exact on every
 #      interface the board returns (seg, et_wr, et_rd, plot, span, pix);
 #   3. the same in digest mode, when edgeflag-host has one (else said: SKIP, not counted);
+#   3b. the UART at 3 Mbaud (serial only): the board at its own clocks (sys 30 MHz), the line paced
+#      at 3 Mbaud, tests/board/sink_stream.py streaming 16 KiB of sink-mode DATA in 8 KiB frames as
+#      fast as the line takes them: all acknowledged and no byte ever due while the UART's 64-byte
+#      receive FIFO was full (board_sim's overrun count 0: on a real UART that byte is lost);
 #   4. faults on the wire (serial only: tests/host/ptyboard as a relay in front of the board's
 #      pty): a bit flipped on the way to the board, a byte to the host dropped and another
 #      duplicated, in one run: recovered (exit 0), results byte-identical to run 2's;
@@ -150,6 +154,25 @@ if "$H" --help 2>&1 | grep -q -- '--digest'; then
     stop_board
 else
     echo "SKIP - digest mode: this edgeflag-host has no --digest yet (not counted)"
+fi
+
+# ---------------------------------------------------------------- 3b. the UART at 3 Mbaud
+if [ $mode = serial ]; then
+    # (board_sim takes the last --baud: start_board's --baud 0 is overridden)
+    start_board "$sim/gateware" --sys-clk 30e6 --baud 3000000 || { bad "the simulated board did not come up"; finish; }
+    t0=$(date +%s%N)
+    timeout "$EF_GUARD_S" python3 "$root/tests/board/sink_stream.py" "$tmp/tty" 16 8192 >"$tmp/sink.out" 2>&1
+    rc=$?
+    ms=$((($(date +%s%N) - t0) / 1000000))
+    stop_board
+    ov=$(sed -n 's/.*UART receive FIFO overruns \([0-9]*\).*/\1/p' "$tmp/board.log")
+    if [ $rc = 0 ] && [ "$ov" = 0 ]; then
+        ok "the UART at 3 Mbaud, sys 30 MHz: $(cat "$tmp/sink.out"), no receive FIFO overrun ($ms ms)"
+    else
+        bad "the UART at 3 Mbaud" "exit $rc, overruns '${ov}'; $(tail -n 2 "$tmp/sink.out") $(tail -n 1 "$tmp/board.log")"
+    fi
+else
+    echo "SKIP - the UART at 3 Mbaud: needs the serial transport (not counted)"
 fi
 
 # ---------------------------------------------------------------- 4. faults on the wire

@@ -26,14 +26,7 @@
 
 #include "dut_file.h"
 #include "edgeflag.h"
-
-#define FAIL(...) \
-    do { \
-        fprintf(stderr, "fuzz_dut_file: property violated: "); \
-        fprintf(stderr, __VA_ARGS__); \
-        fputc('\n', stderr); \
-        abort(); \
-    } while (0)
+#include "fuzz_common.h"
 
 static uint32_t le32(const uint8_t *p)
 {
@@ -75,15 +68,15 @@ static long line_chars(const uint8_t *d, size_t n, uint32_t l)
 static void check_limits(const ef_gen_limits *lim)
 {
     if ((lim->width == 0) != (lim->height == 0))
-        FAIL("one canvas size without the other: %" PRId32 "x%" PRId32, lim->width, lim->height);
+        FUZZ_FAIL("one canvas size without the other: %" PRId32 "x%" PRId32, lim->width, lim->height);
     if (lim->width < 0 || lim->width > EF_MAX_CANVAS || lim->height < 0 || lim->height > EF_MAX_CANVAS)
-        FAIL("canvas %" PRId32 "x%" PRId32 " out of range", lim->width, lim->height);
+        FUZZ_FAIL("canvas %" PRId32 "x%" PRId32 " out of range", lim->width, lim->height);
     if (lim->edges > INT32_MAX)
-        FAIL("E_MAX %" PRIu32 " out of range", lim->edges);
+        FUZZ_FAIL("E_MAX %" PRIu32 " out of range", lim->edges);
     if (lim->samples_mask & ~0x38u)
-        FAIL("sample bits 0x%" PRIx32 " outside bits 3-5", lim->samples_mask);
+        FUZZ_FAIL("sample bits 0x%" PRIx32 " outside bits 3-5", lim->samples_mask);
     if (!lim->width && !lim->edges && !lim->samples_mask)
-        FAIL("a success that states no limit");
+        FUZZ_FAIL("a success that states no limit");
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
@@ -97,33 +90,33 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (rc != rc2 || memcmp(&lim, &lim2, sizeof lim) != 0 ||
         (rc && (err.at != err2.at || err.line != err2.line || err.col != err2.col || err.offset != err2.offset ||
                 strcmp(err.msg, err2.msg) != 0)))
-        FAIL("two reads of the same bytes differ");
+        FUZZ_FAIL("two reads of the same bytes differ");
     const int record = size >= 4 && !memcmp(data, "EFB1", 4);
 
     if (rc) {
         if (lim.width || lim.height || lim.edges || lim.samples_mask)
-            FAIL("a failure left limits behind");
+            FUZZ_FAIL("a failure left limits behind");
         if (!err.msg[0] || strlen(err.msg) >= sizeof err.msg)
-            FAIL("a failure without a message");
+            FUZZ_FAIL("a failure without a message");
         switch (err.at) {
         case EF_DUT_AT_LINE: {
             const long c = line_chars(data, size, err.line);
             if (record || err.line < 1 || c < 0 || err.col < 1 || (long)err.col > c + 1)
-                FAIL("error at %" PRIu32 ":%" PRIu32 ", not a place of the input (line has %ld characters): %s",
-                     err.line, err.col, c, err.msg);
+                FUZZ_FAIL("error at %" PRIu32 ":%" PRIu32 ", not a place of the input (line has %ld characters): %s",
+                          err.line, err.col, c, err.msg);
             break;
         }
         case EF_DUT_AT_RECORD:
             if (!record || size != 48 ||
                 (err.offset != 4 && err.offset != 16 && err.offset != 20 && err.offset != 24 && err.offset != 28))
-                FAIL("record error at byte offset %" PRIu32 " of a %zu-byte input", err.offset, size);
+                FUZZ_FAIL("record error at byte offset %" PRIu32 " of a %zu-byte input", err.offset, size);
             break;
         case EF_DUT_AT_FILE: break;
-        default: FAIL("unknown place %d", (int)err.at);
+        default: FUZZ_FAIL("unknown place %d", (int)err.at);
         }
         ef_dut_error_format("f", &err, line, sizeof line); /* truncated, never overflowed */
         if (strncmp(line, "f", 1) != 0)
-            FAIL("formatted error does not start with the file name");
+            FUZZ_FAIL("formatted error does not start with the file name");
     } else {
         check_limits(&lim);
     }
@@ -134,17 +127,17 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         const int ok = ver == 1 && (sm & 0x38u) && w >= 1 && w <= EF_MAX_CANVAS && h >= 1 && h <= EF_MAX_CANVAS &&
                        e >= 1 && e <= INT32_MAX;
         if (ok != !rc)
-            FAIL("record: read %s, the reference says %s", rc ? "failed" : "succeeded", ok ? "valid" : "invalid");
+            FUZZ_FAIL("record: read %s, the reference says %s", rc ? "failed" : "succeeded", ok ? "valid" : "invalid");
         if (ok &&
             (lim.width != (int32_t)w || lim.height != (int32_t)h || lim.edges != e || lim.samples_mask != (sm & 0x38u)))
-            FAIL("record: limits differ from the reference's");
+            FUZZ_FAIL("record: limits differ from the reference's");
     } else if (record) {
         if (!rc || err.at != EF_DUT_AT_FILE)
-            FAIL("a %zu-byte input from \"EFB1\" is not a whole-file error", size);
+            FUZZ_FAIL("a %zu-byte input from \"EFB1\" is not a whole-file error", size);
     } else if (size <= EF_DUT_FILE_MAX && !contains(data, size, "define") && !contains(data, size, "parameter") &&
                !contains(data, size, "localparam")) {
         if (!rc || err.at != EF_DUT_AT_FILE)
-            FAIL("text with no directive read as limits, or failed at a place");
+            FUZZ_FAIL("text with no directive read as limits, or failed at a place");
     }
 
     if (!rc) { /* written back as `define lines, it reads back the same */
@@ -163,10 +156,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             n += snprintf(text + n, sizeof text - (size_t)n, "`define NS %d\n", ns);
         }
         if (ef_dut_file_parse((const unsigned char *)text, (size_t)n, &back, &eb) != 0)
-            FAIL("its own `define lines do not read back: %s", eb.msg);
+            FUZZ_FAIL("its own `define lines do not read back: %s", eb.msg);
         if (back.width != lim.width || back.height != lim.height || back.edges != lim.edges ||
             (back.samples_mask & lim.samples_mask) != back.samples_mask || (!back.samples_mask != !lim.samples_mask))
-            FAIL("the `define lines read back to other limits");
+            FUZZ_FAIL("the `define lines read back to other limits");
     }
     return 0;
 }

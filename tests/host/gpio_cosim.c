@@ -37,37 +37,14 @@
 #include <time.h>
 
 #include "ef_frame.h"
+#include "emu_check.h"
 #include "gpio_chip.h"
 #include "host_link.h"
 #include "transport.h"
 #include "transport_gpio.h"
+#include "emu_wiring.h"
 
 int edgeflag_host_main(int argc, char **argv); /* host/main.c's main */
-
-static const unsigned WIRING[EMU_SIGNALS] = {
-    4,  5,  6,  7,  8,  9,  10, 11, /* d0..d7 */
-    0,  1,  2,  3,                  /* clk valid take ctl */
-    20, 21, 22, 23, 24, 25, 26, 27, /* q0..q7 */
-    12, 13, 14, 15                  /* ready avail done err */
-};
-static const char *LINES = "clk=EF_CLK,valid=EF_VALID,take=EF_TAKE,ctl=EF_CTL,d=4-11,q=20:21:22:23:24:25:26:27,"
-                           "ready=EF_READY,avail=13,done=EF_DONE,err=15";
-
-static int checks, failed;
-
-static void check(int ok, const char *fmt, ...)
-{
-    va_list ap;
-    checks++;
-    if (ok)
-        return;
-    failed++;
-    fprintf(stderr, "FAIL: ");
-    va_start(ap, fmt);
-    vfprintf(stderr, fmt, ap);
-    va_end(ap);
-    fputc('\n', stderr);
-}
 
 /* Reads what the board sends until a frame of type `want` is whole (or the
  * link fails); returns 1 when it came. */

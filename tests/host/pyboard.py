@@ -24,6 +24,8 @@ Faults (each flag may repeat; N counts from 1):
   --protocol V        identify answers protocol version V
   --not-ours          identify answers without the magic
   --mute              accepts connections and never answers anything (not even identify)
+  --data-kib K        identify's largest DATA payload, in KiB (capabilities bits 16-23, table 3.1);
+                      the stats' data_max is the largest DATA payload taken
 --limits W,H,E makes identify state W_MAX, H_MAX and E_MAX (default 16384,16384,4194304): the board
 a `edgeflag-host identify --save` test reads (the replay DUT does not check them).
 --stats FILE gets one line of counters (JSON) after every connection and every DONE/ERROR.
@@ -149,7 +151,7 @@ class Board:
         self.cmd_pos = 0           # replay: index into vec.cmd_index of the next command
         self.emit_pos = 0          # replay: next record of the file to consider returning
         self.out = bytearray()     # bytes queued for the host
-        self.stats = {"taken": 0, "dup": 0, "gap": 0, "bad": 0, "naks": 0, "resets": 0}
+        self.stats = {"taken": 0, "dup": 0, "gap": 0, "bad": 0, "naks": 0, "resets": 0, "data_max": 0}
 
     # --- output -------------------------------------------------------------------------------
     def make_result(self, ftype, payload):
@@ -195,7 +197,8 @@ class Board:
     def identify(self):
         magic = b"USB\0" if self.a.not_ours else MAGIC
         serial = self.a.serial.encode("ascii")[:16].ljust(16, b"\0")
-        return magic + struct.pack("<HHIIIIII", self.a.protocol, self.window, 7, self.iface_mask,
+        caps = 7 | (self.a.data_kib & 0xFF) << 16   # bits 16-23: the largest DATA payload in KiB (table 3.1)
+        return magic + struct.pack("<HHIIIIII", self.a.protocol, self.window, caps, self.iface_mask,
                                    self.samples_mask, *self.a.limits) + serial
 
     def status(self):
@@ -293,6 +296,7 @@ class Board:
             self.start(payload)
         elif ftype == T_DATA:
             self.input_crc = zlib.crc32(payload, self.input_crc)
+            self.stats["data_max"] = max(self.stats["data_max"], len(payload))
             self.data(payload)
         else:
             self.end()
@@ -433,6 +437,8 @@ def main():
     ap.add_argument("--not-ours", action="store_true")
     ap.add_argument("--mute", action="store_true")
     ap.add_argument("--stats")
+    ap.add_argument("--data-kib", type=int, default=0, metavar="K",
+                    help="identify's largest DATA payload in KiB (1-63; 0: 64 KiB); stats' data_max is the largest taken")
     ap.add_argument("--limits", type=lambda v: [int(x) for x in v.split(",")], default=[16384, 16384, 1 << 22],
                     metavar="W,H,E", help="the W_MAX, H_MAX, E_MAX identify states (the replay DUT does not check them)")
     for name in ("drop", "corrupt", "drop-reply", "corrupt-reply", "disconnect", "disconnect-reply", "stall",

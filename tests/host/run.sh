@@ -64,6 +64,12 @@ for v in small holes tiger; do
         "$H" verify $v/vectors.bin "${SIM[@]}"
 done
 cp tiger/board/vectors.actual.bin clean.bin
+# the default --timeout (2,000 ms, docs/board.md 7, --help) when none is given: a small run needs no timeout and
+# sends nothing again
+run "verify small with the default --timeout: PASS" 0 'check: PASS: 6 comparisons' -- \
+    "$H" verify small/vectors.bin --transport sim --results dflt --json
+[ "$(json timeouts)" = 0 ] && [ "$(json retransmits)" = 0 ] && ok "the default --timeout: no timeout, nothing sent again" ||
+    bad "the default --timeout" "$(cat out.txt)"
 run "stream: results in the default folder, summary line" 0 'commands in .* frames .* result records \(pix\)' -- \
     "$H" stream small/vectors.bin "${SIM[@]}"
 [ -s small/board/vectors.actual.bin ] && [ ! -e small/board/.resume ] && [ ! -e small/board/.results.part ] &&
@@ -135,6 +141,26 @@ for delay in 0.15 0.3 0.45; do
         bad "host killed after ${delay}s: resume exit $rrc" "$(head -c 300 err.txt)"
 done
 
+# the progress bar, drawn only when standard error is a terminal (docs/board.md: util-linux's script gives
+# the run a pty): every redraw's bar agrees with its percentage (floor(P * 30 / 100) .. floor((P + 1) * 30 /
+# 100) '#'), the first (at most the window of 16 of 2,864 frames acknowledged) is at 0 % with no '#', the
+# last at 100 % with all 30
+if command -v script >/dev/null; then
+    timeout "$EF_GUARD_S" script -qfec "'$H' verify big/vectors.bin --transport sim --timeout $EF_LINK_MS --frame-cmds 10 --interfaces pix --results pb" \
+        /dev/null >tty.txt 2>&1
+    prc=$?
+    tr '\r' '\n' <tty.txt | awk -v rc=$prc '
+        /^\[[#.]+\] +[0-9]+%/ { n++; bar = substr($0, 2, 30); h = gsub(/#/, "", bar); p = $2 + 0
+            if (h < int(p * 30 / 100) || h > int((p + 1) * 30 / 100)) bad = bad " " p "%:" h "#"
+            if (n == 1) { fp = p; fh = h } lp = p; lh = h }
+        END { if (rc == 0 && n >= 2 && bad == "" && fp == 0 && fh == 0 && lp == 100 && lh == 30) {
+                  printf "ok - the progress bar on a terminal: %d redraws, each bar agrees with its percentage, 0 %% to 100 %%\n", n; exit 0 }
+              printf "FAIL - the progress bar on a terminal: exit %d, %d redraws, first %s%% %s#, last %s%% %s#, disagreeing:%s\n", rc, n, fp, fh, lp, lh, bad; exit 1 }' &&
+        pass=$((pass + 1)) || fail=$((fail + 1))
+else
+    bad "the progress bar on a terminal" "util-linux's script is not installed"
+fi
+
 rm -rf S R
 run "stall past the timeout: exit 5 after 4 tries" 5 'stopped answering.*--resume' -- "$H" verify \
     tiger/vectors.bin "${SIM[@]}" --frame-cmds 40 --timeout 50 --sim-state S --results R --sim-faults stall=8 --json
@@ -183,6 +209,9 @@ run "vectors.bin of another format version: exit 3" 3 'v2.bin' -- "$H" stream v2
 "$E" vectors "$SVG/stress_pixi_bowtie.svg" -o hex --size 32x24 --formats hex >/dev/null 2>&1
 run "a hex file: exit 3, asks for vectors.bin" 3 'not a binary vector stream' -- \
     "$H" stream hex/cmd.stim.hex "${SIM[@]}"
+# the .bin test at its boundary: a file named just ".bin" (4 characters) is a vector stream too
+cp small/vectors.bin .bin
+run "a vectors file named .bin: taken, PASS" 0 'check: PASS: 6 comparisons' -- "$H" verify .bin "${SIM[@]}" --results dotbin
 "$E" vectors "$SVG/stress_pixi_bowtie.svg" -o nocmd --size 32x24 --formats bin --interfaces pix >/dev/null 2>&1
 run "vectors.bin without cmd: exit 3" 3 'records no cmd' -- "$H" stream nocmd/vectors.bin "${SIM[@]}"
 : >blocker

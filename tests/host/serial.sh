@@ -214,6 +214,25 @@ for mode in off 1024; do
     n=$(sed -n 's/.*"result_records": \([0-9]*\), "result_bytes": \([0-9]*\).*/\1 \2/p' out.txt)
     echo "$n $t0 $t1" | awk -v m=$mode '{ s = $4 - $3; printf "# --digest %s at 300 kB/s: %d transactions checked, %d result bytes on the wire, %.2f s in all: %.0f transactions/s\n", m, $1, $2, s, $1 / s }'
 done
+# the progress bar on a terminal (util-linux's script gives the run a pty) over the same wire: the tiger
+# at 640x480 (28,613 commands, 372 kB: over 1.2 s at 300 kB/s) is redrawn every 0.2 s while its commands
+# flow; every redraw's bar agrees with its percentage (floor(P * 30 / 100) .. floor((P + 1) * 30 / 100)
+# '#'), and one between 1 % and 75 % (0.2 s or more after the start) shows an ETA above 0.0 s
+if command -v script >/dev/null; then
+    "$E" vectors "$SVG/tiger.svg" -o big --size 640x480 --formats bin >/dev/null 2>&1
+    timeout "$EF_GUARD_S" script -qfec "'$H' verify big/vectors.bin ${LINK[*]} --results pbar" /dev/null >tty.txt 2>&1
+    prc=$?
+    tr '\r' '\n' <tty.txt | awk -v rc=$prc '
+        /^\[[#.]+\] +[0-9]+%/ { n++; bar = substr($0, 2, 30); h = gsub(/#/, "", bar); p = $2 + 0
+            if (h < int(p * 30 / 100) || h > int((p + 1) * 30 / 100)) bad = bad " " p "%:" h "#"
+            if (p >= 1 && p <= 75 && $6 + 0 > 0) eta++; lp = p }
+        END { if (rc == 0 && n >= 3 && bad == "" && eta > 0 && lp == 100) {
+                  printf "ok - the progress bar on a terminal at 300 kB/s: %d redraws agree with their percentage, %d show an ETA\n", n, eta; exit 0 }
+              printf "FAIL - the progress bar on a terminal at 300 kB/s: exit %d, %d redraws, %d with an ETA between 1 %% and 75 %%, last %s%%, disagreeing:%s\n", rc, n, eta, lp, bad; exit 1 }' &&
+        pass=$((pass + 1)) || fail=$((fail + 1))
+else
+    bad "the progress bar on a terminal at 300 kB/s" "util-linux's script is not installed"
+fi
 
 # ------------------------------------------------------------------ 2. faults on the wire
 # fault NAME FAULTS WANT REGEX [HOST OPTIONS...]: the relay plays FAULTS; the host exits WANT saying

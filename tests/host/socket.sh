@@ -120,6 +120,13 @@ run "verify the tiger over unix: (40 commands a frame): PASS" 0 'check: PASS: 6 
 same "unix: results identical to the simulated board's" r0/vectors.actual.bin
 how "clean run: the board took every frame once, no NAK, one reset; the host sent nothing again, no timeout" \
     '[ "$(bstat dup)/$(bstat gap)/$(bstat bad)/$(bstat naks)/$(bstat resets)/$(hstat retransmits)/$(hstat timeouts)" = 0/0/0/0/1/0/0 ]'
+# a board that takes at most 4 KiB of DATA (identify's capabilities, docs/board.md 3.1): the host's
+# frames of its default size are cut to fit, to the most whole commands that fit (315: 4,095 bytes)
+board --unix b.sock --vectors tiger/vectors.bin --data-kib 4
+run "verify the tiger on a board of 4 KiB DATA payloads: PASS" 0 'check: PASS: 6 comparisons' -- \
+    "$H" verify tiger/vectors.bin --transport socket --connect "$SOCK" --timeout "$EF_LINK_MS" --results rk --json
+same "4 KiB DATA payloads: results identical to the simulated board's" rk/vectors.actual.bin
+how "4 KiB DATA payloads: the largest DATA the board took is 315 commands (4,095 bytes)" '[ "$(bstat data_max)" = 4095 ]'
 board --tcp 0 --vectors tiger/vectors.bin
 run "verify the tiger over tcp:127.0.0.1:PORT: PASS" 0 'check: PASS: 6 comparisons' -- \
     "$H" verify tiger/vectors.bin "${LINK[@]}" --connect "tcp:127.0.0.1:$port" --results r1 --json

@@ -68,6 +68,15 @@ has "list two boards, bus 0" "$T/l2.out" '"where": "0:5", "ours": true, "descrip
 emu --fault magic=XXXX --run "'$H' list >'$T/l3.out' 2>&1"
 has "list foreign device" "$T/l3.out" '(not ours) 1209:0001 not an edgeflag board (identify magic 58 58 58 58, expected "EFB1")'
 
+# ---- identify --save over usb (auto: the one board present): the record gen --dut-file reads
+emu --report "$T/id.rep" --run "'$H' identify --save '$T/usb.id' >'$T/id.out' 2>&1"
+expect "identify exit" 0 "$(kv "$T/id.rep" run1_exit)"
+has "identify over usb" "$T/id.out" "usb: serial EMU0001, protocol 1, samples 8/16/32, canvas up to 16384x16384, 4194304 edges"
+expect "identify --save: 48 bytes from EFB1" "48 EFB1" "$(wc -c <"$T/usb.id" 2>/dev/null) $(head -c 4 "$T/usb.id" 2>/dev/null)"
+expect "identify sends no data" 0 "$(kv "$T/id.rep" out_bytes)"
+"$EF" gen --list --dut-file "$T/usb.id" >"$T/id.tsv" 2>"$T/id.err"
+expect "gen --dut-file on the saved record: exit, errors, fitted" "0  0" "$? $(cat "$T/id.err") $(grep -c 'fitted to the DUT' "$T/id.tsv")"
+
 # ---- the reference: an uninterrupted stream
 emu --report "$T/ref.rep" --dut-log "$T/ref.dut" --run "'$H' stream '$V' $S --results '$T/ref' 2>'$T/ref.err'"
 expect "stream exit" 0 "$(kv "$T/ref.rep" run1_exit)"

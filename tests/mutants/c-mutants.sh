@@ -155,6 +155,7 @@ for l in open(sys.argv[2]):
 src = {}
 per = {}
 surv = []
+apart = []
 for f, mid, line, op, old, new, verdict in rows:
     if f not in src:
         src[f] = open(sys.argv[3] + "/" + f).read().split("\n")
@@ -170,6 +171,9 @@ for f, mid, line, op, old, new, verdict in rows:
         c[2] += 1
     elif (f, op, old, new, text) in eqv:
         c[4] += 1
+        kind = eqv[(f, op, old, new, text)].split(" ")[0].rstrip(":")
+        if kind in ("UNREACHABLE", "TIMING"):
+            apart.append("listed %s (counted with the equivalent ones, not a behavioural equivalence): %s:%s %s: %s -> %s" % (kind, f, line, op, old, new))
     else:
         c[5] += 1
         surv.append("survivor: %s:%s %s: %s -> %s  | %s" % (f, line, op, old, new, text))
@@ -181,7 +185,7 @@ for f in sorted(per):
     ne = c[0] - c[1] - c[4]
     print("%-18s %8d %10d %9d %7d %10d %9d %11.1f%% %11.1f%%" % (f, c[0], c[1], c[2], c[3], c[4], c[5],
           100.0 * c[2] / ne if ne else 0, 100.0 * (c[2] + c[3]) / ne if ne else 0))
-for l in surv:
+for l in apart + surv:
     print(l)
 print("SURVIVORS %d" % len(surv))
 EOF

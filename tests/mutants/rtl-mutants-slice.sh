@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # tests/mutants/rtl-mutants-slice.sh - make test-rtl-mutants, the slice of make rtl-mutants in
-# make test (issue 27): tests/mutants/rtl-mutants.sh under Icarus at NS 8 on its small cases
-# (<= 4,000 cycles) and dv/tb/tb_err.v, over the mutants named in tests/mutants/slice_keys.tsv.
+# make test (issue 27): tests/mutants/rtl-mutants.sh under Icarus at NS 8 (the reference and the fast
+# configuration) on its small cases (<= 4,000 cycles) and dv/tb/tb_err.v, over the mutants named in
+# tests/mutants/slice_keys.tsv.
 #   1. with EF_MUT_REQUIRE=1 the run must pass, and each mutant get the verdict the file names:
 #      killed by a case (the plain dumps, tb_err's limit checks, tb_raster's pulse check), or
 #      equivalent (listed in dv/mutants/equivalent.tsv);

@@ -113,12 +113,12 @@ buildone() {   # buildone KEY: NS, or fNS for the fast configuration at NS
     [ "$1" != "$ns" ] && { def=(-DEF_FAST); src=("${MUTFAST[@]}"); }
     if [ "$sim" = icarus ]; then
         mkdir -p "$work/vl_$1"
-        iverilog -g2005 -I"$work/mut" "${def[@]}" -o "$work/vl_$1/t.vvp" -Ptb_raster.NS="$ns" -Ptb_raster.W_MAX=$WM -Ptb_raster.H_MAX=$HM \
+        iverilog -g2005 -I"$work/mut" -I"$root/dv/tb" "${def[@]}" -o "$work/vl_$1/t.vvp" -Ptb_raster.NS="$ns" -Ptb_raster.W_MAX=$WM -Ptb_raster.H_MAX=$HM \
             -Ptb_raster.E_MAX=$EM -Ptb_raster.FB_BITS=16 "$root/dv/tb/tb_raster.v" "${src[@]}" >"$work/build_$1.log" 2>&1 ||
             { tail -20 "$work/build_$1.log"; return 1; }
         return
     fi
-    verilator --binary --timing -O1 -Wno-fatal -Wno-WIDTH -I"$work/mut" "${def[@]}" --x-assign unique --x-initial unique --Mdir "$work/vl_$1" --top-module tb_raster \
+    verilator --binary --timing -O1 -Wno-fatal -Wno-WIDTH -I"$work/mut" -I"$root/dv/tb" "${def[@]}" --x-assign unique --x-initial unique --Mdir "$work/vl_$1" --top-module tb_raster \
         -GNS="$ns" -GW_MAX=$WM -GH_MAX=$HM -GE_MAX=$EM -GFB_BITS=16 "$root/dv/tb/tb_raster.v" "${src[@]}" \
         >"$work/build_$1.log" 2>&1 || { tail -20 "$work/build_$1.log"; return 1; }
 }
@@ -126,7 +126,7 @@ buildone() {   # buildone KEY: NS, or fNS for the fast configuration at NS
 # (as rtl-test runs it; it compiles in a second)
 builderr() {
     [ -f "$work/err.vvp" ] && [ -n "${EF_MUT_REUSE:-}" ] && return 0
-    iverilog -g2005 -I"$work/mut" -o "$work/err.vvp" "$root/dv/tb/tb_err.v" "${MUTRTL[@]}" >"$work/build_err.log" 2>&1 ||
+    iverilog -g2005 -I"$work/mut" -I"$root/dv/tb" -o "$work/err.vvp" "$root/dv/tb/tb_err.v" "${MUTRTL[@]}" >"$work/build_err.log" 2>&1 ||
         { tail -20 "$work/build_err.log"; return 1; }
 }
 pids=()

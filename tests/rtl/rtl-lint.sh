@@ -181,8 +181,9 @@ vl ef_spanq --top-module ef_spanq $FAST || l_ok=0
 n=$((n + 3))
 # the includes, as the RTL's own files (linted through every module above)
 linted+=("$R/ef_ifaces.vh" "$R/ef_ns.vh" "$R/ef_rooks.vh")
-# the block benches' file helpers, linted through every bench that includes them
-linted+=(dv/tb/tb_files.vh)
+# the block benches' file helpers, and the port list of the benches that instantiate the whole
+# pipeline (tb_raster, tb_err, dut_rtl), linted through every bench that includes them
+linted+=(dv/tb/tb_files.vh dv/tb/ef_raster_conn.vh)
 TB=dv/tb
 # shellcheck disable=SC2086
 {

@@ -44,7 +44,7 @@ fi
 for cfg in $configs; do
     case $cfg in reference) files=$RTL def=() ;; fast) files=$FAST def=(-DEF_FAST) ;; *) echo "rtl-regress: EF_RTL_CONFIGS: reference and/or fast, not '$cfg'"; exit 2 ;; esac
     for ns in 8 16 32; do
-        verilator --binary --timing "${VLOPT[@]}" -Wall "$root/dv/lint/waivers.vlt" -I"$R" "${def[@]}" --Mdir "$work/vl_${cfg}_$ns" --top-module tb_raster \
+        verilator --binary --timing "${VLOPT[@]}" -Wall "$root/dv/lint/waivers.vlt" -I"$R" -I"$root/dv/tb" "${def[@]}" --Mdir "$work/vl_${cfg}_$ns" --top-module tb_raster \
             -GNS=$ns -GW_MAX="$WM" -GH_MAX="$HM" -GE_MAX="$EM" -GFB_BITS=21 -GCMD_MAX=1048576 \
             "$root/dv/tb/tb_raster.v" $files >"$work/build_${cfg}_$ns.log" 2>&1 || { tail "$work/build_${cfg}_$ns.log"; exit 1; }
     done

@@ -118,7 +118,7 @@ build_iv() {
         bash "$root/dv/rtl-variant.sh" "$src" "$fault" || { echo "RESULT FAIL build icarus ${top}NS=$ns $fault: the variant"; return; }
     fi
     # shellcheck disable=SC2046 # the file list splits on purpose
-    iverilog -g2005 -I"$src" "${def[@]}" -o "$o/t.vvp" -Ptb_raster.NS="$ns" -Ptb_raster.W_MAX=$WM -Ptb_raster.H_MAX=$HM \
+    iverilog -g2005 -I"$src" -I"$TB" "${def[@]}" -o "$o/t.vvp" -Ptb_raster.NS="$ns" -Ptb_raster.W_MAX=$WM -Ptb_raster.H_MAX=$HM \
         -Ptb_raster.E_MAX=$EM -Ptb_raster.FB_BITS=16 "$TB/tb_raster.v" $($files "$src") &&
         echo "RESULT PASS build icarus ${top}NS=$ns ${fault}" || echo "RESULT FAIL build icarus ${top}NS=$ns $fault"
 }
@@ -128,7 +128,7 @@ build_vl() {
     mkdir -p "$o"
     # random initial state (run with +verilator+rand+reset+2, a seed per case): a register the
     # reset forgets, or a wrong reset value, shows instead of hiding behind zeroes (issue 27)
-    verilator --binary --timing -O1 -Wno-fatal -Wno-WIDTH -I"$R" "${def[@]}" --x-assign unique --x-initial unique --Mdir "$o/obj" --top-module tb_raster \
+    verilator --binary --timing -O1 -Wno-fatal -Wno-WIDTH -I"$R" -I"$TB" "${def[@]}" --x-assign unique --x-initial unique --Mdir "$o/obj" --top-module tb_raster \
         -GNS="$ns" -GW_MAX=$WM -GH_MAX=$HM -GE_MAX=$EM -GFB_BITS=16 "$TB/tb_raster.v" $files >"$o/build.log" 2>&1 &&
         echo "RESULT PASS build verilator ${top}NS=$ns" || { tail -20 "$o/build.log"; echo "RESULT FAIL build verilator ${top}NS=$ns"; }
 }
@@ -273,7 +273,7 @@ done
 dut_err() {
     local d=$work/err out rc
     mkdir -p "$d"
-    iverilog -g2005 -I"$R" -o "$d/t.vvp" "$TB/tb_err.v" $RTL >"$d/build.log" 2>&1 ||
+    iverilog -g2005 -I"$R" -I"$TB" -o "$d/t.vvp" "$TB/tb_err.v" $RTL >"$d/build.log" 2>&1 ||
         { cat "$d/build.log"; echo "RESULT FAIL dut-err (icarus): the build"; return; }
     out=$( (vvp -n "$d/t.vvp" 2>&1) 2>/dev/null); rc=$?
     echo "$out"
