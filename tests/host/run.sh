@@ -103,6 +103,17 @@ for at in 5 60; do
     cmp -s R/vectors.actual.bin clean.bin && ok "resume at $at: results byte-identical to a clean run" ||
         bad "resume at $at: results differ"
 done
+# unplugged at the first frame (START): the host kept a resume state with nothing in it and the board has
+# no run; --resume, as the host's message says, starts over (a host killed between its reset and START, as
+# below, leaves the same state)
+rm -rf S R
+run "unplug at host frame 1: exit 5, says --resume" 5 'after 0 of .*--resume' -- "$H" verify tiger/vectors.bin \
+    "${SIM[@]}" --frame-cmds 40 --sim-state S --results R --sim-faults unplug=1
+run "resume with nothing begun: starts from frame 0, PASS" 0 'no result was kept: starting the run from frame 0' -- "$H" verify \
+    tiger/vectors.bin "${SIM[@]}" --frame-cmds 40 --sim-state S --results R --resume --json
+cmp -s R/vectors.actual.bin clean.bin && [ "$(json resumed_from_frame)" = 0 ] &&
+    ok "resume with nothing begun: results byte-identical to a clean run" ||
+    bad "resume with nothing begun: results differ or resumed_from_frame $(json resumed_from_frame)"
 # the host killed (SIGKILL) at some moment of a long run; the board (its state in S) lives on
 "$E" vectors "$SVG/tiger.svg" -o big --size 640x480 --formats bin >/dev/null 2>&1
 "$H" stream big/vectors.bin "${SIM[@]}" --interfaces pix,span --results BC --quiet
@@ -155,10 +166,12 @@ cmp -s R/vectors.actual.bin clean.bin && ok "resume after stall: byte-identical"
 run "board reset mid-run: exit 6" 6 'reset or lost its state' -- "$H" verify tiger/vectors.bin "${SIM[@]}" \
     --frame-cmds 40 --sim-faults reset=30 --results R2
 rm -rf S R
-"$H" stream tiger/vectors.bin "${SIM[@]}" --frame-cmds 40 --sim-state S --results R --sim-faults unplug=5 \
+"$H" stream tiger/vectors.bin "${SIM[@]}" --frame-cmds 40 --sim-state S --results R --sim-faults unplug=420 \
     >/dev/null 2>&1
 printf '\377\377\377\377' >>S/board.log    # the simulated board is power-cycled (docs/board.md 5.3)
-run "power-cycled board then --resume: exit 6, nothing to resume" 6 'no run to resume' -- "$H" verify \
+[ "$(sed -n 's/^res_next //p' R/.resume)" -gt 0 ] 2>/dev/null && ok "unplug at 420 (results flowing): result frames kept" ||
+    bad "unplug at 420: no result frame kept, the power-cycle case below would start over" "$(cat R/.resume)"
+run "power-cycled board then --resume (results kept): exit 6, nothing to resume" 6 'no run to resume' -- "$H" verify \
     tiger/vectors.bin "${SIM[@]}" --frame-cmds 40 --sim-state S --results R --resume
 run "another device (no magic): exit 6" 6 'did not answer identify as an edgeflag board' -- \
     "$H" stream small/vectors.bin "${SIM[@]}" --sim-faults not-ours=1
