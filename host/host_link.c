@@ -1028,22 +1028,34 @@ static int run(hl *h)
                     "the board cannot return the internal interfaces asked for (it returns "
                     "only what identify lists); use --interfaces pix");
 
+    uint8_t st[EF_PROTO_STATUS_LEN] = { 0 };
+    int fresh = !o->resume;
     if (o->resume) {
         const int s = load_state(h);
         if (s != 0)
             return fail(h, EF_HX_USAGE,
                         s == -1 ? "--resume: no resume state in the results folder (nothing was interrupted)"
                                 : "--resume: the resume state belongs to another vectors file or is damaged");
-        uint8_t st[EF_PROTO_STATUS_LEN];
         if ((r = h->ops->status(h->l, st)) < 0)
             return r == EF_HOST_ENODEV || r == EF_HOST_ETIMEDOUT ? lost(h, r) : link_fail(h, "status", r);
         if (memcmp(st, EF_PROTO_MAGIC, 4) != 0)
             return fail(h, EF_HX_BOARD, "the board's status answer is malformed");
+        if (st[6] == EF_BS_IDLE || ef_get32(st + 8) == 0) {
+            /* The state is written at the run's reset, before START: a host
+             * stopped in between leaves a state with nothing in it and a board
+             * without the run (so does a board reset before any result was
+             * kept).  Starting over then loses nothing. */
+            if (h->phase == PH_SELECT || h->res_next != 0 || h->part_bytes != 0)
+                return fail(h, EF_HX_BOARD,
+                            "the board has no run to resume (it was reset or power-cycled); run "
+                            "again without --resume");
+            fprintf(stderr, "edgeflag-host: --resume: the board has no run (it never took this run's first frame, "
+                            "or it was reset) and no result was kept: starting the run from frame 0\n");
+            fresh = 1;
+        }
+    }
+    if (!fresh) {
         const uint32_t rx_seq = ef_get32(st + 8), res_made = ef_get32(st + 12);
-        if (st[6] == EF_BS_IDLE || rx_seq == 0)
-            return fail(h, EF_HX_BOARD,
-                        "the board has no run to resume (it was reset or power-cycled); run "
-                        "again without --resume");
         uint64_t taken = (uint64_t)(rx_seq - 1) * h->per_frame; /* commands in the DATA frames it took */
         if (taken > h->ncmds)
             taken = h->ncmds;

@@ -22,13 +22,14 @@
 // eid.  The shape's row range row_first..row_last (the first row holding
 // an edge, the last row any edge reaches) and shape_any are valid from the
 // eos et_wr's cycle (T0 - 1) until the next shape's first record; shape_go
-// pulses in the cycle after the eos (T0) with shape_nedges; the edge
-// counter restarts for the next shape.
+// pulses in the cycle after the eos (T0); the edge counter restarts for the
+// next shape.  (ef_raster uses none of these: its AET finds rows by its own
+// occupancy map.  dv/tb/tb_etm.v checks them.)
 //
 // Row requests: row_req in cycle u (with row_req_row = j) reads slot j;
 // from u+1 the list is presented on et_rd, one edge per cycle while
-// et_rd_ready, et_rd_last marking its last edge; row_ack pulses in u+1 with
-// row_nonempty.  The slot is cleared in u+1 (a slot head is cleared when
+// et_rd_ready, et_rd_last marking its last edge (an empty slot presents
+// nothing).  The slot is cleared in u+1 (a slot head is cleared when
 // its row is taken, microarch 2), so the table is clean for the next shape.
 // The AET issues row_req for row j in the cycle before j's first cycle (for
 // the first row: the eos et_wr's cycle, T0 - 1, with row_first, which is
@@ -77,15 +78,12 @@ module ef_etm #(
     output reg         shape_any,     // the shape has a record (from the eos cycle on)
     output reg  [`EF_ET_WR_SLOT_W-1:0] row_first,     // its first and last rows (valid with shape_any)
     output reg  [`EF_ET_WR_SLOT_W-1:0] row_last,
-    output reg  [22:0] shape_nedges,  // its records (from shape_go on)
     output reg         err_full,      // sticky: more than E_MAX records in a shape
 
     // row requests
     input  wire        row_req,
     output wire        row_req_ready,
     input  wire [`EF_ET_RD_ROW_W-1:0] row_req_row,
-    output reg         row_ack,       // pulse in the cycle after the request
-    output wire        row_nonempty,  // with row_ack: slot j holds edges
 
     // et_rd: row[13:0] eid[21:0]
     output wire        et_rd_valid,
@@ -182,7 +180,6 @@ module ef_etm #(
     assign row_req_ready = init_done && !busy_rd && !take_e;   // one slot read per cycle
     wire req = row_req && row_req_ready;
     wire head_cycle = (rs == R_HEAD);
-    assign row_nonempty = head_cycle && cur_v;
 
     assign et_rd_valid = (head_cycle && cur_v) || (rs == R_HELD) || (rs == R_CHAIN);
     wire [EW-1:0] eid  = head_cycle ? cur_head : (rs == R_HELD) ? hd_head : n_rd;
@@ -217,7 +214,6 @@ module ef_etm #(
             rs        <= R_IDLE;
             shape_go  <= 1'b0;
             shape_any <= 1'b0;
-            row_ack   <= 1'b0;
             err_full  <= 1'b0;
         end else begin
             if (!init_done) begin
@@ -251,15 +247,13 @@ module ef_etm #(
                 err_full <= 1'b1;
             shape_go <= take && et_wr_eos;
             if (take && et_wr_eos) begin
-                shape_nedges <= wcnt;
-                wcnt         <= 23'd0;
+                wcnt      <= 23'd0;
                 if (fresh)
                     shape_any <= 1'b0;   // a shape without records
-                fresh        <= 1'b1;
+                fresh     <= 1'b1;
             end
 
             // row reads
-            row_ack <= req;
             case (rs)
                 R_IDLE:
                     if (req) begin

@@ -147,7 +147,7 @@ module ef_raster #(
     );
 
     wire        etm_init, slb_init;
-    wire        row_req, row_req_ready, row_ack, row_nonempty, et_rd_last;
+    wire        row_req, row_req_ready, et_rd_last;
     wire [`EF_ET_RD_ROW_W-1:0] row_req_row;
     wire        rec_re, rec_dir;
     wire [`EF_ET_RD_EID_W-1:0] rec_ra;
@@ -160,7 +160,6 @@ module ef_raster #(
     wire [`EF_ET_WR_QS_W-1:0] rec_qs;
     wire        shape_go, shape_any, err_full;
     wire [`EF_ET_WR_SLOT_W-1:0] row_first, row_last;
-    wire [22:0] shape_nedges;
 
     ef_etm #(.NS(NS), .H_MAX(H_MAX), .E_MAX(E_MAX)) u_etm (
         .clk(clk), .rst(rst), .init_done(etm_init),
@@ -168,9 +167,8 @@ module ef_raster #(
         .et_wr_r0(et_wr_r0), .et_wr_r1(et_wr_r1), .et_wr_x(et_wr_x), .et_wr_e(et_wr_e), .et_wr_qs(et_wr_qs),
         .et_wr_rs(et_wr_rs), .et_wr_dy(et_wr_dy), .et_wr_dir(et_wr_dir),
         .shape_go(shape_go), .shape_any(shape_any), .row_first(row_first), .row_last(row_last),
-        .shape_nedges(shape_nedges), .err_full(err_full),
+        .err_full(err_full),
         .row_req(row_req), .row_req_ready(row_req_ready), .row_req_row(row_req_row),
-        .row_ack(row_ack), .row_nonempty(row_nonempty),
         .et_rd_valid(et_rd_valid), .et_rd_ready(et_rd_ready), .et_rd_row(et_rd_row), .et_rd_eid(et_rd_eid),
         .et_rd_last(et_rd_last),
         .rec_re(rec_re), .rec_ra(rec_ra), .rec_r0(rec_r0), .rec_r1(rec_r1), .rec_x(rec_x), .rec_e(rec_e),
@@ -259,6 +257,6 @@ module ef_raster #(
     assign err = cfg_err || err_full;
 
     /* verilator lint_off UNUSEDSIGNAL */
-    wire unused = slb_idle_unused ^ row_req_ready ^ shape_go ^ shape_any ^ row_ack ^ row_nonempty ^ (^row_first) ^ (^row_last) ^ (^shape_nedges);
+    wire unused = slb_idle_unused ^ row_req_ready ^ shape_go ^ shape_any ^ (^row_first) ^ (^row_last);
     /* verilator lint_on UNUSEDSIGNAL */
 endmodule

@@ -52,9 +52,6 @@ module tb_backend #(
 
     // ------------------------------------------------ ETM <-> AET
     wire          row_req, row_req_ready, etm_init;
-    /* verilator lint_off UNUSEDSIGNAL */
-    wire          row_ack, row_nonempty;     // ETM's status outputs the AET does not use either
-    /* verilator lint_on UNUSEDSIGNAL */
     wire [13:0]   row_req_row;
     wire          rd_valid, rd_ready, rd_last;
     wire [13:0]   rd_row;
@@ -69,7 +66,6 @@ module tb_backend #(
     /* verilator lint_off UNUSEDSIGNAL */
     wire          shape_go, shape_any, err_full;
     wire [13:0]   row_first, row_last;
-    wire [22:0]   shape_nedges;
     /* verilator lint_on UNUSEDSIGNAL */
 
     // ------------------------------------------------ DUT
@@ -100,9 +96,8 @@ module tb_backend #(
         .et_wr_r0(etw_r0), .et_wr_r1(etw_r1), .et_wr_x(etw_x), .et_wr_e(etw_e), .et_wr_qs(etw_qs),
         .et_wr_rs(etw_rs), .et_wr_dy(etw_dy), .et_wr_dir(etw_dir),
         .shape_go(shape_go), .shape_any(shape_any), .row_first(row_first), .row_last(row_last),
-        .shape_nedges(shape_nedges), .err_full(err_full),
+        .err_full(err_full),
         .row_req(row_req), .row_req_ready(row_req_ready), .row_req_row(row_req_row),
-        .row_ack(row_ack), .row_nonempty(row_nonempty),
         .et_rd_valid(rd_valid), .et_rd_ready(rd_ready), .et_rd_row(rd_row), .et_rd_eid(rd_eid),
         .et_rd_last(rd_last),
         .rec_re(rec_re), .rec_ra(rec_ra), .rec_r0(rec_r0), .rec_r1(rec_r1), .rec_x(rec_x), .rec_e(rec_e),

@@ -54,8 +54,7 @@ module tb_etm #(
     reg [13:0] row_req_row = 14'd0;
     wire       init_done, wr_ready, shape_go, shape_any, err_full, row_req_ready;
     /* verilator lint_off UNUSEDSIGNAL */
-    wire       row_ack, row_nonempty, rd_last;   // the dump and check show what they would
-    wire [22:0] shape_nedges;
+    wire       rd_last;   // the dump and check show what it would
     /* verilator lint_on UNUSEDSIGNAL */
     wire [13:0] row_first, row_last, rd_row;
     wire       rd_valid;
@@ -72,9 +71,8 @@ module tb_etm #(
         .et_wr_r0(wr_r0), .et_wr_r1(wr_r1), .et_wr_x(wr_x), .et_wr_e(wr_e), .et_wr_qs(wr_qs),
         .et_wr_rs(wr_rs), .et_wr_dy(wr_dy), .et_wr_dir(wr_dir),
         .shape_go(shape_go), .shape_any(shape_any), .row_first(row_first), .row_last(row_last),
-        .shape_nedges(shape_nedges), .err_full(err_full),
+        .err_full(err_full),
         .row_req(row_req), .row_req_ready(row_req_ready), .row_req_row(row_req_row),
-        .row_ack(row_ack), .row_nonempty(row_nonempty),
         .et_rd_valid(rd_valid), .et_rd_ready(1'b1), .et_rd_row(rd_row), .et_rd_eid(rd_eid),
         .et_rd_last(rd_last),
         .rec_re(rd_valid), .rec_ra(rd_eid), .rec_r0(rec_r0), .rec_r1(rec_r1), .rec_x(rec_x), .rec_e(rec_e),

@@ -7,8 +7,10 @@
 #                        with its verdict; then the score check must fail without an equivalent line
 #   make test-rtl-cov    a slice of the code coverage (Verilator --coverage at NS 8 over a third of
 #                        rtl-test's cases, the per-module summary; a Verilator build: not in make test)
-#   make rtl-coverage    the full code coverage (rtl-test's cases + the level-1 regression at
-#                        8/16/32 x 3 rules), HTML in build/rtl-coverage/html; targets required
+#   make rtl-coverage    the code coverage of both configurations (reference and fast: rtl-test's
+#                        cases, the directed ones, the level-1 regression at three NS x rule settings
+#                        a case each, cases of at most 250,000 cycles: the README's run; override with
+#                        EF_COV_REGRESS, EF_COV_REG_MAXCYC), HTML in build/rtl-coverage/html; targets required
 #   make rtl-mutants     the mutation run over rtl/ (EF_MUT_SAMPLE, EF_MUT_SEED: see the script)
 #   make c-mutants       mutants of board/ef_board.c and host/host_link.c against make test-host
 .PHONY: test-coverage test-fusesoc test-rtl-cov test-rtl-mutants rtl-coverage rtl-mutants c-mutants
@@ -21,7 +23,8 @@ test-rtl-cov: cli
 test-rtl-mutants: cli
 	@bash tests/mutants/rtl-mutants-slice.sh $(BUILD)
 rtl-coverage: cli
-	@EF_COV_REQUIRE=1 bash tests/cov/rtl-coverage.sh $(BUILD)
+	@EF_COV_REQUIRE=1 EF_COV_REGRESS=$${EF_COV_REGRESS:-3} EF_COV_REG_MAXCYC=$${EF_COV_REG_MAXCYC:-250000} \
+	    bash tests/cov/rtl-coverage.sh $(BUILD)
 rtl-mutants: cli
 	@bash tests/mutants/rtl-mutants.sh $(BUILD)
 c-mutants: cli host

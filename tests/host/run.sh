@@ -64,12 +64,6 @@ for v in small holes tiger; do
         "$H" verify $v/vectors.bin "${SIM[@]}"
 done
 cp tiger/board/vectors.actual.bin clean.bin
-# the default --timeout (2,000 ms, docs/board.md 7, --help) when none is given: a small run needs no timeout and
-# sends nothing again
-run "verify small with the default --timeout: PASS" 0 'check: PASS: 6 comparisons' -- \
-    "$H" verify small/vectors.bin --transport sim --results dflt --json
-[ "$(json timeouts)" = 0 ] && [ "$(json retransmits)" = 0 ] && ok "the default --timeout: no timeout, nothing sent again" ||
-    bad "the default --timeout" "$(cat out.txt)"
 run "stream: results in the default folder, summary line" 0 'commands in .* frames .* result records \(pix\)' -- \
     "$H" stream small/vectors.bin "${SIM[@]}"
 [ -s small/board/vectors.actual.bin ] && [ ! -e small/board/.resume ] && [ ! -e small/board/.results.part ] &&
@@ -109,6 +103,17 @@ for at in 5 60; do
     cmp -s R/vectors.actual.bin clean.bin && ok "resume at $at: results byte-identical to a clean run" ||
         bad "resume at $at: results differ"
 done
+# unplugged at the first frame (START): the host kept a resume state with nothing in it and the board has
+# no run; --resume, as the host's message says, starts over (a host killed between its reset and START, as
+# below, leaves the same state)
+rm -rf S R
+run "unplug at host frame 1: exit 5, says --resume" 5 'after 0 of .*--resume' -- "$H" verify tiger/vectors.bin \
+    "${SIM[@]}" --frame-cmds 40 --sim-state S --results R --sim-faults unplug=1
+run "resume with nothing begun: starts from frame 0, PASS" 0 'no result was kept: starting the run from frame 0' -- "$H" verify \
+    tiger/vectors.bin "${SIM[@]}" --frame-cmds 40 --sim-state S --results R --resume --json
+cmp -s R/vectors.actual.bin clean.bin && [ "$(json resumed_from_frame)" = 0 ] &&
+    ok "resume with nothing begun: results byte-identical to a clean run" ||
+    bad "resume with nothing begun: results differ or resumed_from_frame $(json resumed_from_frame)"
 # the host killed (SIGKILL) at some moment of a long run; the board (its state in S) lives on
 "$E" vectors "$SVG/tiger.svg" -o big --size 640x480 --formats bin >/dev/null 2>&1
 "$H" stream big/vectors.bin "${SIM[@]}" --interfaces pix,span --results BC --quiet
@@ -136,7 +141,7 @@ done
 # last at 100 % with all 30
 if command -v script >/dev/null; then
     timeout "$EF_GUARD_S" script -qfec "'$H' verify big/vectors.bin --transport sim --timeout $EF_LINK_MS --frame-cmds 10 --interfaces pix --results pb" \
-        /dev/null >tty.txt 2>&1
+        /dev/null </dev/null >tty.txt 2>&1
     prc=$?
     tr '\r' '\n' <tty.txt | awk -v rc=$prc '
         /^\[[#.]+\] +[0-9]+%/ { n++; bar = substr($0, 2, 30); h = gsub(/#/, "", bar); p = $2 + 0
@@ -161,10 +166,12 @@ cmp -s R/vectors.actual.bin clean.bin && ok "resume after stall: byte-identical"
 run "board reset mid-run: exit 6" 6 'reset or lost its state' -- "$H" verify tiger/vectors.bin "${SIM[@]}" \
     --frame-cmds 40 --sim-faults reset=30 --results R2
 rm -rf S R
-"$H" stream tiger/vectors.bin "${SIM[@]}" --frame-cmds 40 --sim-state S --results R --sim-faults unplug=5 \
+"$H" stream tiger/vectors.bin "${SIM[@]}" --frame-cmds 40 --sim-state S --results R --sim-faults unplug=420 \
     >/dev/null 2>&1
 printf '\377\377\377\377' >>S/board.log    # the simulated board is power-cycled (docs/board.md 5.3)
-run "power-cycled board then --resume: exit 6, nothing to resume" 6 'no run to resume' -- "$H" verify \
+[ "$(sed -n 's/^res_next //p' R/.resume)" -gt 0 ] 2>/dev/null && ok "unplug at 420 (results flowing): result frames kept" ||
+    bad "unplug at 420: no result frame kept, the power-cycle case below would start over" "$(cat R/.resume)"
+run "power-cycled board then --resume (results kept): exit 6, nothing to resume" 6 'no run to resume' -- "$H" verify \
     tiger/vectors.bin "${SIM[@]}" --frame-cmds 40 --sim-state S --results R --resume
 run "another device (no magic): exit 6" 6 'did not answer identify as an edgeflag board' -- \
     "$H" stream small/vectors.bin "${SIM[@]}" --sim-faults not-ours=1

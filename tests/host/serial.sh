@@ -220,7 +220,7 @@ done
 # '#'), and one between 1 % and 75 % (0.2 s or more after the start) shows an ETA above 0.0 s
 if command -v script >/dev/null; then
     "$E" vectors "$SVG/tiger.svg" -o big --size 640x480 --formats bin >/dev/null 2>&1
-    timeout "$EF_GUARD_S" script -qfec "'$H' verify big/vectors.bin ${LINK[*]} --results pbar" /dev/null >tty.txt 2>&1
+    timeout "$EF_GUARD_S" script -qfec "'$H' verify big/vectors.bin ${LINK[*]} --results pbar" /dev/null </dev/null >tty.txt 2>&1
     prc=$?
     tr '\r' '\n' <tty.txt | awk -v rc=$prc '
         /^\[[#.]+\] +[0-9]+%/ { n++; bar = substr($0, 2, 30); h = gsub(/#/, "", bar); p = $2 + 0

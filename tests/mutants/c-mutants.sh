@@ -66,7 +66,7 @@ declare -A hostio_ok=()
 hostio() {
     local s n
     for s in socket serial; do
-        timeout "$tmo" bash "$root/tests/host/$s.sh" "$b" >"$work/probe.log" 2>&1
+        timeout "$tmo" bash "$root/tests/host/$s.sh" "$b" </dev/null >"$work/probe.log" 2>&1
         n=$(grep -c '^ok - ' "$work/probe.log")
         if [ -z "${hostio_ok[$s]:-}" ]; then hostio_ok[$s]=$n; [ "$n" -gt 0 ] || return 1
         elif [ "$n" -lt "${hostio_ok[$s]}" ]; then return 1; fi
@@ -77,7 +77,7 @@ relink || { cat "$work/link.log"; echo "FAIL c-mutants: the copy does not link";
 # The baseline: what tests/host/run.sh says of the unmutated copy.  A check that already fails
 # there (a test out of step with the tree) is no oracle: a mutant is killed when fewer checks
 # pass than unmutated ("ok - " lines), or the run times out.
-timeout "$tmo" bash "$root/tests/host/run.sh" "$b" >"$work/m0.log" 2>&1
+timeout "$tmo" bash "$root/tests/host/run.sh" "$b" </dev/null >"$work/m0.log" 2>&1
 grep '^FAIL - ' "$work/m0.log" >"$work/m0.fail"
 nok=$(grep -c '^ok - ' "$work/m0.log")
 [ "$nok" -gt 0 ] || { tail -20 "$work/m0.log"; echo "FAIL c-mutants: tests/host/run.sh passes nothing on the unmutated copy"; echo "0 passed, 1 failed"; exit 1; }
@@ -111,7 +111,8 @@ if sys.argv[4]:     # EF_CMUT_IDS: of the draw, only these FILE:ID
 print("\n".join(rows))
 EOF
     echo "c-mutants: $f: $(grep -c . "$work/sel.tsv") of $(grep -c . "$work/all.tsv") mutants drawn (seed $seed)"
-    while IFS=$'\t' read -r id line op old new; do
+    # the draw on fd 3: nothing a test runs (script(1) reads its stdin) can eat the list
+    while IFS=$'\t' read -r id line op old new <&3; do
         if [ "$(treestate)" != "$tree0" ]; then
             echo "FAIL c-mutants: the tree changed under the run (a commit or an edit): its verdicts would not be of one build"
             echo "1 passed, 1 failed"; exit 1
@@ -125,7 +126,7 @@ EOF
             if [ "${EF_CMUT_ORACLE:-}" = probe ]; then
                 : >"$work/run.log"; rc=0   # run.sh skipped: the draw's survivors of an earlier run
             else
-                timeout "$tmo" bash "$root/tests/host/run.sh" "$b" >"$work/run.log" 2>&1; rc=$?
+                timeout "$tmo" bash "$root/tests/host/run.sh" "$b" </dev/null >"$work/run.log" 2>&1; rc=$?
             fi
             nf=$(grep -m1 '^FAIL - ' "$work/run.log")
             if [ $rc = 124 ] || { [ "${EF_CMUT_ORACLE:-}" != probe ] && [ "$(grep -c '^ok - ' "$work/run.log")" -lt "$nok" ]; }; then
@@ -138,7 +139,7 @@ EOF
                 printf '%s\t%s\t%s\t%s\t%s\t%s\tSURVIVED\n' "$f" "$id" "$line" "$op" "$old" "$new" >>"$work/results.tsv"
             fi
         fi
-    done <"$work/sel.tsv"
+    done 3<"$work/sel.tsv"
     cp "$work/orig.o" "$obj"; touch "$obj"; relink
 done
 # the report: per file; a survivor listed in tests/mutants/c_equivalent.tsv (file, operator, old,
