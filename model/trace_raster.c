@@ -114,11 +114,11 @@ static void plot_edge(raster *r, ef_edge *E, int32_t row, int s0, int s1, int32_
 static uint64_t span_out(raster *r, int32_t y, int32_t x, int32_t len, uint32_t mask, uint64_t closed)
 {
     uint64_t a = closed + 1 > r->cov_free ? closed + 1 : r->cov_free, b = a;
-    if (r->overlap) { /* section 6: into the queue once span k - EF_SPANQ has left it */
+    if (r->overlap) { /* section 6: into the queue in the cycle after span k - EF_SPANQ left it */
         const uint64_t *old = &r->qstart[r->nspan % EF_SPANQ];
         a = closed + 1;
-        if (r->nspan >= EF_SPANQ && *old > a)
-            a = *old;
+        if (r->nspan >= EF_SPANQ && *old + 1 > a)
+            a = *old + 1;
         b = a > r->cov_free ? a : r->cov_free; /* COV starts it */
         r->qstart[r->nspan++ % EF_SPANQ] = b;
     }

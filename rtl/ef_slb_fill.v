@@ -60,20 +60,27 @@
 // ef_raster with SCHEDULE = 1).  The scan visits only the cells plotted in
 // the row instead of every cell of xmin .. xmax; everything else above
 // holds.  Plotted cells: a bit per cell, in NG = (W_MAX+1)/64 words of 64
-// bits (flip-flops), and a bit per word that says it is non-zero: a plot
-// sets its cell's bit and its word's bit in its stage 1; a scan step clears
-// its cell's bit (and the word's when the word becomes zero) in its stage 1,
-// and in the same cycle finds the next plotted cell: the least set bit of
-// the rest of the word, else of the least non-zero other word.  Cells are
-// visited in increasing order and cleared as they go, so "the next one" is
-// "the least set bit left".  Plots and scan steps never share a cycle
-// (plot_ready is low while scanning), so the bitmap has one writer at a
-// time; the reset sweep clears it with the cells.  Spans are unchanged: a
-// cell never plotted is empty, so stepping over it changes no mask, and a
-// span closed at a visited cell p is start .. p-1.  The scan's first step
-// is at xmin in the cycle after the row's last plot, as in the reference;
-// the flush step follows the last plotted cell.  SKIP = 0 (the default) is
-// the reference scan above, and none of this logic exists.
+// bits (flip-flops), and a bit per word (gnz) that says it is non-zero and
+// not yet taken by the scan; a word's bits count only while its gnz bit is
+// set (reset clears gnz alone).  A plot sets its cell's bit and its word's
+// gnz bit in its stage 1.  The next plotted cell is known a step ahead, so
+// no search sits between a step's stall and ptr (issue 25): while the row
+// is plotted, lwx and lw2 follow its two lowest non-empty words (the lowest
+// without xmin's own bit; the second with its index g2); the row's last
+// plot moves them into cw (the plotted cells of ptr's word right of ptr)
+// and nw (the next non-empty word, ng) and takes both words (clears their
+// gnz bits).  A step at ptr moves ptr to the least set bit of cw and clears
+// it there, or, with cw empty, to the least set bit of nw, whose other bits
+// become cw; only that word change reads the bitmap: nw takes the least
+// word gnz still holds (a priority encoder over NG bits and a multiplexer,
+// into a register).  Cells are visited once each in increasing order.
+// Plots and scan steps never share a cycle (plot_ready is low while
+// scanning).  Spans are unchanged: a cell never plotted is empty, so
+// stepping over it changes no mask, and a span closed at a visited cell p
+// is start .. p-1.  The scan's first step is at xmin in the cycle after the
+// row's last plot, as in the reference; the flush step follows the last
+// plotted cell.  SKIP = 0 (the default) is the reference scan above, and
+// none of this logic exists.
 //
 // Synthesizable Verilog-2005.
 `include "ef_ifaces.vh"
@@ -280,11 +287,20 @@ module ef_slb_fill #(
             // The skipping scan: only the plotted cells (see the head comment).
             localparam NG = (W_MAX + 1 + 63) / 64;  // words of the plotted-cell bitmap
             localparam GW = (NG > 1) ? $clog2(NG) : 1;
-            reg [63:0]   bm [0:NG-1];
-            reg [NG-1:0] gnz;          // word g of bm is non-zero
-            reg          ptr_ok;       // ptr holds a plotted cell (else: the flush is next)
+            reg [64*NG-1:0] bm;        // plotted cells: word g is bm[64*g +: 64], valid if gnz[g]
+            reg [NG-1:0]    gnz;       // word g is non-zero and the scan has not taken it
+            // Plotting: shadows of the row's two lowest non-empty words.
+            reg [63:0]      lwx;       // the lowest (xmin's) but xmin's own cell
+            reg [63:0]      lw2;       // the second lowest, word g2, if v2
+            reg [GW-1:0]    g2;
+            reg             v2;
+            // Scanning.
+            reg             ptr_ok;    // ptr holds a plotted cell (else: the flush is next)
+            reg [63:0]      cw;        // the plotted cells of ptr's word right of ptr
+            reg [63:0]      nw;        // the next non-empty word (ng), taken from bm, if nw_ok
+            reg [GW-1:0]    ng;
+            reg             nw_ok;
 
-            // The next plotted cell after ptr (the scan step at ptr clears ptr's bit).
             function [5:0] low64;           // index of the least set bit (0 if none)
                 input [63:0] v;
                 integer k;
@@ -303,44 +319,91 @@ module ef_slb_fill #(
                         if (v[k]) lowg = k[GW-1:0];
                 end
             endfunction
-            wire [GW-1:0] pg     = ptr[6 +: GW];
-            wire [63:0]   pbit   = 64'd1 << ptr[5:0];
-            wire [63:0]   w_rest = bm[pg] & ~pbit;
-            wire [NG-1:0] g_rest = gnz & ~({{(NG-1){1'b0}}, 1'b1} << pg);
-            wire [GW-1:0] g2     = lowg(g_rest);
-            wire          nxt_ok = (|w_rest) || (|g_rest);
-            wire [GW-1:0] nxt_g  = (|w_rest) ? pg : g2;
-            wire [5:0]    nxt_b  = low64((|w_rest) ? w_rest : bm[g2]);
-            wire [14:0]   nxt    = {9'd0, nxt_b} | ({{(15-GW){1'b0}}, nxt_g} << 6);
-            wire [GW-1:0] qg     = plot_q[6 +: GW];
-            /* verilator lint_off UNUSEDSIGNAL */
-            wire [31:0]   sweep32 = {{(32-AW){1'b0}}, sweep_addr};
-            /* verilator lint_on UNUSEDSIGNAL */
-            wire [GW-1:0] sweep_g = sweep32[6 +: GW];
 
+            // ---- plotting: the two lowest words after this plot
+            wire [GW-1:0] qg = plot_q[6 +: GW];
+            wire [GW-1:0] g1 = trk_xmin[6 +: GW];
+            wire [63:0]   qb = 64'd1 << plot_q[5:0];
+            wire [63:0]   xb = 64'd1 << trk_xmin[5:0];
+            reg  [63:0]   lwx_n, lw2_n;
+            reg  [GW-1:0] g2_n;
+            reg           v2_n;
+            always @* begin
+                lwx_n = lwx; lw2_n = lw2; g2_n = g2; v2_n = v2;
+                if (!trk_any) begin             // the row's first plot
+                    lwx_n = 64'd0; v2_n = 1'b0;
+                end else if (qg < g1) begin     // a new lowest word: the old one is second
+                    lw2_n = lwx | xb; g2_n = g1; v2_n = 1'b1; lwx_n = 64'd0;
+                end else if (qg == g1) begin
+                    if (plot_q < trk_xmin)
+                        lwx_n = lwx | xb;
+                    else if (plot_q > trk_xmin)
+                        lwx_n = lwx | qb;
+                end else if (!v2 || qg < g2) begin  // a new second word (it was empty)
+                    lw2_n = qb; g2_n = qg; v2_n = 1'b1;
+                end else if (qg == g2) begin
+                    lw2_n = lw2 | qb;
+                end
+            end
+            wire [GW-1:0] g1_n = new_xmin[6 +: GW];
+            // the words the scan takes at its start (cleared from gnz)
+            wire [NG-1:0] start_take = ({{(NG-1){1'b0}}, 1'b1} << g1_n)
+                                     | ({{(NG-1){1'b0}}, v2_n} << g2_n);
+
+            // ---- scanning: the next plotted cell after ptr
+            wire          cw_any = |cw;
+            wire [GW-1:0] g3     = lowg(gnz);
+            wire          g3_ok  = |gnz;
+            wire          w_take = scan_cell && !cw_any && nw_ok;   // the step moves to word ng
+            wire [8:0]    ng9    = {{(9-GW){1'b0}}, ng};  // GW <= 9: W_MAX < 32768
             assign ptr_in   = ptr_ok;
-            assign ptr_step = nxt;
-
+            assign ptr_step = cw_any ? {ptr[14:6], low64(cw)} : {ng9, low64(nw)};
             always @(posedge clk) begin
                 if (rst) begin
                     gnz    <= {NG{1'b0}};
                     ptr_ok <= 1'b0;
+                    nw_ok  <= 1'b0;
                 end else begin
-                    if (!init_done)
-                        bm[sweep_g] <= 64'd0;
                     if (scan_cell) begin
-                        bm[pg]  <= w_rest;
-                        gnz[pg] <= |w_rest;
-                        ptr_ok  <= nxt_ok;
+                        ptr_ok <= cw_any || nw_ok;
+                        cw     <= cw_any ? (cw & (cw - 64'd1)) : (nw & (nw - 64'd1));
+                    end
+                    if (w_take) begin
+                        nw    <= bm[64*g3 +: 64];
+                        ng    <= g3;
+                        nw_ok <= g3_ok;
+                        gnz   <= gnz & ~({{(NG-1){1'b0}}, 1'b1} << g3);
                     end
                     // (No scan step at this edge: plots are taken only
                     // when the scan is over.)
                     if (take_plot) begin
-                        bm[qg]  <= bm[qg] | (64'd1 << plot_q[5:0]);
-                        gnz[qg] <= 1'b1;
-                        if (plot_last)
+                        lwx <= lwx_n;
+                        lw2 <= lw2_n;
+                        g2  <= g2_n;
+                        v2  <= v2_n;
+                        if (plot_last) begin
                             ptr_ok <= 1'b1;
+                            cw     <= lwx_n;
+                            nw     <= lw2_n;
+                            ng     <= g2_n;
+                            nw_ok  <= v2_n;
+                            gnz    <= (gnz | ({{(NG-1){1'b0}}, 1'b1} << qg)) & ~start_take;
+                        end else begin
+                            gnz    <= gnz | ({{(NG-1){1'b0}}, 1'b1} << qg);
+                        end
                     end
+                end
+            end
+
+            // A word's bits count only while its gnz bit is set, so a word
+            // the scan takes is never cleared: the row's first plot into
+            // it starts it afresh (no write that waits for a scan step).
+            genvar g;
+            for (g = 0; g < NG; g = g + 1) begin : word
+                localparam [GW-1:0] GI = g;
+                always @(posedge clk) begin
+                    if (take_plot && qg == GI)
+                        bm[64*g +: 64] <= (gnz[g] ? bm[64*g +: 64] : 64'd0) | qb;
                 end
             end
         end

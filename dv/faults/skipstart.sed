@@ -1,9 +1,9 @@
-# skipstart: the scan starts one cell right of xmin (ef_slb_fill.v); planted
-# in the overlap schedule's skipping scan (SCHEDULE=1, SKIP=1): an off-by-one
-# there; cell xmin, still marked, is then visited after xmin + 1, out of
-# order.  Its first symptom in the 32x24 tiger is a row's scan a step
-# longer: the shape drains a cycle late, so the next shape's first seg is
-# the earliest mismatch (its cycle).
-# Caught on: seg (tests/rtl/rtl-test.sh, the fast configuration).
+# skipstart: the skipping scan's start (ef_slb_fill.v, SKIP = 1: the
+# overlap schedule, SCHEDULE=1) forgets the row's previous xmin when a later
+# plot of the row lands left of it in the same 64-cell word: that cell is
+# never visited, so its winding is neither accumulated nor cleared (an
+# off-by-one of the row's start in the shadow of its lowest word).  Its
+# first symptom in the 32x24 tiger: a span starting a cell right.
+# Caught on: span, field x (tests/rtl/rtl-test.sh, the fast configuration).
 # file: ef_slb_fill.v
-s/^                    ptr      <= new_xmin;$/                    ptr      <= new_xmin + 15'd1;/
+s/^                        lwx_n = lwx | xb;$/                        lwx_n = lwx;/
