@@ -125,6 +125,8 @@ static int push(void *self, const uint8_t c[EF_PROTO_CMD_BYTES])
     dut_soc *d = self;
     if (!d->running)
         return -1;
+    /* (a DATA frame's commands come in one call: the UART is read between them) */
+    fw_link_poll();
     while (!(ef_status_read() & ST_CMD_ROOM)) { /* busy (not taken) while the engine is full */
         if (ef_board_results_full(d->b))
             return 1;

@@ -44,7 +44,7 @@ void fw_pollstat_dump(void);
 void fw_pollstat_dump(void)
 {
     for (int i = 0; i < 16; i++)
-        say(i ? " " : "\npollstat hist (1024-cycle bins) ", hist[i]), hist[i] = 0;
+        say(i ? " " : "\npollstat hist (1024-cycle bins, since boot) ", hist[i]);
     say("\nworst ", worst[0]);
     say(" from ", worst[1]);
     say(" to ", worst[2]);

@@ -129,7 +129,9 @@ static void take_bytes(engine *e, const fw_link *l, size_t n, uint32_t idle_tick
         e->tx_len = e->tx_pos = 0;
     }
     (void)ef_board_rx(e->b, rxb, n); /* a full buffer: the host broke the window; it resends */
-    e->last_rx = now;
+    /* (after the call: one that ran the DUT for long is no idle link, and the
+     * bytes that came meanwhile are in the UART's ring, not yet delivered) */
+    e->last_rx = now_ticks();
     e->rx_pending = 1;
 }
 
