@@ -89,9 +89,9 @@ board-sim: $(BOARD_TOOLS)
 	    FW_SOC=$(BOARD_SIM_DIR) BOARD=sim
 	@echo "board-sim: $(BOARD_SIM_DIR)/obj/board_sim --dir $(BOARD_SIM_DIR)/gateware"
 
-board-sim-test: all board-sim $(PTYBOARD)
+board-sim-test: all board-sim $(BUILD)/tests/host/ptyboard
 	bash tests/board/soc_sim.sh $(BOARD_SIM_DIR)
-board-sim-faults: all board-sim $(PTYBOARD)
+board-sim-faults: all board-sim $(BUILD)/tests/host/ptyboard
 	EF_SOCSIM_FULL=1 bash tests/board/soc_sim.sh $(BOARD_SIM_DIR)
 
 # edgeflag-host over emulated GPIO into the simulated board's gateware (docs/board-gpio.md section 8)
